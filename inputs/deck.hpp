@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: MIT
+// The typed, validated form of an input deck: what `inputs` hands to the rest of tribex.
+//
+// Every value here is SI (unit suffixes in the deck are converted by the parser) and every
+// cross-reference between blocks (material, section, function, block names) has been checked
+// by the parser. Cross-references into the mesh (node sets, side sets, block names of a mesh
+// file) cannot be checked without the mesh; they carry a SourceLocation so that the layer that
+// builds the mesh can report `deck.i:LINE:COL: ...` itself.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribex::inputs {
+
+/// Where a value or block came from, for error messages (`file:line:col`).
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  std::string str() const;  // "file:line:col"
+};
+
+/// `begin function NAME` with `type = piecewise linear` and a `begin values` table (t, f(t)).
+/// Outside the table the function is held constant at its end values.
+struct FunctionSpec {
+  std::string name;
+  std::vector<double> abscissa;  // time, s; strictly increasing
+  std::vector<double> ordinate;  // dimension fixed by its use (m for displacement, m/s for velocity, ...)
+  SourceLocation where;
+};
+
+enum class MaterialModel { elastic, neo_hookean };
+
+/// `begin parameters for model MODEL` inside a material. Either (E, nu) or (K, G) may be given in
+/// the deck; the parser stores the pair (E, nu) with E > 0 and -1 < nu < 0.5.
+struct MaterialModelParameters {
+  MaterialModel model = MaterialModel::elastic;
+  double youngs_modulus = 0.0;  // Pa
+  double poissons_ratio = 0.0;  // -
+  SourceLocation where;
+};
+
+/// `begin property specification for material NAME`.
+struct MaterialSpec {
+  std::string name;
+  double density = 0.0;  // kg/m^3, > 0
+  std::vector<MaterialModelParameters> models;
+  SourceLocation where;
+};
+
+enum class ElementFormulation { mean_quadrature, fully_integrated };
+
+/// `begin solid section NAME`. Defaults follow physics.md sections 1.5 and 2.2.
+struct SectionSpec {
+  std::string name;
+  ElementFormulation formulation = ElementFormulation::mean_quadrature;
+  double hourglass_stiffness = 0.05;      // kappa_hg, -
+  double hourglass_viscosity = 0.0;       // nu_hg, -
+  double linear_bulk_viscosity = 0.06;    // b1, -
+  double quadratic_bulk_viscosity = 1.2;  // b2, -
+  SourceLocation where;
+};
+
+/// `begin generated box NAME` inside a finite element model (our extension): a structured hex8
+/// box that becomes one element block named NAME, with node sets and side sets
+/// NAME_xmin, NAME_xmax, NAME_ymin, NAME_ymax, NAME_zmin, NAME_zmax.
+struct GeneratedBoxSpec {
+  std::string block_name;
+  std::array<double, 3> origin{0.0, 0.0, 0.0};  // m
+  std::array<double, 3> size{1.0, 1.0, 1.0};    // m, > 0
+  std::array<int, 3> intervals{1, 1, 1};        // elements per axis, >= 1
+  /// Optional geometric grading: elements shrink toward this face ("xmin" ... "zmax"), each
+  /// element `grading_ratio` times the size of its neighbour nearer that face. Empty: uniform.
+  std::string grade_toward;
+  double grading_ratio = 1.0;  // >= 1
+  SourceLocation where;
+};
+
+/// `begin parameters for block NAME` inside a finite element model.
+struct BlockParameters {
+  std::string block;     // must exist in the mesh (checked when the mesh is built)
+  std::string material;  // checked by the parser
+  MaterialModel model = MaterialModel::elastic;  // the material must define this model
+  std::string section;   // checked by the parser
+  SourceLocation where;
+};
+
+/// `begin finite element model NAME`.
+struct FiniteElementModelSpec {
+  std::string name;
+  enum class Source { generated, gmsh } source = Source::generated;
+  std::string database_path;  // gmsh: path resolved relative to the deck's folder
+  std::vector<GeneratedBoxSpec> boxes;  // generated: one or more boxes
+  std::vector<BlockParameters> blocks;
+  SourceLocation where;
+};
+
+/// `begin time control` inside the procedure.
+struct TimeControlSpec {
+  double start_time = 0.0;               // s
+  double termination_time = 0.0;         // s, > start_time
+  double time_step_scale_factor = 0.9;   // s_f in (0, 1]
+  std::optional<double> maximum_time_step;  // s; caps the stable estimate when given
+  SourceLocation where;
+};
+
+enum class Component { x = 0, y = 1, z = 2 };
+
+/// `begin fixed displacement`: zero displacement and velocity of the listed components.
+struct FixedDisplacementSpec {
+  std::string node_set;
+  std::vector<Component> components;
+  SourceLocation where;
+};
+
+/// `begin prescribed displacement` / `begin prescribed velocity`: u_c(t) or v_c(t) =
+/// scale_factor * function(t) on every node of the node set.
+struct PrescribedMotionSpec {
+  enum class Kind { displacement, velocity } kind = Kind::displacement;
+  std::string node_set;
+  Component component = Component::x;
+  std::string function;  // checked by the parser
+  double scale_factor = 1.0;
+  SourceLocation where;
+};
+
+/// `begin initial velocity`: v(t=0) on a node set or on every node of a block.
+struct InitialVelocitySpec {
+  std::string node_set;  // exactly one of node_set / block is non-empty
+  std::string block;
+  std::array<double, 3> velocity{0.0, 0.0, 0.0};  // m/s
+  SourceLocation where;
+};
+
+/// `begin pressure`: p(t) = scale_factor * function(t) on a side set, positive pushing into the
+/// body (along the inward normal).
+struct PressureSpec {
+  std::string side_set;
+  std::string function;  // checked by the parser
+  double scale_factor = 1.0;  // Pa per unit of the function value
+  SourceLocation where;
+};
+
+/// `begin silent boundary`: Lysmer-Kuhlemeyer dashpots on a side set (physics.md section 4).
+struct SilentBoundarySpec {
+  std::string side_set;
+  double normal_coefficient = 1.0;      // a, -
+  double tangential_coefficient = 1.0;  // b, -
+  SourceLocation where;
+};
+
+/// `begin results output NAME`: results.h5 + results.xdmf in the output folder.
+struct ResultsOutputSpec {
+  std::optional<double> time_increment;  // s; exactly one of the two increments is set
+  std::optional<int> step_increment;
+  std::vector<std::string> nodal_variables;    // displacement velocity force (+ later ones)
+  std::vector<std::string> element_variables;  // stress
+  SourceLocation where;
+};
+
+/// `begin history output NAME`: rows of history.csv. Extra columns per listed node set:
+/// `<set>_reaction_{x,y,z}` (sum of the constraint reactions) and `<set>_displacement_{x,y,z}`
+/// (mean displacement).
+struct HistoryOutputSpec {
+  std::optional<double> time_increment;  // s; exactly one of the two increments is set
+  std::optional<int> step_increment;
+  std::vector<std::string> reaction_force_node_sets;
+  std::vector<std::string> displacement_node_sets;
+  SourceLocation where;
+};
+
+/// `begin presto region NAME`.
+struct RegionSpec {
+  std::string name;
+  std::string finite_element_model;  // `use finite element model NAME`, checked by the parser
+  std::vector<FixedDisplacementSpec> fixed_displacements;
+  std::vector<PrescribedMotionSpec> prescribed_motions;
+  std::vector<InitialVelocitySpec> initial_velocities;
+  std::vector<PressureSpec> pressures;
+  std::vector<SilentBoundarySpec> silent_boundaries;
+  double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
+  std::optional<double> energy_error_limit;  // stop with exit 3 when the relative error exceeds it
+  std::optional<ResultsOutputSpec> results;
+  std::optional<HistoryOutputSpec> history;
+  SourceLocation where;
+};
+
+/// `begin presto procedure NAME`.
+struct ProcedureSpec {
+  std::string name;
+  TimeControlSpec time_control;
+  RegionSpec region;
+  SourceLocation where;
+};
+
+/// The whole deck: `begin sierra NAME ... end sierra`.
+struct Deck {
+  std::string name;
+  std::string path;  // the deck file as given
+  std::vector<FunctionSpec> functions;
+  std::vector<MaterialSpec> materials;
+  std::vector<SectionSpec> sections;
+  std::vector<FiniteElementModelSpec> models;
+  ProcedureSpec procedure;
+  /// The resolved deck, defaults filled in, in deck syntax: echoed to log.txt.
+  std::string resolved_text;
+
+  const FunctionSpec* find_function(const std::string& n) const;
+  const MaterialSpec* find_material(const std::string& n) const;
+  const SectionSpec* find_section(const std::string& n) const;
+  const FiniteElementModelSpec* find_model(const std::string& n) const;
+};
+
+}  // namespace tribex::inputs

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <stdexcept>
+
+namespace tribex::solver {
+
+/// The deck and the mesh disagree (a node set, side set or block named in the deck that the mesh
+/// lacks, an empty set, ...): bad input, exit code 2. The message names the deck line.
+class SetupError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The run cannot go on (NaN, inverted element, time-step collapse, energy error over the limit):
+/// exit code 3. The message names the element or node, the step and the time. Output files are
+/// flushed before it is thrown out of the solver.
+class NumericalFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace tribex::solver

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// One place that maps the error types of every layer onto exit codes and prints them once.
+#pragma once
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "inputs/diagnostics.hpp"
+#include "mesh/mesh_error.hpp"
+#include "solver/errors.hpp"
+#include "tools/common/errors.hpp"
+
+namespace tribex::cli {
+
+template <class F>
+int run_mapping_errors(F&& body) {
+  try {
+    return body();
+  } catch (const inputs::DeckError& e) {
+    for (const auto& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.str().c_str());
+    std::fprintf(stderr, "tribex: %zu error(s) in the deck; nothing was run\n", e.diagnostics().size());
+    return tools::exit_bad_input;
+  } catch (const tools::BadInput& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return tools::exit_bad_input;
+  } catch (const mesh::MeshError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return tools::exit_bad_input;
+  } catch (const solver::SetupError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return tools::exit_bad_input;
+  } catch (const solver::NumericalFailure& e) {
+    std::fprintf(stderr, "Error termination: numerical failure: %s\n", e.what());
+    return tools::exit_numerical_failure;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribex: internal error: %s (please report it)\n", e.what());
+    return tools::exit_internal_error;
+  }
+}
+
+}  // namespace tribex::cli

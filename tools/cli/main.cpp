@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// The `tribex` front end: dispatches to subcommands and maps every error type of the layers
+// below onto the exit codes of ARCHITECTURE.md (0 ok, 1 internal, 2 bad input, 3 numerical
+// failure, 130 interrupted). A new subcommand is one row in `commands` below plus its function
+// `int NAME_command(const std::vector<std::string>& args)` declared in tools/cli/commands.hpp.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "inputs/did_you_mean.hpp"
+#include "tools/cli/commands.hpp"
+#include "tools/cli/error_mapping.hpp"
+
+namespace {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const std::vector<std::string>&);
+};
+
+const std::vector<Command> commands = {
+};
+
+void print_usage(std::FILE* to) {
+  std::fprintf(to, "usage: tribex COMMAND [ARGS...]   (tribex COMMAND --help for details)\n\ncommands:\n");
+  for (const auto& c : commands) std::fprintf(to, "  %-14s %s\n", c.name, c.summary);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    print_usage(stderr);
+    return tribex::tools::exit_bad_input;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    print_usage(stdout);
+    return tribex::tools::exit_ok;
+  }
+  std::vector<std::string> args(argv + 2, argv + argc);
+  for (const auto& c : commands) {
+    if (name == c.name) return tribex::cli::run_mapping_errors([&] { return c.run(args); });
+  }
+  std::vector<std::string> names;
+  for (const auto& c : commands) names.emplace_back(c.name);
+  const std::string hint = tribex::inputs::closest_match(name, names);
+  std::fprintf(stderr, "tribex: unknown command '%s'%s (tribex --help lists them)\n", name.c_str(),
+               hint.empty() ? "" : (" (did you mean '" + hint + "'?)").c_str());
+  return tribex::tools::exit_bad_input;
+}

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The two README commands (and a few more for developers):
+#   ./tribex.sh demo        install missing Debian packages, build Release into build/, run the demo
+#   ./tribex.sh test        same set-up, then the CTest suite (everything but the `slow` label)
+#   ./tribex.sh test-slow   the `slow` verification variants as well
+#   ./tribex.sh sanitize    ASan+UBSan build of the unit and bad-input tests in build-asan/, run them
+#   ./tribex.sh build       set-up and build only
+set -euo pipefail
+cd "$(dirname "$0")"
+ROOT=$PWD
+
+# Debian 12 packages (names checked in ../shared/design/DEPENDENCIES.md).
+PACKAGES=(
+  cmake make g++ git
+  libeigen3-dev libmetis-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
+  libgmsh-dev gmsh libcgal-dev libgtest-dev
+  python3 python3-matplotlib python3-numpy python3-h5py
+  paraview python3-paraview xvfb xauth
+)
+
+log() { printf '[tribex.sh] %s\n' "$*"; }
+
+ensure_packages() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if ((${#missing[@]})); then
+    log "installing Debian packages: ${missing[*]}"
+    local sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get -o DPkg::Lock::Timeout=600 update -q
+    $sudo apt-get -o DPkg::Lock::Timeout=600 install -y -q --no-install-recommends "${missing[@]}"
+  fi
+}
+
+# Open MPI as root in a container, with np > cores (see DEPENDENCIES.md section 4).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
+export OMPI_MCA_hwloc_base_binding_policy=none
+
+build() {  # build DIR [cmake args...]
+  local dir=$1; shift
+  mkdir -p "$dir"
+  cmake -S "$ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" > "$dir/configure.log" 2>&1 \
+    || { cat "$dir/configure.log"; exit 1; }
+  cmake --build "$dir" -j2
+}
+
+cmd=${1:-}
+case "$cmd" in
+  build)
+    ensure_packages; build build ;;
+  demo)
+    ensure_packages; build build
+    out="$ROOT/demo_output"
+    build/bin/tribex run inputs/examples/demo.i -o "$out"
+    /usr/bin/python3 tools/plot/plot_history.py "$out/history.csv" "$out/demo.png" \
+      --columns kinetic_energy,internal_energy,silent_boundary_dissipation,external_work \
+      --title "Pulse absorbed by silent boundaries (inputs/examples/demo.i)"
+    log "results: $out/results.xdmf (open in ParaView), $out/history.csv, $out/summary.json, $out/log.txt"
+    log "plot:    $out/demo.png" ;;
+  test)
+    ensure_packages; build build
+    ctest --test-dir build -j2 --output-on-failure -LE slow ;;
+  test-slow)
+    ensure_packages; build build
+    ctest --test-dir build -j2 --output-on-failure -L slow ;;
+  sanitize)
+    ensure_packages
+    mkdir -p build-asan
+    cmake -S "$ROOT" -B build-asan -DCMAKE_BUILD_TYPE=Debug -DTRIBEX_SANITIZE=ON > build-asan/configure.log 2>&1 \
+      || { cat build-asan/configure.log; exit 1; }
+    cmake --build build-asan -j2
+    ASAN_OPTIONS=detect_leaks=1 ctest --test-dir build-asan -j2 --output-on-failure -L "unit|bad_input" ;;
+  *)
+    echo "usage: ./tribex.sh demo|test|test-slow|sanitize|build" >&2; exit 2 ;;
+esac
