@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// Structured hex8 box generator.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "mesh/mesh.hpp"
+
+namespace tribex::mesh {
+
+struct BoxSpec {
+  std::string name = "block";                   // the block; sets are NAME_xmin ... NAME_zmax
+  std::array<double, 3> origin{0.0, 0.0, 0.0};  // m
+  std::array<double, 3> size{1.0, 1.0, 1.0};    // m
+  std::array<int, 3> intervals{1, 1, 1};
+  /// Geometric grading: elements shrink toward this face ("xmin".."zmax"); each element is
+  /// `grading_ratio` times its neighbour nearer that face. Empty: uniform.
+  std::string grade_toward;
+  double grading_ratio = 1.0;
+};
+
+/// One block NAME; node sets and side sets NAME_xmin, NAME_xmax, NAME_ymin, NAME_ymax,
+/// NAME_zmin, NAME_zmax; node set NAME_all. Elements are numbered x fastest, then y, then z.
+Mesh generate_box(const BoxSpec& spec);
+
+}  // namespace tribex::mesh
