@@ -8,5 +8,9 @@
 
 namespace tribex::cli {
 
+int run_command(const std::vector<std::string>& args);    // tools/cli/run_command.cpp
+int check_command(const std::vector<std::string>& args);  // tools/cli/run_command.cpp
+int bench_command(const std::vector<std::string>& args);  // tools/bench/bench_command.cpp
+
 
 }  // namespace tribex::cli

@@ -22,6 +22,9 @@ struct Command {
 };
 
 const std::vector<Command> commands = {
+    {"run", "run an input deck: tribex run DECK [-o OUTDIR] [--quiet]", tribex::cli::run_command},
+    {"check", "validate a deck and its mesh, print the set-up summary, run nothing", tribex::cli::check_command},
+    {"bench", "benchmarks: tribex bench block --n N --element E --material M --steps S", tribex::cli::bench_command},
 };
 
 void print_usage(std::FILE* to) {

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#include "solver/element_block.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "solver/errors.hpp"
+#include "solver/hex8/fully_integrated.hpp"
+#include "solver/hex8/geometry.hpp"
+#include "solver/hex8/mean_quadrature.hpp"
+
+namespace tribex::solver {
+
+ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block,
+                                const materials::Material& material, const inputs::SectionSpec& section) {
+  ElementBlock b;
+  b.name = block.name;
+  b.first_element = block.first_element;
+  b.count = block.element_count;
+  b.material = material;
+  b.formulation = section.formulation;
+  b.linear_bulk_viscosity = section.linear_bulk_viscosity;
+  b.quadratic_bulk_viscosity = section.quadratic_bulk_viscosity;
+  b.hourglass_stiffness = section.hourglass_stiffness;
+  b.hourglass_viscosity = section.hourglass_viscosity;
+  const double rho = materials::density_of(material);
+  const double M = materials::wave_modulus_of(material);
+  const double c = std::sqrt(M / rho);
+  b.rho_c = rho * c;
+
+  const std::size_t n = static_cast<std::size_t>(b.count);
+  b.B0.resize(24 * n);
+  b.volume0.resize(n);
+  b.length0.resize(n);
+  b.stress.assign(6 * n, 0.0);
+  const bool mq = b.formulation == inputs::ElementFormulation::mean_quadrature;
+  if (mq) {
+    b.gamma.resize(32 * n);
+    b.hg_k.resize(n);
+    b.hg_c.resize(n);
+  } else {
+    b.dNdX.resize(192 * n);
+    b.wdetJ.resize(8 * n);
+  }
+  for (int e = 0; e < b.count; ++e) {
+    const int global = b.first_element + e;
+    double X[24];
+    for (int I = 0; I < 8; ++I)
+      for (int i = 0; i < 3; ++i) X[3 * I + i] = mesh.coordinates[3 * mesh.connectivity[8 * global + I] + i];
+    double* B = &b.B0[24 * e];
+    const double V = hex8::gradient_operator(X, B);
+    if (!(V > 0.0) || hex8::min_corner_jacobian(X) <= 0.0)
+      throw SetupError("element " + std::to_string(global + 1) + " of block '" + b.name +
+                       "' is inverted or degenerate (volume " + std::to_string(V) +
+                       " m^3); fix the mesh (node order or geometry)");
+    b.volume0[e] = V;
+    b.length0[e] = hex8::characteristic_length(B, V);
+    if (mq) {
+      hex8::hourglass_vectors(X, B, V, &b.gamma[32 * e]);
+      double bb = 0.0;
+      for (int k = 0; k < 24; ++k) bb += B[k] * B[k];
+      // physics.md 2.2: Q^s = kappa M (B.B)/(3V) q, q = gamma.u/sqrt(8), f = Q gamma/sqrt(8)
+      b.hg_k[e] = b.hourglass_stiffness * M * bb / (24.0 * V);
+      // Q^v = nu rho c sqrt(B.B/3) qdot
+      b.hg_c[e] = b.hourglass_viscosity * b.rho_c * std::sqrt(bb / 3.0) / 8.0;
+    } else {
+      hex8::gauss_point_gradients(X, &b.dNdX[192 * e], &b.wdetJ[8 * e]);
+    }
+  }
+  return b;
+}
+
+ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
+                                      const double* v, double* force, bool want_stress) {
+  return std::visit(
+      [&](const auto& mat) {
+        if (block.formulation == inputs::ElementFormulation::mean_quadrature)
+          return hex8::mean_quadrature_forces(mat, block, connectivity, u, v, force, want_stress);
+        return hex8::fully_integrated_forces(mat, block, connectivity, u, v, force, want_stress);
+      },
+      block.material);
+}
+
+}  // namespace tribex::solver

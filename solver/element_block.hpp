@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// Per-block element data in struct-of-arrays form: reference-configuration operators computed once
+// at set-up (the kernels are total-Lagrangian: F = I + (1/V0) u_iI B0_JI), the material, the
+// section's numerical parameters, and output buffers. Local element index e runs over
+// [0, count); the global element is first_element + e.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "inputs/deck.hpp"
+#include "materials/material.hpp"
+#include "mesh/mesh.hpp"
+
+namespace tribex::solver {
+
+struct ElementBlock {
+  std::string name;
+  int first_element = 0;
+  int count = 0;
+  materials::Material material;
+  inputs::ElementFormulation formulation = inputs::ElementFormulation::mean_quadrature;
+  double linear_bulk_viscosity = 0.06;     // b1
+  double quadratic_bulk_viscosity = 1.2;   // b2
+  double hourglass_stiffness = 0.05;       // kappa_hg
+  double hourglass_viscosity = 0.0;        // nu_hg
+  double rho_c = 0.0;                      // rho c_d at the reference state, kg/(m^2 s)
+
+  std::vector<double> B0;        // [e][3][8] reference gradient operator (m^2)
+  std::vector<double> volume0;   // [e] (m^3)
+  std::vector<double> length0;   // [e] reference characteristic length (m)
+  // mean quadrature only
+  std::vector<double> gamma;     // [e][4][8] hourglass vectors
+  std::vector<double> hg_k;      // [e] kappa M (B.B)/(24 V): f = hg_k gamma gamma^T u   (N/m)
+  std::vector<double> hg_c;      // [e] nu rho c sqrt(B.B/3)/8: f = hg_c gamma gamma^T v  (N s/m)
+  // fully integrated only
+  std::vector<double> dNdX;      // [e][8 points][3][8] (1/m)
+  std::vector<double> wdetJ;     // [e][8] (m^3)
+  // output (filled only on steps that write element fields)
+  std::vector<double> stress;    // [e][6] Cauchy, Voigt xx yy zz xy yz zx (Pa)
+};
+
+/// Build the reference data of one block. Throws solver::SetupError naming the first element with
+/// a non-positive volume or Jacobian (1-based, as gmsh and ParaView show them + 1).
+ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block,
+                                const materials::Material& material, const inputs::SectionSpec& section);
+
+/// What one internal-force pass over a block adds up.
+struct ElementPassTotals {
+  double strain_energy = 0.0;     // sum V0 W (J)
+  double hourglass_energy = 0.0;  // stored hourglass energy (J)
+  double viscous_power = 0.0;     // hourglass viscosity + bulk viscosity dissipation rate (W)
+  int first_inverted = -1;        // global element index of the first inverted element, or -1
+};
+
+/// Internal forces of one block, subtracted from `force` [node][3]:
+///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dNdX_gjI (fully integrated),
+/// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (physics.md 1.5),
+/// plus Flanagan-Belytschko hourglass forces (mean quadrature, physics.md 2.2).
+/// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
+/// When `want_stress` the block's stress buffer is filled (Cauchy stress, element mean).
+ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
+                                      const double* v, double* force, bool want_stress);
+
+}  // namespace tribex::solver

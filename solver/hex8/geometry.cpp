@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+#include "solver/hex8/geometry.hpp"
+
+#include <cmath>
+
+namespace tribex::solver::hex8 {
+namespace {
+
+// Reference coordinates of the 8 nodes (physics.md 2.1 order).
+constexpr double xi_n[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
+constexpr double eta_n[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
+constexpr double zeta_n[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+
+// Hourglass base vectors Gamma_a (physics.md 2.2): ~ eta*zeta, zeta*xi, xi*eta, xi*eta*zeta.
+constexpr double Gamma[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                {1, -1, -1, 1, -1, 1, 1, -1},
+                                {1, -1, 1, -1, 1, -1, 1, -1},
+                                {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+// dN_I/d(xi,eta,zeta) at (x, y, z): out[3][8].
+void reference_gradients(double x, double y, double z, double out[24]) {
+  for (int I = 0; I < 8; ++I) {
+    out[I] = 0.125 * xi_n[I] * (1 + eta_n[I] * y) * (1 + zeta_n[I] * z);
+    out[8 + I] = 0.125 * eta_n[I] * (1 + xi_n[I] * x) * (1 + zeta_n[I] * z);
+    out[16 + I] = 0.125 * zeta_n[I] * (1 + xi_n[I] * x) * (1 + eta_n[I] * y);
+  }
+}
+
+// J_ij = dx_i/dxi_j and its adjugate; returns det J.
+double jacobian(const double X[24], const double dN[24], double adj[9]) {
+  double J[9] = {};
+  for (int I = 0; I < 8; ++I)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) J[3 * i + j] += X[3 * I + i] * dN[8 * j + I];
+  adj[0] = J[4] * J[8] - J[5] * J[7];
+  adj[1] = J[2] * J[7] - J[1] * J[8];
+  adj[2] = J[1] * J[5] - J[2] * J[4];
+  adj[3] = J[5] * J[6] - J[3] * J[8];
+  adj[4] = J[0] * J[8] - J[2] * J[6];
+  adj[5] = J[2] * J[3] - J[0] * J[5];
+  adj[6] = J[3] * J[7] - J[4] * J[6];
+  adj[7] = J[1] * J[6] - J[0] * J[7];
+  adj[8] = J[0] * J[4] - J[1] * J[3];
+  return J[0] * adj[0] + J[1] * adj[3] + J[2] * adj[6];
+}
+
+constexpr double g = 0.57735026918962576451;  // 1/sqrt(3)
+
+}  // namespace
+
+double gradient_operator(const double X[24], double B[24]) {
+  for (int k = 0; k < 24; ++k) B[k] = 0.0;
+  double volume = 0.0;
+  double dN[24], adj[9];
+  for (int p = 0; p < 8; ++p) {
+    reference_gradients(xi_n[p] * g, eta_n[p] * g, zeta_n[p] * g, dN);
+    volume += jacobian(X, dN, adj);
+    // det J dN/dx_i = sum_j adj(J)_{ji} dN/dxi_j  (J^{-1} = adj(J)/det J)
+    for (int i = 0; i < 3; ++i)
+      for (int I = 0; I < 8; ++I)
+        B[8 * i + I] += adj[i] * dN[I] + adj[3 + i] * dN[8 + I] + adj[6 + i] * dN[16 + I];
+  }
+  return volume;
+}
+
+void hourglass_vectors(const double X[24], const double B[24], double volume, double gamma[32]) {
+  for (int a = 0; a < 4; ++a) {
+    double xg[3] = {0, 0, 0};  // x_iJ Gamma_aJ
+    for (int J = 0; J < 8; ++J)
+      for (int i = 0; i < 3; ++i) xg[i] += X[3 * J + i] * Gamma[a][J];
+    for (int I = 0; I < 8; ++I)
+      gamma[8 * a + I] = Gamma[a][I] - (B[I] * xg[0] + B[8 + I] * xg[1] + B[16 + I] * xg[2]) / volume;
+  }
+}
+
+double characteristic_length(const double B[24], double volume) {
+  double bb = 0.0;
+  for (int k = 0; k < 24; ++k) bb += B[k] * B[k];
+  return volume / std::sqrt(2.0 * bb);
+}
+
+double gauss_point_gradients(const double X[24], double dNdX[192], double wdetJ[8]) {
+  double volume = 0.0;
+  bool inverted = false;
+  double dN[24], adj[9];
+  for (int p = 0; p < 8; ++p) {
+    reference_gradients(xi_n[p] * g, eta_n[p] * g, zeta_n[p] * g, dN);
+    const double detJ = jacobian(X, dN, adj);
+    inverted = inverted || !(detJ > 0.0);
+    wdetJ[p] = detJ;
+    volume += detJ;
+    for (int i = 0; i < 3; ++i)
+      for (int I = 0; I < 8; ++I)
+        dNdX[24 * p + 8 * i + I] = (adj[i] * dN[I] + adj[3 + i] * dN[8 + I] + adj[6 + i] * dN[16 + I]) / detJ;
+  }
+  return inverted ? -std::abs(volume) : volume;
+}
+
+double min_corner_jacobian(const double X[24]) {
+  double dN[24], adj[9];
+  reference_gradients(0, 0, 0, dN);
+  const double centre = jacobian(X, dN, adj);
+  double worst = centre;
+  for (int p = 0; p < 8; ++p) {
+    reference_gradients(xi_n[p], eta_n[p], zeta_n[p], dN);
+    const double d = jacobian(X, dN, adj);
+    if (d < worst) worst = d;
+  }
+  return centre > 0.0 ? worst / centre : worst;
+}
+
+}  // namespace tribex::solver::hex8

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Hex8 geometry: shape-function gradients, the volume-integrated gradient operator of the
+// uniform-strain (mean-quadrature) element, hourglass shape vectors and the characteristic length.
+//
+// Array layouts (all row-major, double):
+//   X      [8][3]  nodal coordinates, node I at 3I..3I+2, node order of physics.md 2.1 / mesh.hpp
+//   B      [3][8]  B_iI = int_V dN_I/dx_i dV (m^2); component i at 8i..8i+7
+//   gamma  [4][8]  Flanagan-Belytschko orthogonal hourglass vectors gamma_aI (dimensionless)
+//   dNdX   [8][3][8] per Gauss point g: dN_I/dX_i at 24g + 8i + I (1/m)
+//   wdetJ  [8]     Gauss weight times det J at each point (m^3)
+#pragma once
+
+namespace tribex::solver::hex8 {
+
+/// B_iI = int_V dN_I/dx_i dV, evaluated exactly by 2x2x2 Gauss quadrature (the integrand,
+/// adj(J) dN/dxi, is at most quadratic in each reference coordinate). Returns the volume V.
+/// Properties: sum_I B_iI = 0 and sum_I B_iI x_jI = V delta_ij (tested).
+double gradient_operator(const double X[24], double B[24]);
+
+/// Flanagan-Belytschko hourglass vectors gamma_aI = Gamma_aI - (1/V) B_iI x_iJ Gamma_aJ, which
+/// are orthogonal to every linear field (gamma_aI x_jI = 0), so linear motion creates no hourglass
+/// force (physics.md 2.2).
+void hourglass_vectors(const double X[24], const double B[24], double volume, double gamma[32]);
+
+/// Characteristic length of Flanagan & Belytschko, L_e = V / sqrt(2 B_iI B_iI) (= h/sqrt(3) for
+/// a cube of side h); the element's stable step is L_e / c_d (physics.md 1.4).
+double characteristic_length(const double B[24], double volume);
+
+/// Shape-function gradients and weights at the 2x2x2 Gauss points (fully integrated element).
+/// Returns the volume; a non-positive det J at any point returns it as a negative value.
+double gauss_point_gradients(const double X[24], double dNdX[192], double wdetJ[8]);
+
+/// Minimum of det J over the 8 corners divided by det J at the centre (1 for any parallelepiped);
+/// <= 0 means an inverted corner.
+double min_corner_jacobian(const double X[24]);
+
+}  // namespace tribex::solver::hex8

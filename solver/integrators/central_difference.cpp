@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: MIT
+#include "solver/integrators/central_difference.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "solver/errors.hpp"
+
+namespace tribex::solver {
+namespace {
+
+std::string where_and_when(long step, double t) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, " at step %ld, t = %.6g s", step, t);
+  return buf;
+}
+
+}  // namespace
+
+CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec& tc)
+    : model_(model),
+      end_time_(tc.termination_time),
+      scale_factor_(tc.time_step_scale_factor),
+      max_dt_(tc.maximum_time_step.value_or(std::numeric_limits<double>::infinity())),
+      time_(tc.start_time) {
+  const std::size_t n3 = 3 * static_cast<std::size_t>(model.mesh.node_count());
+  u_.assign(n3, 0.0);
+  v_.assign(n3, 0.0);
+  v_prev_.assign(n3, 0.0);
+  v_n_.assign(n3, 0.0);
+  a_.assign(n3, 0.0);
+  f_.assign(n3, 0.0);
+  f_ext_.assign(n3, 0.0);
+  reaction_.assign(n3, 0.0);
+  inverse_mass_.resize(model.mass.size());
+  for (std::size_t n = 0; n < model.mass.size(); ++n) inverse_mass_[n] = 1.0 / model.mass[n];
+}
+
+double CentralDifference::choose_dt() {
+  if (step_ % dt_update_interval_ == 0 || stable_.dt <= 0.0) {
+    stable_ = compute_stable_time_step(model_, u_.data());
+    if (stable_.inverted_element >= 0)
+      throw NumericalFailure("element " + std::to_string(stable_.inverted_element + 1) + " inverted (non-positive volume)" +
+                             where_and_when(step_, time_));
+  }
+  double dt = std::min(scale_factor_ * stable_.dt, max_dt_);
+  // Land exactly on the termination time instead of overshooting it.
+  if (time_ + dt > end_time_) dt = end_time_ - time_;
+  return dt;
+}
+
+void CentralDifference::init() {
+  v_ = model_.initial_velocity;
+  // Constrained dofs start at their prescribed velocity (the displacement BCs take over at t^{1/2}).
+  for (std::size_t k = 0; k < model_.constraints.dof.size(); ++k) {
+    const int dof = model_.constraints.dof[k];
+    using Kind = Constraints::Kind;
+    const auto kind = model_.constraints.kind[k];
+    if (kind == Kind::fixed) v_[dof] = 0.0;
+    if (kind == Kind::velocity) v_[dof] = model_.constraints.scale[k] * model_.functions[model_.constraints.function[k]](time_);
+  }
+  v_n_ = v_;
+  v_prev_ = v_;
+  double ke = 0.0;
+  for (std::size_t d = 0; d < v_.size(); ++d) ke += 0.5 * model_.mass[d / 3] * v_[d] * v_[d];
+  const bool stress0 = wants_stress_ && wants_stress_(time_, 0);
+  compute_forces(time_, stress0);
+  energies_.kinetic = ke;
+  energies_.initial = ke + energies_.internal + energies_.hourglass;
+  stable_ = {};
+  dt_half_ = choose_dt();
+  if (!(dt_half_ > 0.0))
+    throw SetupError("the stable time step is not positive (" + std::to_string(dt_half_) + " s); check the mesh and materials");
+}
+
+void CentralDifference::compute_forces(double t, bool want_stress) {
+  std::fill(f_.begin(), f_.end(), 0.0);
+  // Applied pressures (follower loads on the current configuration).
+  if (!model_.pressures.empty()) {
+    std::fill(f_ext_.begin(), f_ext_.end(), 0.0);
+    const auto& X = model_.mesh.coordinates;
+    for (const auto& load : model_.pressures) {
+      const double p = load.scale * model_.functions[load.function](t);
+      for (std::size_t face = 0; face < load.face_nodes.size() / 4; ++face) {
+        const int* n = &load.face_nodes[4 * face];
+        double d1[3], d2[3];
+        for (int i = 0; i < 3; ++i) {
+          d1[i] = X[3 * n[2] + i] + u_[3 * n[2] + i] - X[3 * n[0] + i] - u_[3 * n[0] + i];
+          d2[i] = X[3 * n[3] + i] + u_[3 * n[3] + i] - X[3 * n[1] + i] - u_[3 * n[1] + i];
+        }
+        // Area vector a = (d1 x d2)/2 (outward); each node takes -p a / 4.
+        const double a[3] = {0.5 * (d1[1] * d2[2] - d1[2] * d2[1]), 0.5 * (d1[2] * d2[0] - d1[0] * d2[2]),
+                             0.5 * (d1[0] * d2[1] - d1[1] * d2[0])};
+        for (int I = 0; I < 4; ++I)
+          for (int i = 0; i < 3; ++i) f_ext_[3 * n[I] + i] -= 0.25 * p * a[i];
+      }
+    }
+    f_ = f_ext_;
+  }
+  double strain = 0.0, hourglass = 0.0;
+  viscous_power_ = 0.0;
+  for (auto& blk : model_.blocks) {
+    const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), u_.data(), v_.data(), f_.data(), want_stress);
+    if (totals.first_inverted >= 0)
+      throw NumericalFailure("element " + std::to_string(totals.first_inverted + 1) + " of block '" + blk.name +
+                             "' inverted (det F <= 0)" + where_and_when(step_ + 1, t));
+    strain += totals.strain_energy;
+    hourglass += totals.hourglass_energy;
+    viscous_power_ += totals.viscous_power;
+  }
+  energies_.internal = strain;
+  energies_.hourglass = hourglass;
+}
+
+void CentralDifference::update_velocity() {
+  // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2, and dt^{1/2}/2 on the first step.
+  dt_n_ = step_ == 0 ? 0.5 * dt_half_ : 0.5 * (dt_prev_half_ + dt_half_);
+  v_prev_ = v_;
+  const double h = dt_n_;
+  const double cm = model_.mass_damping;
+  if (cm > 0.0) {
+    // (m/h + c m/2) v+ = (m/h - c m/2) v- + f
+    const double keep = (1.0 - 0.5 * cm * h) / (1.0 + 0.5 * cm * h), gain = h / (1.0 + 0.5 * cm * h);
+    for (std::size_t d = 0; d < v_.size(); ++d) v_[d] = keep * v_[d] + gain * inverse_mass_[d / 3] * f_[d];
+  } else {
+    for (std::size_t d = 0; d < v_.size(); ++d) v_[d] += h * inverse_mass_[d / 3] * f_[d];
+  }
+  // Silent-boundary nodes: semi-implicit dashpots, normal and tangential parts separately.
+  const auto& sb = model_.silent;
+  for (std::size_t k = 0; k < sb.node.size(); ++k) {
+    const int n = sb.node[k];
+    const double m = model_.mass[n];
+    const double* nv = &sb.normal[3 * k];
+    const double* vm = &v_prev_[3 * n];
+    const double* f = &f_[3 * n];
+    const double vn = vm[0] * nv[0] + vm[1] * nv[1] + vm[2] * nv[2];
+    const double fn = f[0] * nv[0] + f[1] * nv[1] + f[2] * nv[2];
+    const double cn = sb.c_normal[k] + cm * m, ct = sb.c_tangential[k] + cm * m;
+    const double vn_new = ((m / h - 0.5 * cn) * vn + fn) / (m / h + 0.5 * cn);
+    for (int i = 0; i < 3; ++i) {
+      const double vt = vm[i] - vn * nv[i], ft = f[i] - fn * nv[i];
+      const double vt_new = ((m / h - 0.5 * ct) * vt + ft) / (m / h + 0.5 * ct);
+      v_[3 * n + i] = vn_new * nv[i] + vt_new;
+    }
+  }
+}
+
+void CentralDifference::apply_constraints() {
+  using Kind = Constraints::Kind;
+  const auto& c = model_.constraints;
+  const double t_half = time_ + 0.5 * dt_half_, t_next = time_ + dt_half_;
+  for (std::size_t k = 0; k < c.dof.size(); ++k) {
+    const int dof = c.dof[k];
+    double v = 0.0;
+    if (c.kind[k] == Kind::velocity) v = c.scale[k] * model_.functions[c.function[k]](t_half);
+    if (c.kind[k] == Kind::displacement)
+      v = dt_half_ > 0.0 ? (c.scale[k] * model_.functions[c.function[k]](t_next) - u_[dof]) / dt_half_ : 0.0;
+    v_[dof] = v;
+    // R^n = m (v^{n+1/2} - v^{n-1/2}) / dt^n - f^n
+    reaction_[dof] = model_.mass[dof / 3] * (v - v_prev_[dof]) / dt_n_ - f_[dof];
+  }
+}
+
+void CentralDifference::account_time_n() {
+  const auto& mass = model_.mass;
+  double ke = 0.0;
+  const double h = dt_n_;
+  for (std::size_t d = 0; d < v_.size(); ++d) {
+    // v^n = (v^{n-1/2} + v^{n+1/2}) / 2; the initial state is exact (v^{-1/2} = v^0).
+    v_n_[d] = step_ == 0 ? v_prev_[d] : 0.5 * (v_prev_[d] + v_[d]);
+    a_[d] = (v_[d] - v_prev_[d]) / h;
+    ke += 0.5 * mass[d / 3] * v_n_[d] * v_n_[d];
+  }
+  if (!std::isfinite(ke)) {
+    for (std::size_t d = 0; d < v_.size(); ++d)
+      if (!std::isfinite(v_[d]))
+        throw NumericalFailure("velocity of node " + std::to_string(d / 3 + 1) + " is not finite" + where_and_when(step_, time_) +
+                               " (instability: reduce the time step scale factor, check the loads and materials)");
+  }
+  energies_.kinetic = ke;
+
+  // External work, trapezoidal in force over [t^{n-1}, t^n] with v^{n-1/2} (physics.md 1.3).
+  double power_left = 0.0, power_right = 0.0;
+  for (int dof : model_.constraints.dof) {
+    power_left += reaction_[dof] * v_prev_[dof];
+    power_right += reaction_[dof] * v_[dof];
+  }
+  if (!model_.pressures.empty())
+    for (std::size_t d = 0; d < v_.size(); ++d) {
+      power_left += f_ext_[d] * v_prev_[d];
+      power_right += f_ext_[d] * v_[d];
+    }
+  if (step_ > 0) energies_.external_work += 0.5 * dt_prev_half_ * (external_power_right_ + power_left);
+  external_power_right_ = power_right;
+
+  // Dashpot and damping dissipation over [t^{n-1/2}, t^{n+1/2}]: the semi-implicit force is -c v^n.
+  const auto& sb = model_.silent;
+  double silent = 0.0;
+  for (std::size_t k = 0; k < sb.node.size(); ++k) {
+    const double* vn = &v_n_[3 * sb.node[k]];
+    const double* nv = &sb.normal[3 * k];
+    const double s = vn[0] * nv[0] + vn[1] * nv[1] + vn[2] * nv[2];
+    const double t2 = vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2] - s * s;
+    silent += sb.c_normal[k] * s * s + sb.c_tangential[k] * t2;
+  }
+  energies_.silent_boundary_dissipation += h * silent;
+  if (model_.mass_damping > 0.0) energies_.damping_dissipation += h * 2.0 * model_.mass_damping * ke;
+}
+
+void CentralDifference::step(const std::function<void()>& on_time_n) {
+  update_velocity();
+  apply_constraints();
+  account_time_n();
+  if (on_time_n) on_time_n();
+
+  // u^{n+1} = u^n + dt^{n+1/2} v^{n+1/2}
+  const double h = dt_half_;
+  for (std::size_t d = 0; d < u_.size(); ++d) u_[d] += h * v_[d];
+  time_ += h;
+  ++step_;
+  const bool want_stress = wants_stress_ && wants_stress_(time_, step_);
+  compute_forces(time_, want_stress);
+  energies_.viscous_dissipation += h * viscous_power_;
+  dt_prev_half_ = dt_half_;
+  dt_half_ = finished() ? dt_prev_half_ : choose_dt();
+  if (!finished() && dt_half_ < 1e-6 * dt_prev_half_)
+    throw NumericalFailure("time step collapsed to " + std::to_string(dt_half_) + " s (element " +
+                           std::to_string(stable_.controlling_element + 1) + " controls it)" + where_and_when(step_, time_));
+}
+
+void CentralDifference::run(const std::function<void()>& on_time_n) {
+  while (!finished()) step(on_time_n);
+  close(on_time_n);
+}
+
+void CentralDifference::close(const std::function<void()>& on_time_n) {
+  // The final time N: complete v^N, reactions and energies with a last velocity update over the
+  // previous step size (the positions do not move again), then report time N.
+  update_velocity();
+  apply_constraints();
+  account_time_n();
+  if (on_time_n) on_time_n();
+}
+
+}  // namespace tribex::solver

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Explicit central-difference time integration with half-step velocities (physics.md 1.3), the
+// only time-step loop of tribex. One call of step() advances n -> n+1:
+//
+//   dt^n      = (dt^{n-1/2} + dt^{n+1/2}) / 2            (dt^0 = dt^{1/2} / 2, v^{-1/2} = v^0)
+//   v^{n+1/2} = v^{n-1/2} + dt^n M^{-1} f^n               free dofs
+//             = [(m/dt^n - c/2) v^{n-1/2} + f^n] / (m/dt^n + c/2)
+//                                                         dofs with dashpots / mass damping
+//                                                         (semi-implicit, physics.md 4.3),
+//                                                         normal and tangential parts apart
+//   v^{n+1/2} = prescribed                                constrained dofs; reaction
+//   R^n       = m (v^{n+1/2} - v^{n-1/2}) / dt^n - f^n
+//   -- time-n quantities complete: energies, history and field output at step n --
+//   u^{n+1}   = u^n + dt^{n+1/2} v^{n+1/2}
+//   f^{n+1}   = f_ext(t^{n+1}, x^{n+1}) - f_int(u^{n+1}, v^{n+1/2})
+//   dt^{n+3/2} from the stable estimate on x^{n+1} (every `dt_update_interval` steps)
+//
+// Central difference is Newmark with beta = 0, gamma = 1/2 in this half-step form. The loop does no
+// allocation: every array is sized in the constructor.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "inputs/deck.hpp"
+#include "solver/energy.hpp"
+#include "solver/model.hpp"
+#include "solver/stable_time_step.hpp"
+
+namespace tribex::solver {
+
+class CentralDifference {
+ public:
+  CentralDifference(Model& model, const inputs::TimeControlSpec& time_control);
+
+  /// u^0 = 0, v^0 from the model (constrained dofs overwritten), f^0, dt^{1/2}. Throws SetupError
+  /// when the stable step is not positive.
+  void init();
+  /// Advance one step; `on_time_n` is called after the time-n quantities are complete (velocity
+  /// update, reactions, energies), before the positions move: the place for output.
+  /// Throws NumericalFailure (with element/node, step and time) on NaN or an inverted element.
+  void step(const std::function<void()>& on_time_n = {});
+  /// Steps until the termination time, then close(); `on_time_n` as in step().
+  void run(const std::function<void()>& on_time_n = {});
+  /// Completes the time-n quantities at the current (final) time and reports them; the state is
+  /// then final (no further step()).
+  void close(const std::function<void()>& on_time_n = {});
+
+  bool finished() const { return time_ >= end_time_ * (1.0 - 1e-14) ; }
+
+  // State at time n (valid inside on_time_n and after run()).
+  long step_index() const { return step_; }
+  double time() const { return time_; }
+  double dt() const { return dt_n_; }                         // dt^n
+  double next_dt() const { return dt_half_; }                 // dt^{n+1/2}
+  const std::vector<double>& displacement() const { return u_; }
+  const std::vector<double>& velocity_half() const { return v_; }  // v^{n+1/2}
+  const std::vector<double>& velocity() const { return v_n_; }     // v^n
+  const std::vector<double>& acceleration() const { return a_; }   // (v^{n+1/2} - v^{n-1/2}) / dt^n
+  const std::vector<double>& force() const { return f_; }          // f^n, internal + applied loads
+  const std::vector<double>& reaction() const { return reaction_; }  // R^n at constrained dofs, else 0
+  const Energies& energies() const { return energies_; }
+  const StableStep& stable_step() const { return stable_; }
+  double time_step_scale_factor() const { return scale_factor_; }
+  /// Set by the driver: does the step that reaches (t, n) write element fields? Element stresses
+  /// are then computed in the force pass that precedes it.
+  void set_stress_request(std::function<bool(double, long)> wants) { wants_stress_ = std::move(wants); }
+
+ private:
+  void compute_forces(double t, bool want_stress);
+  void update_velocity();
+  void apply_constraints();
+  void account_time_n();
+  double choose_dt();
+
+  Model& model_;
+  double end_time_, scale_factor_;
+  double max_dt_;
+  int dt_update_interval_ = 10;
+  long step_ = 0;
+  double time_ = 0.0;
+  double dt_n_ = 0.0, dt_half_ = 0.0, dt_prev_half_ = 0.0;
+  std::vector<double> u_, v_, v_prev_, v_n_, a_, f_, f_ext_, reaction_;
+  std::vector<double> inverse_mass_;
+  Energies energies_;
+  StableStep stable_;
+  double external_power_right_ = 0.0;  // F_ext^{n-1} . v^{n-1/2}, for the trapezoidal work rule
+  double viscous_power_ = 0.0;
+  std::function<bool(double, long)> wants_stress_;
+};
+
+}  // namespace tribex::solver

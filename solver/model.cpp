@@ -1,0 +1,230 @@
+// SPDX-License-Identifier: MIT
+#include "solver/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "inputs/did_you_mean.hpp"
+#include "mesh/box.hpp"
+#include "mesh/gmsh_io.hpp"
+#include "solver/errors.hpp"
+
+namespace tribex::solver {
+namespace {
+
+template <class Map>
+std::vector<std::string> keys_of(const Map& m) {
+  std::vector<std::string> k;
+  for (const auto& [name, value] : m) k.push_back(name);
+  return k;
+}
+
+std::string list_names(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size() && i < 12; ++i) s += (i ? ", " : "") + names[i];
+  if (names.size() > 12) s += ", ...";
+  return s.empty() ? "none" : s;
+}
+
+[[noreturn]] void missing(const inputs::SourceLocation& where, const std::string& what, const std::string& name,
+                          const std::vector<std::string>& known) {
+  const std::string hint = inputs::closest_match(name, known);
+  throw SetupError(where.str() + ": error: " + what + " '" + name + "' is not in the mesh" +
+                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; the mesh has: " + list_names(known));
+}
+
+const std::vector<int>& node_set(const mesh::Mesh& m, const std::string& name, const inputs::SourceLocation& where) {
+  auto it = m.node_sets.find(name);
+  if (it == m.node_sets.end()) missing(where, "node set", name, keys_of(m.node_sets));
+  if (it->second.empty()) throw SetupError(where.str() + ": error: node set '" + name + "' is empty");
+  return it->second;
+}
+
+const std::vector<mesh::Side>& side_set(const mesh::Mesh& m, const std::string& name, const inputs::SourceLocation& where) {
+  auto it = m.side_sets.find(name);
+  if (it == m.side_sets.end()) missing(where, "side set", name, keys_of(m.side_sets));
+  if (it->second.empty()) throw SetupError(where.str() + ": error: side set '" + name + "' is empty");
+  return it->second;
+}
+
+int function_index(const Model& model, const std::string& name) {
+  auto it = std::find(model.function_names.begin(), model.function_names.end(), name);
+  return static_cast<int>(it - model.function_names.begin());  // existence checked by the parser
+}
+
+materials::Material make_material(const inputs::MaterialSpec& spec, inputs::MaterialModel model) {
+  for (const auto& p : spec.models) {
+    if (p.model != model) continue;
+    const double lambda = materials::lame_lambda(p.youngs_modulus, p.poissons_ratio);
+    const double mu = materials::lame_mu(p.youngs_modulus, p.poissons_ratio);
+    if (model == inputs::MaterialModel::elastic) return materials::LinearElastic{lambda, mu, spec.density};
+    return materials::NeoHookean{lambda, mu, spec.density};
+  }
+  throw SetupError(spec.where.str() + ": error: material '" + spec.name + "' has no parameters for the model used");
+}
+
+// Quad area vector (outward for the counter-clockwise node order): half the cross product of the
+// diagonals, exact for a planar quad and the mean normal of a warped one.
+void area_vector(const double* x, const std::array<int, 4>& n, double a[3]) {
+  double d1[3], d2[3];
+  for (int i = 0; i < 3; ++i) {
+    d1[i] = x[3 * n[2] + i] - x[3 * n[0] + i];
+    d2[i] = x[3 * n[3] + i] - x[3 * n[1] + i];
+  }
+  a[0] = 0.5 * (d1[1] * d2[2] - d1[2] * d2[1]);
+  a[1] = 0.5 * (d1[2] * d2[0] - d1[0] * d2[2]);
+  a[2] = 0.5 * (d1[0] * d2[1] - d1[1] * d2[0]);
+}
+
+}  // namespace
+
+mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
+  mesh::Mesh m;
+  if (spec.source == inputs::FiniteElementModelSpec::Source::gmsh) {
+    m = mesh::read_gmsh(spec.database_path);
+  } else {
+    for (const auto& box : spec.boxes) {
+      mesh::BoxSpec b;
+      b.name = box.block_name;
+      b.origin = box.origin;
+      b.size = box.size;
+      b.intervals = box.intervals;
+      b.grade_toward = box.grade_toward;
+      b.grading_ratio = box.grading_ratio;
+      mesh::append(m, mesh::generate_box(b));
+    }
+    mesh::validate(m, "generated mesh of finite element model '" + spec.name + "'");
+  }
+  return m;
+}
+
+Model build_model(const inputs::Deck& deck) {
+  const auto& region = deck.procedure.region;
+  const inputs::FiniteElementModelSpec* fem = deck.find_model(region.finite_element_model);
+  if (!fem) throw SetupError(region.where.str() + ": error: unknown finite element model '" + region.finite_element_model + "'");
+  Model model;
+  model.mesh = build_mesh(*fem);
+  const mesh::Mesh& m = model.mesh;
+  const int nn = m.node_count();
+
+  for (const auto& f : deck.functions) {
+    model.functions.emplace_back(f);
+    model.function_names.push_back(f.name);
+  }
+
+  // Element blocks: every mesh block needs parameters, every parameter block a mesh block.
+  std::vector<std::string> block_names;
+  for (const auto& b : m.blocks) block_names.push_back(b.name);
+  for (const auto& p : fem->blocks)
+    if (!m.find_block(p.block)) {
+      const std::string hint = inputs::closest_match(p.block, block_names);
+      throw SetupError(p.where.str() + ": error: block '" + p.block + "' is not in the mesh" +
+                       (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; the mesh has: " + list_names(block_names));
+    }
+  model.element_block.assign(static_cast<std::size_t>(m.element_count()), -1);
+  for (const auto& b : m.blocks) {
+    auto p = std::find_if(fem->blocks.begin(), fem->blocks.end(), [&](const auto& q) { return q.block == b.name; });
+    if (p == fem->blocks.end())
+      throw SetupError(fem->where.str() + ": error: mesh block '" + b.name +
+                       "' has no 'begin parameters for block " + b.name + "' in finite element model '" + fem->name + "'");
+    const auto* material = deck.find_material(p->material);
+    const auto* section = deck.find_section(p->section);
+    model.blocks.push_back(make_element_block(m, b, make_material(*material, p->model), *section));
+    for (int e = 0; e < b.element_count; ++e) model.element_block[b.first_element + e] = static_cast<int>(model.blocks.size() - 1);
+  }
+
+  // Lumped mass: rho V0 / 8 to each node of each element (physics.md 1.2).
+  model.mass.assign(static_cast<std::size_t>(nn), 0.0);
+  for (const auto& blk : model.blocks) {
+    const double rho = materials::density_of(blk.material);
+    for (int e = 0; e < blk.count; ++e) {
+      const double share = rho * blk.volume0[e] / 8.0;
+      for (int I = 0; I < 8; ++I) model.mass[m.connectivity[8 * (blk.first_element + e) + I]] += share;
+      model.total_mass += 8.0 * share;
+    }
+  }
+  for (int n = 0; n < nn; ++n)
+    if (!(model.mass[n] > 0.0))
+      throw SetupError("mesh node " + std::to_string(n + 1) + " belongs to no element (zero mass); remove it from the mesh");
+
+  // Kinematic constraints; a dof may be constrained once only.
+  std::map<int, std::string> owner;  // dof -> deck location that constrained it
+  auto constrain = [&](int dof, Constraints::Kind kind, int function, double scale, const inputs::SourceLocation& where) {
+    auto [it, inserted] = owner.emplace(dof, where.str());
+    if (!inserted)
+      throw SetupError(where.str() + ": error: node " + std::to_string(dof / 3 + 1) + " component " + "xyz"[dof % 3] +
+                       " is already constrained at " + it->second + "; constrain each component once");
+    model.constraints.dof.push_back(dof);
+    model.constraints.kind.push_back(kind);
+    model.constraints.function.push_back(function);
+    model.constraints.scale.push_back(scale);
+  };
+  for (const auto& f : region.fixed_displacements)
+    for (int n : node_set(m, f.node_set, f.where))
+      for (auto c : f.components) constrain(3 * n + static_cast<int>(c), Constraints::Kind::fixed, -1, 0.0, f.where);
+  for (const auto& p : region.prescribed_motions) {
+    const auto kind = p.kind == inputs::PrescribedMotionSpec::Kind::displacement ? Constraints::Kind::displacement
+                                                                                 : Constraints::Kind::velocity;
+    for (int n : node_set(m, p.node_set, p.where))
+      constrain(3 * n + static_cast<int>(p.component), kind, function_index(model, p.function), p.scale_factor, p.where);
+  }
+
+  model.initial_velocity.assign(3 * static_cast<std::size_t>(nn), 0.0);
+  for (const auto& iv : region.initial_velocities) {
+    std::vector<int> nodes;
+    if (!iv.node_set.empty()) {
+      nodes = node_set(m, iv.node_set, iv.where);
+    } else {
+      const mesh::Block* b = m.find_block(iv.block);
+      if (!b) missing(iv.where, "block", iv.block, block_names);
+      for (int e = b->first_element; e < b->first_element + b->element_count; ++e)
+        for (int I = 0; I < 8; ++I) nodes.push_back(m.connectivity[8 * e + I]);
+    }
+    for (int n : nodes)
+      for (int i = 0; i < 3; ++i) model.initial_velocity[3 * n + i] = iv.velocity[i];
+  }
+
+  for (const auto& p : region.pressures) {
+    PressureLoad load;
+    for (const auto& s : side_set(m, p.side_set, p.where)) {
+      const auto nodes = m.side_nodes(s);
+      load.face_nodes.insert(load.face_nodes.end(), nodes.begin(), nodes.end());
+    }
+    load.function = function_index(model, p.function);
+    load.scale = p.scale_factor;
+    model.pressures.push_back(std::move(load));
+  }
+
+  // Silent boundaries: accumulate area vectors and coefficients per node over all faces.
+  std::map<int, std::array<double, 5>> silent;  // node -> area vector (3), c_n sum, c_t sum
+  for (const auto& sb : region.silent_boundaries) {
+    for (const auto& s : side_set(m, sb.side_set, sb.where)) {
+      const auto& blk = model.blocks[model.element_block[s.element]];
+      const double rho = materials::density_of(blk.material);
+      const double cp = std::sqrt(materials::wave_modulus_of(blk.material) / rho);
+      const double cs = std::sqrt(materials::shear_modulus_of(blk.material) / rho);
+      const auto nodes = m.side_nodes(s);
+      double a[3];
+      area_vector(m.coordinates.data(), nodes, a);
+      const double area = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+      for (int n : nodes) {
+        auto& acc = silent[n];
+        for (int i = 0; i < 3; ++i) acc[i] += a[i] / 4.0;
+        acc[3] += sb.normal_coefficient * rho * cp * area / 4.0;
+        acc[4] += sb.tangential_coefficient * rho * cs * area / 4.0;
+      }
+    }
+  }
+  for (const auto& [n, acc] : silent) {
+    const double len = std::sqrt(acc[0] * acc[0] + acc[1] * acc[1] + acc[2] * acc[2]);
+    model.silent.node.push_back(n);
+    for (int i = 0; i < 3; ++i) model.silent.normal.push_back(len > 0.0 ? acc[i] / len : 0.0);
+    model.silent.c_normal.push_back(acc[3]);
+    model.silent.c_tangential.push_back(acc[4]);
+  }
+  model.mass_damping = region.mass_damping_coefficient;
+  return model;
+}
+
+}  // namespace tribex::solver

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// The discretised problem a run integrates: mesh, element blocks, lumped mass, kinematic
+// constraints, loads and silent boundaries, all in flat arrays built once before the loop.
+//
+// Layouts: every nodal vector is [node][3] (x, y, z of node n at 3n..3n+2); a "dof" is 3n + c.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "inputs/deck.hpp"
+#include "mesh/mesh.hpp"
+#include "solver/element_block.hpp"
+#include "solver/time_function.hpp"
+
+namespace tribex::solver {
+
+/// Kinematic constraints: each constrained dof once, with its kind.
+struct Constraints {
+  enum class Kind : unsigned char { fixed, displacement, velocity };
+  std::vector<int> dof;                 // 3 * node + component
+  std::vector<Kind> kind;
+  std::vector<int> function;            // index into Model::functions (-1 for fixed)
+  std::vector<double> scale;
+};
+
+/// Follower pressure on side-set faces: f_I = -p(t) a_f / 4 on each face node, a_f the face's
+/// current area vector (outward), p > 0 pushing into the body.
+struct PressureLoad {
+  std::vector<int> face_nodes;  // [face][4]
+  int function = -1;
+  double scale = 1.0;           // Pa per function unit
+};
+
+/// Lysmer-Kuhlemeyer dashpots lumped to nodes (physics.md 4.2): per node an area-weighted unit
+/// normal and the coefficients c_n = a rho c_p A_I, c_t = b rho c_s A_I (N s/m).
+struct SilentBoundaryNodes {
+  std::vector<int> node;
+  std::vector<double> normal;   // [k][3]
+  std::vector<double> c_normal;
+  std::vector<double> c_tangential;
+};
+
+struct Model {
+  mesh::Mesh mesh;
+  std::vector<ElementBlock> blocks;
+  std::vector<double> mass;            // [node] lumped mass, kg (row sum, rho V0 / 8 per element)
+  std::vector<double> initial_velocity;  // [node][3]
+  std::vector<TimeFunction> functions;
+  std::vector<std::string> function_names;
+  Constraints constraints;
+  std::vector<PressureLoad> pressures;
+  SilentBoundaryNodes silent;
+  double mass_damping = 0.0;           // 1/s
+  double total_mass = 0.0;
+  std::vector<int> element_block;      // [element] index into blocks
+};
+
+/// Build the mesh named by the region and everything above from a parsed deck. Throws SetupError
+/// (deck line + what is missing) when the deck and the mesh disagree, mesh::MeshError for a bad
+/// mesh file.
+Model build_model(const inputs::Deck& deck);
+
+/// The mesh of a finite element model spec: generated boxes (appended in deck order) or a gmsh file.
+mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec);
+
+}  // namespace tribex::solver

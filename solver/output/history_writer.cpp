@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#include "solver/output/history_writer.hpp"
+
+#include <cerrno>
+#include <cstring>
+
+#include "solver/errors.hpp"
+
+namespace tribex::solver {
+
+const std::vector<std::string>& HistoryWriter::standard_columns() {
+  static const std::vector<std::string> columns = {
+      "time", "dt", "kinetic_energy", "internal_energy", "hourglass_energy", "external_work",
+      "silent_boundary_dissipation", "contact_work", "energy_error", "contact_normal_force",
+      "contact_tangential_force", "contact_area", "contact_nodes", "damping_dissipation", "viscous_dissipation"};
+  return columns;
+}
+
+HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns) {
+  file_ = std::fopen(path.c_str(), "w");
+  if (!file_) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
+  std::fputs("step", file_);
+  for (const auto& c : standard_columns()) std::fprintf(file_, ",%s", c.c_str());
+  for (const auto& c : extra_columns) std::fprintf(file_, ",%s", c.c_str());
+  std::fputc('\n', file_);
+  std::fflush(file_);
+  columns_ = standard_columns().size() + extra_columns.size();
+}
+
+HistoryWriter::~HistoryWriter() {
+  if (file_) std::fclose(file_);
+}
+
+void HistoryWriter::write_row(long step, const std::vector<double>& values) {
+  std::fprintf(file_, "%ld", step);
+  for (std::size_t k = 0; k < columns_; ++k) std::fprintf(file_, ",%.17g", k < values.size() ? values[k] : 0.0);
+  std::fputc('\n', file_);
+  std::fflush(file_);
+}
+
+}  // namespace tribex::solver

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// history.csv: one header row, one row per history interval (ARCHITECTURE.md "Outputs"):
+//   step,time,dt,kinetic_energy,internal_energy,hourglass_energy,external_work,
+//   silent_boundary_dissipation,contact_work,energy_error,contact_normal_force,
+//   contact_tangential_force,contact_area,contact_nodes,
+// then the other energy terms (damping_dissipation, viscous_dissipation), then the requested
+// node-set columns <set>_reaction_{x,y,z} and <set>_displacement_{x,y,z}. SI units throughout;
+// 17 significant digits so that runs can be compared to round-off. Flushed after every row.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace tribex::solver {
+
+class HistoryWriter {
+ public:
+  /// Opens `path` and writes the header; `extra_columns` are appended after the standard ones.
+  HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns);
+  ~HistoryWriter();
+  HistoryWriter(const HistoryWriter&) = delete;
+  HistoryWriter& operator=(const HistoryWriter&) = delete;
+
+  static const std::vector<std::string>& standard_columns();
+  /// One row: values in the order of the header (step first, as an integer).
+  void write_row(long step, const std::vector<double>& values);
+
+ private:
+  std::FILE* file_ = nullptr;
+  std::size_t columns_ = 0;
+};
+
+}  // namespace tribex::solver

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+#include "solver/output/summary_writer.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "solver/errors.hpp"
+
+namespace tribex::solver {
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (c < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  return out + "\"";
+}
+
+namespace {
+// JSON has no NaN/inf: write null for them.
+std::string number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+}  // namespace
+
+void write_summary_json(const std::string& path, const RunSummary& s, const Energies& e, const StableStep& st) {
+  const std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
+  std::fprintf(f, "{\n");
+  std::fprintf(f, "  \"status\": %s,\n  \"exit_code\": %d,\n", json_string(s.status).c_str(), s.exit_code);
+  std::fprintf(f, "  \"steps\": %ld,\n  \"final_time\": %s,\n", s.steps, number(s.final_time).c_str());
+  std::fprintf(f, "  \"nodes\": %d,\n  \"elements\": %d,\n", s.nodes, s.elements);
+  std::fprintf(f, "  \"wall_time_s\": %s,\n  \"loop_time_s\": %s,\n", number(s.wall_seconds).c_str(),
+               number(s.loop_seconds).c_str());
+  std::fprintf(f, "  \"ns_per_element_step\": %s,\n", number(s.ns_per_element_step).c_str());
+  std::fprintf(f, "  \"initial_stable_time_step\": %s,\n  \"controlling_element\": %d,\n", number(st.dt).c_str(),
+               st.controlling_element + 1);
+  std::fprintf(f, "  \"energy_error\": %s,\n", number(s.energy_error).c_str());
+  std::fprintf(f, "  \"energies\": {\"kinetic\": %s, \"internal\": %s, \"hourglass\": %s, \"external_work\": %s, "
+               "\"silent_boundary_dissipation\": %s, \"damping_dissipation\": %s, \"viscous_dissipation\": %s, "
+               "\"contact_work\": %s, \"initial\": %s}\n",
+               number(e.kinetic).c_str(), number(e.internal).c_str(), number(e.hourglass).c_str(),
+               number(e.external_work).c_str(), number(e.silent_boundary_dissipation).c_str(),
+               number(e.damping_dissipation).c_str(), number(e.viscous_dissipation).c_str(),
+               number(e.contact_work).c_str(), number(e.initial).c_str());
+  std::fprintf(f, "}\n");
+  std::fclose(f);
+  std::rename(tmp.c_str(), path.c_str());
+}
+
+}  // namespace tribex::solver

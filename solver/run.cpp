@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+#include "solver/run.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "solver/errors.hpp"
+#include "solver/integrators/central_difference.hpp"
+#include "solver/model.hpp"
+#include "solver/output/history_writer.hpp"
+#include "solver/output/results_writer.hpp"
+#include "solver/output/run_log.hpp"
+#include "solver/output/summary_writer.hpp"
+
+namespace tribex::solver {
+namespace {
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
+
+/// Installs SIGINT/SIGTERM handlers for the lifetime of the run and restores the old ones.
+class SignalGuard {
+ public:
+  SignalGuard() {
+    g_stop_signal = 0;
+    old_int_ = std::signal(SIGINT, on_stop_signal);
+    old_term_ = std::signal(SIGTERM, on_stop_signal);
+  }
+  ~SignalGuard() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+
+ private:
+  void (*old_int_)(int);
+  void (*old_term_)(int);
+};
+
+/// "Every N steps or every dt seconds of simulated time", plus the first and the last state.
+class Schedule {
+ public:
+  Schedule(std::optional<double> time_increment, std::optional<int> step_increment, double start)
+      : dt_(time_increment), steps_(step_increment), next_(start) {}
+  bool due(double t, long step, bool final) const {
+    if (final || step == 0) return true;
+    if (steps_) return step % *steps_ == 0;
+    return t >= next_ - 1e-9 * *dt_;
+  }
+  void done(double t) {
+    if (dt_)
+      while (next_ <= t + 1e-9 * *dt_) next_ += *dt_;
+  }
+
+ private:
+  std::optional<double> dt_;
+  std::optional<int> steps_;
+  double next_;
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string human_seconds(double s) {
+  if (!std::isfinite(s) || s < 0) return "?";
+  if (s < 120) return format("%.0f s", s);
+  if (s < 7200) return format("%.1f min", s / 60);
+  return format("%.1f h", s / 3600);
+}
+
+}  // namespace
+
+RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
+  const auto wall_start = Clock::now();
+  RunLog log(options.quiet);
+  const auto& region = deck.procedure.region;
+  const auto& tc = deck.procedure.time_control;
+
+  log.say(format("tribex %s | deck %s", TRIBEX_VERSION, deck.path.c_str()));
+  // Bad input is found here, before any file is written.
+  Model model = build_model(deck);
+  const auto& mesh = model.mesh;
+  const int elements = mesh.element_count();
+
+  log.say(format("mesh: %d nodes, %d hex8 elements in %zu block(s); total mass %.6g kg", mesh.node_count(), elements,
+                 model.blocks.size(), model.total_mass));
+  for (const auto& b : model.blocks)
+    log.say(format("  block %-16s %8d elements  %s  %s", b.name.c_str(), b.count,
+                   std::holds_alternative<materials::LinearElastic>(b.material) ? "elastic" : "neo_hookean",
+                   b.formulation == inputs::ElementFormulation::mean_quadrature ? "mean_quadrature" : "fully_integrated"));
+  const StableStep stable0 = compute_stable_time_step(model, nullptr);
+  log.say(format("stable time step %.6g s (element %d controls it); scale factor %.3g => dt = %.6g s", stable0.dt,
+                 stable0.controlling_element + 1, tc.time_step_scale_factor,
+                 std::min(stable0.dt * tc.time_step_scale_factor, tc.maximum_time_step.value_or(INFINITY))));
+  const double est_steps = (tc.termination_time - tc.start_time) /
+                           std::min(stable0.dt * tc.time_step_scale_factor, tc.maximum_time_step.value_or(INFINITY));
+  log.say(format("termination time %.6g s: about %.0f steps", tc.termination_time, std::ceil(est_steps)));
+  log.say(format("constraints: %zu dofs; silent-boundary nodes: %zu; pressure loads: %zu", model.constraints.dof.size(),
+                 model.silent.node.size(), model.pressures.size()));
+
+  RunSummary summary;
+  summary.elements = elements;
+  summary.nodes = mesh.node_count();
+  if (options.check_only) {
+    summary.status = "checked";
+    return summary;
+  }
+
+  // Outputs.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(options.output_directory, ec);
+  if (ec) throw SetupError("cannot create output folder " + options.output_directory + ": " + ec.message());
+  const fs::path out(options.output_directory);
+  log.open((out / "log.txt").string());
+  log.record("# resolved deck (defaults filled in, SI units)\n" + deck.resolved_text + "\n");
+
+  std::vector<std::string> extra = {};
+  const auto* hist_spec = region.history ? &*region.history : nullptr;
+  if (hist_spec) {
+    for (const auto& s : hist_spec->reaction_force_node_sets)
+      for (const char* c : {"x", "y", "z"}) extra.push_back(s + "_reaction_" + c);
+    for (const auto& s : hist_spec->displacement_node_sets)
+      for (const char* c : {"x", "y", "z"}) extra.push_back(s + "_displacement_" + c);
+  }
+  HistoryWriter history((out / "history.csv").string(), extra);
+  std::vector<const std::vector<int>*> reaction_sets, displacement_sets;
+  if (hist_spec) {
+    for (const auto& s : hist_spec->reaction_force_node_sets) reaction_sets.push_back(&mesh.node_sets.at(s));
+    for (const auto& s : hist_spec->displacement_node_sets) displacement_sets.push_back(&mesh.node_sets.at(s));
+  }
+  Schedule history_schedule(hist_spec ? hist_spec->time_increment : std::nullopt,
+                            hist_spec ? hist_spec->step_increment : std::optional<int>(1), tc.start_time);
+
+  std::unique_ptr<ResultsWriter> results;
+  std::optional<Schedule> field_schedule;
+  if (region.results) {
+    results = std::make_unique<ResultsWriter>(out.string(), mesh);
+    field_schedule.emplace(region.results->time_increment, region.results->step_increment, tc.start_time);
+  }
+
+  CentralDifference integrator(model, tc);
+  bool closing = false;
+  const double end_time = tc.termination_time;
+  const auto element_fields_due = [&](double t, long n) {
+    return field_schedule && !region.results->element_variables.empty() &&
+           field_schedule->due(t, n, t >= end_time * (1 - 1e-14));
+  };
+  integrator.set_stress_request(element_fields_due);
+
+  std::vector<double> row;
+  row.reserve(HistoryWriter::standard_columns().size() + extra.size());
+  std::vector<double> element_stress(6 * static_cast<std::size_t>(elements), 0.0);
+  const bool terminal = !options.quiet && isatty(STDERR_FILENO);
+  auto last_progress = Clock::now();
+  Clock::time_point loop_start;
+  const double span = end_time - tc.start_time;
+
+  auto write_outputs = [&]() {
+    const double t = integrator.time();
+    const long n = integrator.step_index();
+    const auto& E = integrator.energies();
+    if (history_schedule.due(t, n, closing)) {
+      row.clear();
+      row.insert(row.end(), {t, integrator.dt(), E.kinetic, E.internal, E.hourglass, E.external_work,
+                             E.silent_boundary_dissipation, E.contact_work, E.relative_error(), 0.0, 0.0, 0.0, 0.0,
+                             E.damping_dissipation, E.viscous_dissipation});
+      for (const auto* set : reaction_sets) {
+        double r[3] = {0, 0, 0};
+        for (int node : *set)
+          for (int i = 0; i < 3; ++i) r[i] += integrator.reaction()[3 * node + i];
+        row.insert(row.end(), r, r + 3);
+      }
+      for (const auto* set : displacement_sets) {
+        double d[3] = {0, 0, 0};
+        for (int node : *set)
+          for (int i = 0; i < 3; ++i) d[i] += integrator.displacement()[3 * node + i];
+        for (double& x : d) x /= static_cast<double>(set->size());
+        row.insert(row.end(), d, d + 3);
+      }
+      history.write_row(n, row);
+      history_schedule.done(t);
+    }
+    if (field_schedule && field_schedule->due(t, n, closing)) {
+      std::vector<FieldView> nodal, element;
+      for (const auto& name : region.results->nodal_variables) {
+        const std::vector<double>* v = nullptr;
+        if (name == "displacement") v = &integrator.displacement();
+        if (name == "velocity") v = &integrator.velocity();
+        if (name == "acceleration") v = &integrator.acceleration();
+        if (name == "force") v = &integrator.force();
+        if (v) nodal.push_back({name, 3, *v});
+      }
+      for (const auto& name : region.results->element_variables) {
+        if (name != "stress") continue;
+        for (const auto& b : model.blocks)
+          std::copy(b.stress.begin(), b.stress.end(), element_stress.begin() + 6 * b.first_element);
+        element.push_back({"stress", 6, element_stress});
+      }
+      results->write_step(t, nodal, element);
+      field_schedule->done(t);
+    }
+    if (region.energy_error_limit && E.relative_error() > *region.energy_error_limit && n > 0)
+      throw NumericalFailure(format("energy error %.3g exceeds the limit %.3g of the deck at step %ld, t = %.6g s",
+                                    E.relative_error(), *region.energy_error_limit, n, t));
+    if (terminal && seconds_since(last_progress) > 0.5) {
+      last_progress = Clock::now();
+      const double frac = span > 0 ? (t - tc.start_time) / span : 1.0;
+      const double elapsed = seconds_since(loop_start);
+      std::fprintf(stderr, "\r  step %ld | t %.4g s | %5.1f%% | ETA %s | dt %.3g s | energy error %.2e   ", n, t,
+                   100.0 * frac, human_seconds(frac > 0 ? elapsed * (1 - frac) / frac : NAN).c_str(), integrator.dt(),
+                   E.relative_error());
+      std::fflush(stderr);
+    }
+  };
+
+  const std::function<void()> on_time_n = write_outputs;  // built once: no allocation per step
+  SignalGuard signals;
+  log.say("running ...");
+  loop_start = Clock::now();
+  try {
+    integrator.init();
+    while (!integrator.finished()) {
+      integrator.step(on_time_n);
+      if (g_stop_signal) break;
+    }
+    closing = true;
+    integrator.close(on_time_n);
+    summary.exit_code = g_stop_signal ? 130 : 0;
+    summary.status = g_stop_signal ? "interrupted" : "normal termination";
+  } catch (const NumericalFailure& e) {
+    summary.exit_code = 3;
+    summary.status = std::string("numerical failure: ") + e.what();
+  }
+  summary.loop_seconds = seconds_since(loop_start);
+  if (terminal) std::fprintf(stderr, "\n");
+  if (results) results->flush();
+
+  summary.steps = integrator.step_index();
+  summary.final_time = integrator.time();
+  summary.energy_error = integrator.energies().relative_error();
+  summary.ns_per_element_step =
+      summary.steps > 0 && elements > 0 ? 1e9 * summary.loop_seconds / (double(elements) * double(summary.steps)) : 0.0;
+  summary.wall_seconds = seconds_since(wall_start);
+  write_summary_json((out / "summary.json").string(), summary, integrator.energies(), stable0);
+  log.say(format("%ld steps to t = %.6g s in %.3g s wall (loop %.3g s, %.1f ns per element per step); energy error %.3e",
+                 summary.steps, summary.final_time, summary.wall_seconds, summary.loop_seconds,
+                 summary.ns_per_element_step, summary.energy_error));
+  log.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out.string().c_str(),
+                 results ? ",results.h5,results.xdmf" : ""));
+  log.say(summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status);
+  return summary;
+}
+
+}  // namespace tribex::solver

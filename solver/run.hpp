@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// A whole run of a deck: set-up, pre-flight report, the time loop with history/field output,
+// progress, signals, and the closing summary. This is what `tribex run` calls.
+#pragma once
+
+#include <string>
+
+#include "inputs/deck.hpp"
+
+namespace tribex::solver {
+
+struct RunOptions {
+  std::string output_directory;  // created if missing
+  bool quiet = false;            // no progress line, no echo to the terminal (log.txt still written)
+  bool check_only = false;       // set up, print the pre-flight report, do not integrate
+};
+
+struct RunSummary {
+  int exit_code = 0;             // 0, 3 (numerical failure) or 130 (interrupted)
+  std::string status;            // "normal termination", "numerical failure: ...", "interrupted"
+  long steps = 0;
+  double final_time = 0.0;
+  double energy_error = 0.0;
+  double wall_seconds = 0.0;
+  double loop_seconds = 0.0;
+  double ns_per_element_step = 0.0;  // loop time / (elements * steps)
+  int elements = 0;
+  int nodes = 0;
+};
+
+/// Runs `deck`. Bad input (deck vs mesh) throws SetupError/MeshError before anything is written
+/// to the output folder except log.txt; a numerical failure is returned as exit code 3 with every
+/// output file flushed and valid; SIGINT/SIGTERM finish the current step and return 130.
+RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options);
+
+}  // namespace tribex::solver

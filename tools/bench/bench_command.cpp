@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+// `tribex bench block`: the standard element benchmark of issue "Foundation" (tools/bench/README.md).
+// A unit cube of N^3 hex8, steel (rho 7800 kg/m^3, K 160 GPa, G 80 GPa), nodes on x = 0 fixed,
+// nodes on x = 1 pulled at 10 m/s in x, time step half the stable estimate, no output in the loop.
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "solver/integrators/central_difference.hpp"
+#include "solver/model.hpp"
+#include "tools/bench/allocation_counter.hpp"
+#include "tools/cli/commands.hpp"
+#include "tools/common/args.hpp"
+#include "tools/common/errors.hpp"
+
+namespace tribex::cli {
+namespace {
+
+const char* usage =
+    "tribex bench block [--n N] [--element mean_quadrature|fully_integrated]\n"
+    "                   [--material elastic|neohookean] [--steps S]\n"
+    "  Times the explicit loop on a unit cube of N^3 hex8 elements (default N 20, 200 steps).\n"
+    "  Prints loop-only and whole-command ns per element per step, heap allocations inside the\n"
+    "  loop and the peak resident memory; the last line is ns_per_element_step=VALUE (loop only).\n";
+
+inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::MaterialModel model) {
+  inputs::Deck deck;
+  deck.name = "bench_block";
+  deck.path = "(tribex bench block)";
+  inputs::FunctionSpec pull{"pull", {0.0, 1.0}, {10.0, 10.0}, {}};  // 10 m/s
+  deck.functions.push_back(pull);
+  const double K = 160e9, G = 80e9;
+  inputs::MaterialSpec steel;
+  steel.name = "steel";
+  steel.density = 7800.0;
+  // E = 9KG/(3K+G), nu = (3K-2G)/(2(3K+G))
+  steel.models.push_back({model, 9 * K * G / (3 * K + G), (3 * K - 2 * G) / (2 * (3 * K + G)), {}});
+  deck.materials.push_back(steel);
+  inputs::SectionSpec section;
+  section.name = "hex8";
+  section.formulation = formulation;
+  deck.sections.push_back(section);
+  inputs::FiniteElementModelSpec fem;
+  fem.name = "cube";
+  inputs::GeneratedBoxSpec box;
+  box.block_name = "cube";
+  box.size = {1.0, 1.0, 1.0};
+  box.intervals = {n, n, n};
+  fem.boxes.push_back(box);
+  fem.blocks.push_back({"cube", "steel", model, "hex8", {}});
+  deck.models.push_back(fem);
+  auto& proc = deck.procedure;
+  proc.time_control.termination_time = 1.0;  // the loop is stopped by the step count
+  proc.time_control.time_step_scale_factor = 0.5;
+  proc.region.finite_element_model = "cube";
+  proc.region.fixed_displacements.push_back({"cube_xmin", {inputs::Component::x, inputs::Component::y, inputs::Component::z}, {}});
+  proc.region.prescribed_motions.push_back(
+      {inputs::PrescribedMotionSpec::Kind::velocity, "cube_xmax", inputs::Component::x, "pull", 1.0, {}});
+  return deck;
+}
+
+}  // namespace
+
+int bench_command(const std::vector<std::string>& argv) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  tools::Args args(argv, "tribex bench", usage);
+  if (args.help_requested()) {
+    std::fputs(usage, stdout);
+    return 0;
+  }
+  const std::string what = args.positional(0, "benchmark name (block)");
+  const long n = args.integer("--n", 20);
+  const long steps = args.integer("--steps", 200);
+  const std::string element = args.text("--element", "mean_quadrature");
+  const std::string material = args.text("--material", "elastic");
+  args.finish();
+  if (what != "block") throw tools::BadInput("tribex bench: unknown benchmark '" + what + "' (known: block)");
+  if (n < 1 || n > 400) throw tools::BadInput("tribex bench: --n must be in 1..400");
+  if (steps < 1) throw tools::BadInput("tribex bench: --steps must be >= 1");
+  inputs::ElementFormulation formulation;
+  if (element == "mean_quadrature") formulation = inputs::ElementFormulation::mean_quadrature;
+  else if (element == "fully_integrated") formulation = inputs::ElementFormulation::fully_integrated;
+  else throw tools::BadInput("tribex bench: --element must be mean_quadrature or fully_integrated");
+  inputs::MaterialModel model;
+  if (material == "elastic") model = inputs::MaterialModel::elastic;
+  else if (material == "neohookean" || material == "neo_hookean") model = inputs::MaterialModel::neo_hookean;
+  else throw tools::BadInput("tribex bench: --material must be elastic or neohookean");
+
+  const inputs::Deck deck = block_deck(static_cast<int>(n), formulation, model);
+  solver::Model m = solver::build_model(deck);
+  solver::CentralDifference integrator(m, deck.procedure.time_control);
+  integrator.init();
+  const std::function<void()> nothing;
+  const auto allocations_before = bench::allocation_count();
+  const auto loop_start = Clock::now();
+  for (long s = 0; s < steps; ++s) integrator.step(nothing);
+  const double loop = std::chrono::duration<double>(Clock::now() - loop_start).count();
+  const auto allocations = bench::allocation_count() - allocations_before;
+  const double total = std::chrono::duration<double>(Clock::now() - t0).count();
+  rusage usage_info{};
+  getrusage(RUSAGE_SELF, &usage_info);
+  const double elements = double(m.mesh.element_count());
+  const double per = 1e9 * loop / (elements * double(steps));
+  std::printf("block %ld^3 = %.0f elements, %s, %s, %ld steps of %.4g s\n", n, elements, element.c_str(),
+              material.c_str(), steps, integrator.next_dt());
+  std::printf("loop %.4f s, whole command %.4f s\n", loop, total);
+  std::printf("whole_command_ns_per_element_step=%.2f\n", 1e9 * total / (elements * double(steps)));
+  std::printf("heap_allocations_in_loop=%llu\n", static_cast<unsigned long long>(allocations));
+  std::printf("peak_rss_mib=%.1f\n", double(usage_info.ru_maxrss) / 1024.0);
+  std::printf("energy_error=%.3e\n", integrator.energies().relative_error());
+  std::printf("ns_per_element_step=%.2f\n", per);
+  return 0;
+}
+
+}  // namespace tribex::cli
