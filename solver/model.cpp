@@ -99,12 +99,22 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
   return m;
 }
 
-Model build_model(const inputs::Deck& deck) {
+namespace {
+const inputs::FiniteElementModelSpec& model_spec(const inputs::Deck& deck) {
   const auto& region = deck.procedure.region;
   const inputs::FiniteElementModelSpec* fem = deck.find_model(region.finite_element_model);
   if (!fem) throw SetupError(region.where.str() + ": error: unknown finite element model '" + region.finite_element_model + "'");
+  return *fem;
+}
+}  // namespace
+
+Model build_model(const inputs::Deck& deck) { return build_model(deck, build_mesh(model_spec(deck))); }
+
+Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
+  const auto& region = deck.procedure.region;
+  const inputs::FiniteElementModelSpec* fem = &model_spec(deck);
   Model model;
-  model.mesh = build_mesh(*fem);
+  model.mesh = std::move(mesh);
   const mesh::Mesh& m = model.mesh;
   const int nn = m.node_count();
 

@@ -61,6 +61,9 @@ struct Model {
 /// mesh file.
 Model build_model(const inputs::Deck& deck);
 
+/// The same on a mesh built elsewhere (tests, tools that generate meshes themselves).
+Model build_model(const inputs::Deck& deck, mesh::Mesh mesh);
+
 /// The mesh of a finite element model spec: generated boxes (appended in deck order) or a gmsh file.
 mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec);
 
