@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Reflected energy of a pulse at a silent (Lysmer-Kuhlemeyer) or fixed boundary.
+
+At the end time the incident pulse has reached the bottom and whatever reflected is back inside
+the column, so R = (kinetic + internal energy) / external work is the reflected energy fraction.
+Tolerances (issue "Foundation", physics.md 4.4): silent boundary R < 2 % and at least 98 % of the
+input in silent_boundary_dissipation; fixed end R > 95 % (so that the test can fail).
+"""
+import argparse
+import csv
+import sys
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("history")
+    p.add_argument("--case", required=True, help="p_silent, p_fixed, s_silent or s_fixed")
+    p.add_argument("--plot", help="write a PNG of the energies against time")
+    a = p.parse_args()
+    with open(a.history) as f:
+        rows = list(csv.DictReader(f))
+    t = [float(r["time"]) for r in rows]
+    ke = [float(r["kinetic_energy"]) for r in rows]
+    ie = [float(r["internal_energy"]) for r in rows]
+    wext = [float(r["external_work"]) for r in rows]
+    sil = [float(r["silent_boundary_dissipation"]) for r in rows]
+    err = max(float(r["energy_error"]) for r in rows)
+    reflected = (ke[-1] + ie[-1]) / wext[-1]
+    absorbed = sil[-1] / wext[-1]
+    ok = True
+    print(f"{a.case}: input energy {wext[-1]:.4e} J, reflected fraction R = {reflected:.4%}, "
+          f"absorbed by dashpots {absorbed:.4%}, max energy error {err:.2e}")
+    if a.case.endswith("silent"):
+        ok &= reflected < 0.02
+        ok &= absorbed > 0.98
+        print(f"  tolerance: R < 2 % and absorbed > 98 % -> {'PASS' if ok else 'FAIL'}")
+    else:
+        ok &= reflected > 0.95
+        print(f"  tolerance: R > 95 % (the control must reflect) -> {'PASS' if ok else 'FAIL'}")
+    ok &= err < 0.01
+    print(f"  energy balance error {err:.2e} < 1e-2 -> {'PASS' if err < 0.01 else 'FAIL'}")
+    if a.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        ps = [x * 1e12 for x in t]
+        fig, ax = plt.subplots(figsize=(6, 4))
+        ax.plot(ps, [x * 1e21 for x in wext], label="external work")
+        ax.plot(ps, [(k + i) * 1e21 for k, i in zip(ke, ie)], label="kinetic + internal")
+        ax.plot(ps, [x * 1e21 for x in sil], label="absorbed by silent boundary")
+        ax.set_xlabel("time (ps)")
+        ax.set_ylabel("energy (zJ)")
+        ax.set_title(f"{a.case}: reflected fraction {reflected:.2%}")
+        ax.legend()
+        fig.tight_layout()
+        fig.savefig(a.plot, dpi=120)
+        print(f"  plot: {a.plot}")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
