@@ -120,7 +120,8 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
                                       const std::string& path) {
   const int stored = stored_components(f.components);
   const auto rows = static_cast<hsize_t>(entities);
-  H5Handle d = output::create_dataset(group, f.name, H5T_IEEE_F64LE, rows, static_cast<hsize_t>(stored), h5_path);
+  const auto cols = static_cast<hsize_t>(stored == 1 ? 0 : stored);  // scalars are 1-D [entity]
+  H5Handle d = output::create_dataset(group, f.name, H5T_IEEE_F64LE, rows, cols, h5_path);
   const double* data = f.values.data();
   if (f.components == 6) {
     tensor_buffer.resize(static_cast<std::size_t>(entities) * 9);  // no-op after the first step
@@ -131,7 +132,7 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
     }
     data = tensor_buffer.data();
   }
-  output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, static_cast<hsize_t>(stored),
+  output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols,
                      h5_path + ":" + path);
 }
 
