@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// PROVISIONAL interface (replaced by the implementation branch): results.h5 + results.xdmf.
+// Results output: one HDF5 file with the heavy arrays plus a small XDMF 2 sidecar that ParaView's
+// "XDMF Reader" (Xdmf2) and "Xdmf3ReaderS" open as a time series. See README.md for the layouts.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 
@@ -9,18 +11,48 @@
 
 namespace tribex::solver {
 
+/// A field to write: values laid out [entity][components], entity = node or element.
+/// components: 1 scalar, 3 vector (x y z), 6 symmetric tensor in Voigt order xx yy zz xy yz zx
+/// (written as a full 3x3 "Tensor" because ParaView's two XDMF readers disagree on "Tensor6"),
+/// 9 full tensor row-major (xx xy xz yx yy yz zx zy zz); any other count is written as a
+/// "Matrix" attribute of that many components.
 struct FieldView {
-  std::string name;
-  int components;
+  std::string name;  // letters, digits, '_', '-', '.'; unique within a step
+  int components = 1;
   std::span<const double> values;
 };
 
+/// Writes DIR/results.h5 and DIR/results.xdmf. The mesh is written once; every step references it.
+/// After the constructor and after every write_step the pair on disk is complete and readable
+/// (HDF5 flushed first, then the XDMF rewritten atomically by temp file + rename), so a crash
+/// loses at most the step being written.
 class ResultsWriter {
  public:
+  /// Creates DIR (and parents) and the two files, truncating old ones; writes coordinates [n][3],
+  /// connectivity [e][8] (0-based int32), block_id [e] (-1 for elements in no block) and the block
+  /// names. Throws SetupError (one line, path and reason) when a file or directory cannot be made.
   ResultsWriter(const std::string& directory, const mesh::Mesh& mesh);
-  ~ResultsWriter();
+  ~ResultsWriter();  // closes; the files stay valid
+  ResultsWriter(const ResultsWriter&) = delete;
+  ResultsWriter& operator=(const ResultsWriter&) = delete;
+
+  /// Appends one time step (time in s, finite and larger than the previous step's). Every step
+  /// must carry the same fields (names, components, order) as the first; a mismatch, a bad name or
+  /// a wrong value count throws std::invalid_argument before anything is written. An HDF5 write
+  /// failure (disk full) throws std::runtime_error naming the file; earlier steps stay readable.
   void write_step(double time, std::span<const FieldView> nodal, std::span<const FieldView> element);
+
+  /// H5Fflush and XDMF rewrite. write_step already does both; this is for callers that must be
+  /// sure before they throw (NumericalFailure) or checkpoint.
   void flush();
+
+  int step_count() const;
+  const std::string& h5_path() const;
+  const std::string& xdmf_path() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace tribex::solver

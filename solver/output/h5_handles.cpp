@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "solver/output/h5_handles.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tribex::solver::output {
+namespace {
+
+[[noreturn]] void fail(const std::string& what, const std::string& action) {
+  throw std::runtime_error(what + ": HDF5 could not " + action +
+                           " (disk full or file removed while running?)");
+}
+
+}  // namespace
+
+H5Handle create_group(hid_t loc, const std::string& name, const std::string& file) {
+  H5Handle g(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!g.valid()) fail(file, "create group '" + name + "'");
+  return g;
+}
+
+H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsize_t rows,
+                        hsize_t cols, const std::string& file) {
+  const hsize_t dims[2] = {rows, cols};
+  H5Handle space(H5Screate_simple(cols == 0 ? 1 : 2, dims, nullptr), H5Sclose);
+  H5Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  // No fill pass: the whole dataset is written right after creation, so filling would double
+  // the I/O of every step for nothing.
+  if (!space.valid() || !dcpl.valid() || H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER) < 0 ||
+      H5Pset_alloc_time(dcpl.get(), H5D_ALLOC_TIME_LATE) < 0)
+    fail(file, "prepare dataset '" + name + "'");
+  H5Handle d(H5Dcreate2(loc, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+             H5Dclose);
+  if (!d.valid()) fail(file, "create dataset '" + name + "'");
+  return d;
+}
+
+void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_offset, hsize_t rows,
+                hsize_t cols, const std::string& what) {
+  const int rank = cols == 0 ? 1 : 2;
+  const hsize_t count[2] = {rows, std::max<hsize_t>(cols, 1)};
+  const hsize_t start[2] = {row_offset, 0};
+  H5Handle file_space(H5Dget_space(dataset), H5Sclose);
+  H5Handle mem_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
+  if (!file_space.valid() || !mem_space.valid() ||
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
+    fail(what, "select rows");
+  if (rows == 0) return;  // an empty slab (a rank owning nothing) writes nothing
+  if (H5Dwrite(dataset, mem_type, mem_space.get(), file_space.get(), H5P_DEFAULT, data) < 0)
+    fail(what, "write");
+}
+
+void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what) {
+  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  H5Handle a(H5Acreate2(loc, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+             H5Aclose);
+  if (!a.valid() || H5Awrite(a.get(), H5T_NATIVE_DOUBLE, &value) < 0)
+    fail(what, "write attribute '" + name + "'");
+}
+
+void write_string_attribute(hid_t loc, const std::string& name, const std::string& value,
+                            const std::string& what) {
+  H5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  // Size includes the terminating NUL (H5T_STR_NULLTERM), so readers see the whole text.
+  if (!type.valid() || H5Tset_size(type.get(), value.size() + 1) < 0)
+    fail(what, "make string type for '" + name + "'");
+  H5Handle a(H5Acreate2(loc, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!a.valid() || H5Awrite(a.get(), type.get(), value.c_str()) < 0)
+    fail(what, "write attribute '" + name + "'");
+}
+
+}  // namespace tribex::solver::output

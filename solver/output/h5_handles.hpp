@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// Thin RAII and dataset helpers over the HDF5 C API, private to solver/output (hdf5.h stays out of
+// public headers because tribex_core links HDF5 privately).
+//
+// Dataset creation and data writes are separate on purpose: in the parallel version (issue 6)
+// every rank creates the same global datasets collectively and then writes its own slab of rows
+// with write_rows(offset = first owned row), adding only a collective transfer property list.
+#pragma once
+
+#include <hdf5.h>
+
+#include <string>
+#include <utility>
+
+namespace tribex::solver::output {
+
+/// Owns one HDF5 identifier and closes it with the matching H5?close.
+class H5Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  H5Handle() = default;
+  H5Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+  H5Handle(H5Handle&& o) noexcept : id_(std::exchange(o.id_, H5I_INVALID_HID)), closer_(o.closer_) {}
+  H5Handle& operator=(H5Handle&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, H5I_INVALID_HID);
+      closer_ = o.closer_;
+    }
+    return *this;
+  }
+  H5Handle(const H5Handle&) = delete;
+  H5Handle& operator=(const H5Handle&) = delete;
+  ~H5Handle() { reset(); }
+
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  void reset() {
+    if (id_ >= 0 && closer_ != nullptr) closer_(id_);
+    id_ = H5I_INVALID_HID;
+  }
+
+ private:
+  hid_t id_ = H5I_INVALID_HID;
+  Closer closer_ = nullptr;
+};
+
+/// Creates group `name` under `loc`; throws std::runtime_error naming `file` on failure.
+H5Handle create_group(hid_t loc, const std::string& name, const std::string& file);
+
+/// Creates a contiguous dataset of `rows` x `cols` (cols == 0: one-dimensional) elements of
+/// `file_type`, allocated late and never filled (every byte is written by write_rows).
+H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsize_t rows,
+                        hsize_t cols, const std::string& file);
+
+/// Writes rows [row_offset, row_offset + rows) of a dataset created by create_dataset from a
+/// contiguous [rows][cols] buffer of `mem_type`, through explicit file and memory dataspaces.
+void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_offset, hsize_t rows,
+                hsize_t cols, const std::string& what);
+
+/// Writes a scalar double attribute `name` on `loc`.
+void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what);
+
+/// Writes a fixed-length string attribute `name` on `loc`.
+void write_string_attribute(hid_t loc, const std::string& name, const std::string& value,
+                            const std::string& what);
+
+}  // namespace tribex::solver::output

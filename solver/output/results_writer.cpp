@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: MIT
+#include "solver/output/results_writer.hpp"
+
+#include <hdf5.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+#include "solver/errors.hpp"
+#include "solver/output/h5_handles.hpp"
+#include "solver/output/xdmf_document.hpp"
+
+namespace tribex::solver {
+namespace {
+
+using output::Center;
+using output::H5Handle;
+
+// HDF5 prints its whole error stack to stderr on any failure; we report one line ourselves.
+class QuietHdf5Errors {
+ public:
+  QuietHdf5Errors() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietHdf5Errors(const QuietHdf5Errors&) = delete;
+  QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+struct FieldSpec {
+  std::string name;
+  int components = 0;
+  friend bool operator==(const FieldSpec&, const FieldSpec&) = default;
+};
+
+bool valid_name(const std::string& n) {
+  if (n.empty() || n == "block_id") return false;
+  for (char c : n) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-' || c == '.';
+    if (!ok) return false;
+  }
+  return n != "." && n != "..";
+}
+
+// Stored components: a symmetric tensor (6, Voigt xx yy zz xy yz zx) is stored as the full 3x3.
+int stored_components(int components) { return components == 6 ? 9 : components; }
+
+// Voigt index of full-tensor entry (i, j), row-major: xx xy xz / yx yy yz / zx zy zz.
+constexpr int voigt_of_full[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
+
+}  // namespace
+
+struct ResultsWriter::Impl {
+  std::string directory;
+  std::string h5_path;
+  std::string xdmf_path;
+  long long nodes = 0;
+  long long elements = 0;
+  H5Handle file;
+  output::XdmfDocument doc;
+  std::vector<FieldSpec> nodal_spec;
+  std::vector<FieldSpec> element_spec;
+  std::vector<double> tensor_buffer;  // reused every step: full tensors expanded from Voigt
+  double last_time = 0.0;
+
+  Impl(std::string dir, long long n, long long e, std::vector<std::string> block_names)
+      : directory(std::move(dir)),
+        h5_path((std::filesystem::path(directory) / "results.h5").string()),
+        xdmf_path((std::filesystem::path(directory) / "results.xdmf").string()),
+        nodes(n),
+        elements(e),
+        doc("results.h5", n, e, std::move(block_names)) {}
+
+  void check_fields(std::span<const FieldView> fields, long long entities, const char* kind,
+                    const std::vector<FieldSpec>& spec, std::set<std::string>& seen) const;
+  void write_field(hid_t group, const FieldView& f, long long entities, const std::string& path);
+};
+
+void ResultsWriter::Impl::check_fields(std::span<const FieldView> fields, long long entities,
+                                       const char* kind, const std::vector<FieldSpec>& spec,
+                                       std::set<std::string>& seen) const {
+  const std::string where = "ResultsWriter::write_step (" + h5_path + "): " + kind + " field ";
+  for (const auto& f : fields) {
+    if (!valid_name(f.name))
+      throw std::invalid_argument(where + "'" + f.name +
+                                  "': name must be non-empty letters, digits, '_', '-', '.' and not block_id");
+    if (!seen.insert(f.name).second)
+      throw std::invalid_argument(where + "'" + f.name + "' appears twice in one step");
+    if (f.components < 1)
+      throw std::invalid_argument(where + "'" + f.name + "' has " + std::to_string(f.components) +
+                                  " components; need at least 1");
+    const auto expected = static_cast<std::size_t>(entities) * static_cast<std::size_t>(f.components);
+    if (f.values.size() != expected)
+      throw std::invalid_argument(where + "'" + f.name + "' has " + std::to_string(f.values.size()) +
+                                  " values; expected " + std::to_string(entities) + " x " +
+                                  std::to_string(f.components) + " = " + std::to_string(expected));
+  }
+  if (doc.step_count() == 0) return;
+  bool same = spec.size() == fields.size();
+  for (std::size_t i = 0; same && i < fields.size(); ++i)
+    same = spec[i] == FieldSpec{fields[i].name, fields[i].components};
+  if (!same)
+    throw std::invalid_argument(where + "list differs from the first step's; every step must write the "
+                                        "same fields (names, components, order)");
+}
+
+void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long entities,
+                                      const std::string& path) {
+  const int stored = stored_components(f.components);
+  const auto rows = static_cast<hsize_t>(entities);
+  const auto cols = static_cast<hsize_t>(stored == 1 ? 0 : stored);  // scalars are 1-D [entity]
+  H5Handle d = output::create_dataset(group, f.name, H5T_IEEE_F64LE, rows, cols, h5_path);
+  const double* data = f.values.data();
+  if (f.components == 6) {
+    tensor_buffer.resize(static_cast<std::size_t>(entities) * 9);  // no-op after the first step
+    for (long long e = 0; e < entities; ++e) {
+      const double* v = data + 6 * e;
+      double* t = tensor_buffer.data() + 9 * e;
+      for (int k = 0; k < 9; ++k) t[k] = v[voigt_of_full[k]];
+    }
+    data = tensor_buffer.data();
+  }
+  output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols,
+                     h5_path + ":" + path);
+}
+
+ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mesh) {
+  if (mesh.coordinates.size() % 3 != 0 || mesh.connectivity.size() % 8 != 0)
+    throw std::invalid_argument("ResultsWriter: mesh arrays are not [n][3] and [e][8]");
+  const long long n = mesh.node_count();
+  const long long e = mesh.element_count();
+  std::vector<int> block_id(static_cast<std::size_t>(e), -1);
+  std::vector<std::string> names;
+  for (const auto& b : mesh.blocks) {
+    if (b.first_element < 0 || b.element_count < 0 || b.first_element + b.element_count > e)
+      throw std::invalid_argument("ResultsWriter: block '" + b.name + "' runs past the last element");
+    for (int k = 0; k < b.element_count; ++k)
+      block_id[static_cast<std::size_t>(b.first_element + k)] = static_cast<int>(names.size());
+    names.push_back(b.name);
+  }
+  impl_ = std::make_unique<Impl>(directory, n, e, names);
+  QuietHdf5Errors quiet;
+
+  std::error_code ec;
+  std::filesystem::create_directories(directory, ec);
+  if (ec || !std::filesystem::is_directory(directory))
+    throw SetupError("cannot create output directory '" + directory + "': " +
+                     (ec ? ec.message() : std::string("a file of that name exists")) +
+                     "; choose another output directory or fix its permissions");
+  // fopen first: HDF5's own failure message is a multi-line stack without the errno text.
+  if (std::FILE* probe = std::fopen(impl_->h5_path.c_str(), "wb")) {
+    std::fclose(probe);
+  } else {
+    throw SetupError("cannot create results file '" + impl_->h5_path + "': " + std::strerror(errno) +
+                     "; choose another output directory or fix its permissions");
+  }
+  impl_->file = H5Handle(H5Fcreate(impl_->h5_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!impl_->file.valid())
+    throw SetupError("cannot create results file '" + impl_->h5_path + "': HDF5 H5Fcreate failed");
+
+  try {
+    const std::string& p = impl_->h5_path;
+    hid_t f = impl_->file.get();
+    H5Handle g = output::create_group(f, "/mesh", p);
+    output::create_group(f, "/steps", p);
+    output::write_string_attribute(g.get(), "connectivity_order",
+                                   "hex8 as VTK_HEXAHEDRON / physics.md 2.1, 0-based node indices", p);
+    H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p);
+    output::write_rows(xyz.get(), H5T_NATIVE_DOUBLE, mesh.coordinates.data(), 0, n, 3, p + ":/mesh/coordinates");
+    H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p);
+    output::write_rows(conn.get(), H5T_NATIVE_INT, mesh.connectivity.data(), 0, e, 8, p + ":/mesh/connectivity");
+    H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p);
+    output::write_rows(bid.get(), H5T_NATIVE_INT, block_id.data(), 0, e, 0, p + ":/mesh/block_id");
+    std::string joined;
+    for (std::size_t b = 0; b < names.size(); ++b) {
+      if (b > 0) joined += '\n';
+      joined += names[b];
+    }
+    output::write_string_attribute(bid.get(), "block_names", joined, p);  // line b names block_id b
+    flush();
+  } catch (const std::runtime_error& err) {
+    throw SetupError(err.what());
+  }
+}
+
+ResultsWriter::~ResultsWriter() = default;  // H5Handle closes the file; the XDMF is already on disk
+
+void ResultsWriter::write_step(double time, std::span<const FieldView> nodal,
+                               std::span<const FieldView> element) {
+  Impl& m = *impl_;
+  if (!std::isfinite(time) || (m.doc.step_count() > 0 && !(time > m.last_time)))
+    throw std::invalid_argument("ResultsWriter::write_step (" + m.h5_path + "): time " + std::to_string(time) +
+                                " must be finite and larger than the previous step's " +
+                                std::to_string(m.last_time));
+  std::set<std::string> seen;
+  m.check_fields(nodal, m.nodes, "nodal", m.nodal_spec, seen);
+  m.check_fields(element, m.elements, "element", m.element_spec, seen);
+
+  QuietHdf5Errors quiet;
+  const std::string step = output::XdmfDocument::step_name(m.doc.step_count());
+  const std::string base = "/steps/" + step;
+  H5Handle g = output::create_group(m.file.get(), base, m.h5_path);
+  output::write_double_attribute(g.get(), "time", time, m.h5_path + ":" + base);
+  std::vector<output::XdmfAttribute> attributes;
+  const struct {
+    std::span<const FieldView> fields;
+    const char* group;
+    Center center;
+    long long entities;
+  } kinds[2] = {{nodal, "nodal", Center::node, m.nodes}, {element, "element", Center::cell, m.elements}};
+  for (const auto& k : kinds) {
+    H5Handle sub = output::create_group(g.get(), k.group, m.h5_path);
+    for (const auto& f : k.fields) {
+      const std::string path = base + "/" + k.group + "/" + f.name;
+      m.write_field(sub.get(), f, k.entities, path);
+      attributes.push_back({f.name, k.center, stored_components(f.components), path});
+    }
+  }
+  if (m.doc.step_count() == 0) {
+    for (const auto& f : nodal) m.nodal_spec.push_back({f.name, f.components});
+    for (const auto& f : element) m.element_spec.push_back({f.name, f.components});
+  }
+  m.doc.add_step(time, attributes);
+  m.last_time = time;
+  flush();
+}
+
+void ResultsWriter::flush() {
+  QuietHdf5Errors quiet;
+  // HDF5 first: the XDMF must never name a dataset that is not on disk yet.
+  if (H5Fflush(impl_->file.get(), H5F_SCOPE_LOCAL) < 0)
+    throw std::runtime_error(impl_->h5_path + ": H5Fflush failed (disk full?)");
+  impl_->doc.write_atomically(impl_->xdmf_path);
+}
+
+int ResultsWriter::step_count() const { return impl_->doc.step_count(); }
+const std::string& ResultsWriter::h5_path() const { return impl_->h5_path; }
+const std::string& ResultsWriter::xdmf_path() const { return impl_->xdmf_path; }
+
+}  // namespace tribex::solver

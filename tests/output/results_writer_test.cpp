@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: MIT
+// ResultsWriter: read the HDF5 file back with the C API, check the XDMF text, crash safety and
+// error paths. The ParaView read is the separate CTest check_xdmf_paraview (see CMakeLists.txt).
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+#include "sample_case.hpp"
+#include "solver/errors.hpp"
+#include "solver/output/results_writer.hpp"
+
+namespace fs = std::filesystem;
+using tribex::solver::FieldView;
+using tribex::solver::ResultsWriter;
+using tribex::solver::SetupError;
+using tribex::test::make_hand_box;
+using tribex::test::SampleFields;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("tribex_output_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A dataset read back whole: dims and values converted to double.
+struct Array {
+  std::vector<hsize_t> dims;
+  std::vector<double> values;
+};
+
+Array read_dataset(hid_t file, const std::string& path) {
+  Array a;
+  const hid_t d = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  if (d < 0) throw std::runtime_error("no dataset " + path);
+  const hid_t s = H5Dget_space(d);
+  const int rank = H5Sget_simple_extent_ndims(s);
+  a.dims.resize(std::size_t(rank));
+  H5Sget_simple_extent_dims(s, a.dims.data(), nullptr);
+  a.values.resize(std::size_t(H5Sget_simple_extent_npoints(s)));
+  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, a.values.data());
+  H5Sclose(s);
+  H5Dclose(d);
+  return a;
+}
+
+double read_time(hid_t file, const std::string& group) {
+  double t = -1;
+  const hid_t a = H5Aopen_by_name(file, group.c_str(), "time", H5P_DEFAULT, H5P_DEFAULT);
+  H5Aread(a, H5T_NATIVE_DOUBLE, &t);
+  H5Aclose(a);
+  return t;
+}
+
+/// True when every link on the absolute path exists (H5Lexists needs its parents to exist).
+bool h5_path_exists(hid_t file, const std::string& path) {
+  std::string prefix;
+  std::stringstream parts(path.substr(1));
+  for (std::string part; std::getline(parts, part, '/');) {
+    prefix += "/" + part;
+    if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+  }
+  return !prefix.empty();
+}
+
+/// Minimal XML check: every start tag has its end tag in order; returns "" or the problem.
+std::string xml_balance_problem(const std::string& xml) {
+  std::vector<std::string> open;
+  for (std::size_t pos = xml.find('<'); pos != std::string::npos; pos = xml.find('<', pos + 1)) {
+    const std::size_t end = xml.find('>', pos);
+    if (end == std::string::npos) return "unterminated tag at byte " + std::to_string(pos);
+    const std::string tag = xml.substr(pos + 1, end - pos - 1);
+    if (tag.empty() || tag[0] == '?' || tag[0] == '!') continue;
+    if (tag[0] == '/') {
+      const std::string name = tag.substr(1);
+      if (open.empty() || open.back() != name) return "unexpected </" + name + "> at byte " + std::to_string(pos);
+      open.pop_back();
+    } else if (tag.back() != '/') {
+      open.push_back(tag.substr(0, tag.find_first_of(" \t\n")));
+    }
+  }
+  return open.empty() ? "" : "unclosed <" + open.back() + ">";
+}
+
+std::vector<std::string> h5_references(const std::string& xml) {
+  std::vector<std::string> refs;
+  const std::regex item(R"(Format="HDF">results\.h5:([^<]+)</DataItem>)");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), item); it != std::sregex_iterator(); ++it)
+    refs.push_back((*it)[1]);
+  return refs;
+}
+
+int count(const std::string& s, const std::string& what) {
+  int n = 0;
+  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(ResultsWriter, MeshAndThreeStepsReadBackWithHdf5) {
+  const fs::path dir = fresh_dir("readback");
+  tribex::test::write_sample_case(dir.string());
+  const auto mesh = make_hand_box(3, 2, 2);  // 36 nodes, 12 elements
+  const hid_t f = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+
+  const Array xyz = read_dataset(f, "/mesh/coordinates");
+  EXPECT_EQ(xyz.dims, (std::vector<hsize_t>{36, 3}));
+  EXPECT_EQ(xyz.values, mesh.coordinates);
+  const Array conn = read_dataset(f, "/mesh/connectivity");
+  EXPECT_EQ(conn.dims, (std::vector<hsize_t>{12, 8}));
+  EXPECT_EQ(conn.values, std::vector<double>(mesh.connectivity.begin(), mesh.connectivity.end()));
+  const Array block = read_dataset(f, "/mesh/block_id");
+  EXPECT_EQ(block.dims, (std::vector<hsize_t>{12}));
+  for (int e = 0; e < 12; ++e) EXPECT_EQ(block.values[e], e < 6 ? 0 : 1) << "element " << e;
+
+  SampleFields expected;
+  for (int s = 0; s < 3; ++s) {
+    const double t = tribex::test::sample_times[s];
+    expected.fill(mesh, t);
+    const std::string g = "/steps/step_00000" + std::to_string(s);
+    EXPECT_EQ(read_time(f, g), t);
+    const Array u = read_dataset(f, g + "/nodal/displacement");
+    EXPECT_EQ(u.dims, (std::vector<hsize_t>{36, 3}));
+    EXPECT_EQ(u.values, expected.displacement);
+    const Array temp = read_dataset(f, g + "/nodal/temperature");
+    EXPECT_EQ(temp.dims, (std::vector<hsize_t>{36}));
+    EXPECT_EQ(temp.values, expected.temperature);
+    // Voigt xx yy zz xy yz zx is stored as the full row-major tensor xx xy xz yx yy yz zx zy zz.
+    const Array sig = read_dataset(f, g + "/element/stress");
+    ASSERT_EQ(sig.dims, (std::vector<hsize_t>{12, 9}));
+    const int voigt[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
+    for (int e = 0; e < 12; ++e)
+      for (int k = 0; k < 9; ++k)
+        EXPECT_EQ(sig.values[9 * e + k], expected.stress[6 * e + voigt[k]]) << "element " << e << " entry " << k;
+    EXPECT_EQ(sig.values[9 * 4 + 1], 5 * (1 + t) * 4);  // element 4, xy = (e+1)(1+t)*4
+    EXPECT_EQ(read_dataset(f, g + "/element/plastic_strain").values, expected.plastic_strain);
+  }
+  H5Fclose(f);
+  fs::remove_all(dir);
+}
+
+TEST(ResultsWriter, XdmfIsWellFormedAndNamesOnlyExistingDatasets) {
+  const fs::path dir = fresh_dir("xdmf");
+  tribex::test::write_sample_case(dir.string());
+  const std::string xml = slurp(dir / "results.xdmf");
+  EXPECT_EQ(xml_balance_problem(xml), "");
+  EXPECT_FALSE(fs::exists(dir / "results.xdmf.tmp"));
+  EXPECT_EQ(count(xml, "CollectionType=\"Temporal\""), 1);
+  EXPECT_EQ(count(xml, "<Time Value="), 3);
+  EXPECT_NE(xml.find("<Time Value=\"0.25\"/>"), std::string::npos);
+  EXPECT_NE(xml.find("<Time Value=\"0.5\"/>"), std::string::npos);
+  // The mesh is named once; steps 1 and 2 include it by XPointer.
+  EXPECT_EQ(count(xml, "results.h5:/mesh/coordinates"), 1);
+  EXPECT_EQ(count(xml, "results.h5:/mesh/connectivity"), 1);
+  EXPECT_EQ(count(xml, "<xi:include"), 2);
+  EXPECT_NE(xml.find("AttributeType=\"Tensor\" Center=\"Cell\"><DataItem Dimensions=\"12 9\""), std::string::npos);
+  EXPECT_NE(xml.find("AttributeType=\"Vector\" Center=\"Node\"><DataItem Dimensions=\"36 3\""), std::string::npos);
+  EXPECT_NE(xml.find("Value=\"0:substrate 1:asperity\""), std::string::npos);
+
+  const auto refs = h5_references(xml);
+  EXPECT_EQ(refs.size(), 3u + 3u * 4u);  // mesh (3) + 4 fields x 3 steps
+  const hid_t f = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const auto& r : refs) EXPECT_TRUE(h5_path_exists(f, r)) << r;
+  EXPECT_FALSE(h5_path_exists(f, "/steps/step_000003"));  // the check itself can fail
+  H5Fclose(f);
+  fs::remove_all(dir);
+}
+
+TEST(ResultsWriter, BeforeAnyStepTheXdmfShowsTheMesh) {
+  const fs::path dir = fresh_dir("nostep");
+  {
+    ResultsWriter w(dir.string(), make_hand_box(2, 2, 2));
+    EXPECT_EQ(w.step_count(), 0);
+  }
+  const std::string xml = slurp(dir / "results.xdmf");
+  EXPECT_EQ(xml_balance_problem(xml), "");
+  EXPECT_EQ(count(xml, "<Grid "), 1);
+  EXPECT_NE(xml.find("NumberOfElements=\"8\""), std::string::npos);
+  EXPECT_NE(xml.find("Dimensions=\"27 3\""), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A process killed after its second step (no destructor, no H5Fclose) leaves a readable pair.
+TEST(ResultsWriter, PairIsReadableAfterACrashMidRun) {
+  const fs::path dir = fresh_dir("crash");
+  const auto mesh = make_hand_box(2, 1, 1);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    auto* w = new ResultsWriter(dir.string(), mesh);  // leaked on purpose: never closed
+    SampleFields f;
+    for (double t : {0.0, 0.25}) {
+      f.fill(mesh, t);
+      const auto n = f.nodal();
+      const auto e = f.element();
+      w->write_step(t, n, e);
+    }
+    _exit(0);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  const std::string xml = slurp(dir / "results.xdmf");
+  EXPECT_EQ(xml_balance_problem(xml), "");
+  EXPECT_EQ(count(xml, "<Time Value="), 2);
+  const hid_t f = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const auto& r : h5_references(xml)) EXPECT_TRUE(h5_path_exists(f, r)) << r;
+  SampleFields expected;
+  expected.fill(mesh, 0.25);
+  EXPECT_EQ(read_dataset(f, "/steps/step_000001/nodal/displacement").values, expected.displacement);
+  H5Fclose(f);
+  fs::remove_all(dir);
+}
+
+TEST(ResultsWriter, UncreatableDirectoryIsAOneLineSetupErrorWithPathAndReason) {
+  const fs::path dir = fresh_dir("blocked");
+  fs::create_directories(dir);
+  std::ofstream(dir / "a_file") << "not a directory\n";
+  const std::string bad = (dir / "a_file" / "out").string();
+  try {
+    ResultsWriter w(bad, make_hand_box(1, 1, 1));
+    FAIL() << "no SetupError";
+  } catch (const SetupError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(bad), std::string::npos) << msg;
+    EXPECT_NE(msg.find("Not a directory"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+  // results.h5 exists as a directory: the file itself cannot be created.
+  fs::create_directories(dir / "run" / "results.h5");
+  try {
+    ResultsWriter w((dir / "run").string(), make_hand_box(1, 1, 1));
+    FAIL() << "no SetupError";
+  } catch (const SetupError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find((dir / "run" / "results.h5").string()), std::string::npos) << msg;
+    EXPECT_NE(msg.find("Is a directory"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ResultsWriter, BadStepsAreRejectedBeforeAnythingIsWritten) {
+  const fs::path dir = fresh_dir("badstep");
+  const auto mesh = make_hand_box(2, 2, 1);
+  ResultsWriter w(dir.string(), mesh);
+  SampleFields f;
+  f.fill(mesh, 0.0);
+  auto nodal = f.nodal();
+  auto element = f.element();
+  w.write_step(0.0, nodal, element);
+  const std::string before = slurp(dir / "results.xdmf");
+
+  EXPECT_THROW(w.write_step(0.0, nodal, element), std::invalid_argument);  // time not increasing
+  auto short_u = nodal;
+  short_u[0].values = short_u[0].values.first(short_u[0].values.size() - 1);
+  EXPECT_THROW(w.write_step(1.0, short_u, element), std::invalid_argument);
+  auto fewer = nodal;
+  fewer.pop_back();
+  EXPECT_THROW(w.write_step(1.0, fewer, element), std::invalid_argument);  // field set changed
+  auto renamed = element;
+  renamed[1].name = "bad/name";
+  EXPECT_THROW(w.write_step(1.0, nodal, renamed), std::invalid_argument);
+  auto clash = element;
+  clash[1].name = "displacement";  // same name as a nodal field
+  clash[1].components = 1;
+  EXPECT_THROW(w.write_step(1.0, nodal, clash), std::invalid_argument);
+
+  EXPECT_EQ(w.step_count(), 1);
+  EXPECT_EQ(slurp(dir / "results.xdmf"), before);
+  w.write_step(1.0, nodal, element);  // the writer is still usable
+  EXPECT_EQ(w.step_count(), 2);
+  fs::remove_all(dir);
+}
