@@ -152,6 +152,40 @@ struct SilentBoundarySpec {
   SourceLocation where;
 };
 
+/// `contact surface NAME contains SIDESET [SIDESET ...]` inside a contact definition.
+struct ContactSurfaceSpec {
+  std::string name;
+  std::vector<std::string> side_sets;  // must exist in the mesh (checked by the solver)
+  SourceLocation where;
+};
+
+enum class InteractionModel { frictionless };
+
+/// `begin interaction NAME` inside a contact definition: `surfaces = SLAVE MASTER` (the slave
+/// should be the finer surface), `model = frictionless`, `symmetric = on|off` (two-pass).
+struct InteractionSpec {
+  std::string name;
+  std::string slave;   // surface names, checked by the parser
+  std::string master;
+  InteractionModel model = InteractionModel::frictionless;
+  bool symmetric = false;
+  SourceLocation where;
+};
+
+/// `begin contact definition NAME` inside the region (physics.md 5; CONVENTIONS.md contact).
+struct ContactSpec {
+  std::string name;
+  std::vector<ContactSurfaceSpec> surfaces;
+  std::vector<InteractionSpec> interactions;
+  double penalty_scale_factor = 1.0;        // k_p dt^2 / m_eff, (0, 2]
+  std::optional<double> search_margin;      // m; default: mean face edge of the master surface
+  /// `contact axis = px py pz dx dy dz` (point and direction) for contact_radius_max.
+  std::optional<std::array<double, 6>> axis;
+  /// Largest initial overlap accepted before the run (m); default 0.01 x the mean face edge.
+  std::optional<double> initial_overlap_tolerance;
+  SourceLocation where;
+};
+
 /// `begin results output NAME`: results.h5 + results.xdmf in the output folder.
 struct ResultsOutputSpec {
   std::optional<double> time_increment;  // s; exactly one of the two increments is set
@@ -183,6 +217,7 @@ struct RegionSpec {
   std::vector<SilentBoundarySpec> silent_boundaries;
   double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
   std::optional<double> energy_error_limit;  // stop with exit 3 when the relative error exceeds it
+  std::optional<ContactSpec> contact;
   std::optional<ResultsOutputSpec> results;
   std::optional<HistoryOutputSpec> history;
   SourceLocation where;

@@ -8,7 +8,9 @@
 #include "inputs/did_you_mean.hpp"
 #include "mesh/box.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "solver/contact_setup.hpp"
 #include "solver/errors.hpp"
+#include "solver/stable_time_step.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -234,6 +236,13 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     model.silent.c_tangential.push_back(acc[4]);
   }
   model.mass_damping = region.mass_damping_coefficient;
+
+  if (region.contact) {
+    const auto& tc = deck.procedure.time_control;
+    const double dt = std::min(tc.time_step_scale_factor * compute_stable_time_step(model, nullptr).dt,
+                               tc.maximum_time_step.value_or(INFINITY));
+    model.contact = build_contact(*region.contact, model, dt, &model.preflight);
+  }
   return model;
 }
 

@@ -5,9 +5,11 @@
 // Layouts: every nodal vector is [node][3] (x, y, z of node n at 3n..3n+2); a "dof" is 3n + c.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "contact/contact_manager.hpp"
 #include "inputs/deck.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/element_block.hpp"
@@ -54,6 +56,9 @@ struct Model {
   double mass_damping = 0.0;           // 1/s
   double total_mass = 0.0;
   std::vector<int> element_block;      // [element] index into blocks
+  /// Contact, when the region has a contact definition (set up by build_model).
+  std::unique_ptr<contact::ContactManager> contact;
+  std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)
 };
 
 /// Build the mesh named by the region and everything above from a parsed deck. Throws SetupError

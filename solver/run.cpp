@@ -102,6 +102,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   log.say(format("termination time %.6g s: about %.0f steps", tc.termination_time, std::ceil(est_steps)));
   log.say(format("constraints: %zu dofs; silent-boundary nodes: %zu; pressure loads: %zu", model.constraints.dof.size(),
                  model.silent.node.size(), model.pressures.size()));
+  for (const auto& line : model.preflight) log.say(line);
 
   RunSummary summary;
   summary.elements = elements;
@@ -167,9 +168,11 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     const auto& E = integrator.energies();
     if (history_schedule.due(t, n, closing)) {
       row.clear();
+      const auto& C = integrator.contact_totals();
       row.insert(row.end(), {t, integrator.dt(), E.kinetic, E.internal, E.hourglass, E.external_work,
-                             E.silent_boundary_dissipation, E.contact_work, E.relative_error(), 0.0, 0.0, 0.0, 0.0,
-                             E.damping_dissipation, E.viscous_dissipation});
+                             E.silent_boundary_dissipation, E.contact_work, E.relative_error(), C.normal_force,
+                             C.tangential_force, C.area, double(C.nodes), E.damping_dissipation, E.viscous_dissipation,
+                             std::sqrt(C.area / M_PI), C.radius_max, C.max_penetration});
       for (const auto* set : reaction_sets) {
         double r[3] = {0, 0, 0};
         for (int node : *set)
@@ -195,6 +198,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
         if (name == "acceleration") v = &integrator.acceleration();
         if (name == "force") v = &integrator.force();
         if (v) nodal.push_back({name, 3, *v});
+        if (model.contact && name == "contact_traction") nodal.push_back({name, 3, model.contact->traction()});
+        if (model.contact && name == "contact_status") nodal.push_back({name, 1, model.contact->status()});
       }
       for (const auto& name : region.results->element_variables) {
         if (name != "stress") continue;

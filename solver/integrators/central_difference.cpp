@@ -32,6 +32,10 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   f_.assign(n3, 0.0);
   f_ext_.assign(n3, 0.0);
   reaction_.assign(n3, 0.0);
+  if (model.contact) {
+    x_ = model.mesh.coordinates;
+    f_contact_.assign(n3, 0.0);
+  }
   inverse_mass_.resize(model.mass.size());
   for (std::size_t n = 0; n < model.mass.size(); ++n) inverse_mass_[n] = 1.0 / model.mass[n];
 }
@@ -110,6 +114,18 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
   }
   energies_.internal = strain;
   energies_.hourglass = hourglass;
+
+  if (model_.contact) {
+    const auto& X = model_.mesh.coordinates;
+    for (int node : model_.contact->surface_nodes())
+      for (int i = 0; i < 3; ++i) {
+        x_[3 * node + i] = X[3 * node + i] + u_[3 * node + i];
+        f_contact_[3 * node + i] = 0.0;
+      }
+    contact_totals_ = model_.contact->compute_forces(x_.data(), v_.data(), f_contact_.data());
+    for (int node : model_.contact->surface_nodes())
+      for (int i = 0; i < 3; ++i) f_[3 * node + i] += f_contact_[3 * node + i];
+  }
 }
 
 void CentralDifference::update_velocity() {
@@ -195,6 +211,19 @@ void CentralDifference::account_time_n() {
     }
   if (step_ > 0) energies_.external_work += 0.5 * dt_prev_half_ * (external_power_right_ + power_left);
   external_power_right_ = power_right;
+
+  // Contact: the energy held or dissipated by the interface is minus the work of the contact
+  // forces on the bodies, with the same trapezoidal rule.
+  if (model_.contact) {
+    double c_left = 0.0, c_right = 0.0;
+    for (int node : model_.contact->surface_nodes())
+      for (int i = 0; i < 3; ++i) {
+        c_left += f_contact_[3 * node + i] * v_prev_[3 * node + i];
+        c_right += f_contact_[3 * node + i] * v_[3 * node + i];
+      }
+    if (step_ > 0) energies_.contact_work -= 0.5 * dt_prev_half_ * (contact_power_right_ + c_left);
+    contact_power_right_ = c_right;
+  }
 
   // Dashpot and damping dissipation over [t^{n-1/2}, t^{n+1/2}]: the semi-implicit force is -c v^n.
   const auto& sb = model_.silent;

@@ -60,6 +60,7 @@ class CentralDifference {
   const std::vector<double>& force() const { return f_; }          // f^n, internal + applied loads
   const std::vector<double>& reaction() const { return reaction_; }  // R^n at constrained dofs, else 0
   const Energies& energies() const { return energies_; }
+  const contact::ContactTotals& contact_totals() const { return contact_totals_; }  // at time n
   const StableStep& stable_step() const { return stable_; }
   double time_step_scale_factor() const { return scale_factor_; }
   /// Set by the driver: does the step that reaches (t, n) write element fields? Element stresses
@@ -86,6 +87,10 @@ class CentralDifference {
   StableStep stable_;
   double external_power_right_ = 0.0;  // F_ext^{n-1} . v^{n-1/2}, for the trapezoidal work rule
   double viscous_power_ = 0.0;
+  // Contact: current positions of surface nodes, contact forces, totals, lagged contact power.
+  std::vector<double> x_, f_contact_;
+  contact::ContactTotals contact_totals_;
+  double contact_power_right_ = 0.0;
   std::function<bool(double, long)> wants_stress_;
 };
 

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: MIT
+#include "contact/contact_manager.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/geometry/quad_projection.hpp"
+
+namespace tribex::contact {
+namespace {
+
+struct BestFace {
+  int face = -1;
+  Projection proj;
+};
+
+// 2. narrow phase: among the candidates, prefer faces over which the node projects (interior),
+// then the smallest |gap|; fall back to the nearest edge/vertex point.
+BestFace closest_face(const double* x, const ContactSurface& master, const int* faces, int count, const double* p) {
+  BestFace best;
+  double best_key = INFINITY;
+  bool best_interior = false;
+  for (int c = 0; c < count; ++c) {
+    const int f = faces[c];
+    double X[12];
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * master.face_nodes[4 * f + a] + i];
+    const Projection pr = project_onto_quad(X, p);
+    const double key = pr.interior ? std::abs(pr.gap) : pr.distance;
+    if ((pr.interior && !best_interior) || (pr.interior == best_interior && key < best_key)) {
+      best = {f, pr};
+      best_key = key;
+      best_interior = pr.interior;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector<InteractionSettings> interactions,
+                               const std::vector<double>& mass, double dt_ref, int node_count)
+    : surfaces_(std::move(surfaces)), mass_(mass), dt_ref_(dt_ref) {
+  for (const auto& it : interactions) {
+    const int order[2][2] = {{it.slave, it.master}, {it.master, it.slave}};
+    for (int k = 0; k < (it.symmetric ? 2 : 1); ++k) {
+      Pass p;
+      p.slave = order[k][0];
+      p.master = order[k][1];
+      p.factor = it.symmetric ? 0.5 : 1.0;
+      p.margin = it.search_margin > 0 ? it.search_margin : surfaces_[p.master].mean_edge;
+      p.research_fraction = it.research_fraction;
+      p.penalty_scale = it.penalty_scale;
+      p.primary = k == 0;
+      p.x_at_search.resize(3 * (surfaces_[p.slave].nodes.size() + surfaces_[p.master].nodes.size()));
+      passes_.push_back(std::move(p));
+    }
+  }
+  traction_.assign(3 * static_cast<std::size_t>(node_count), 0.0);
+  status_.assign(static_cast<std::size_t>(node_count), 0.0);
+  for (const auto& s : surfaces_) all_nodes_.insert(all_nodes_.end(), s.nodes.begin(), s.nodes.end());
+  std::sort(all_nodes_.begin(), all_nodes_.end());
+  all_nodes_.erase(std::unique(all_nodes_.begin(), all_nodes_.end()), all_nodes_.end());
+}
+
+void ContactManager::set_axis(const double point[3], const double direction[3]) {
+  const double n = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  for (int i = 0; i < 3; ++i) {
+    axis_point_[i] = point[i];
+    axis_dir_[i] = direction[i] / n;
+  }
+  has_axis_ = true;
+}
+
+bool ContactManager::needs_search(const Pass& p, const double* x) const {
+  if (!p.searched) return true;
+  // Both surfaces move: a pair can close by twice the largest node motion.
+  const double limit = p.research_fraction * p.margin;
+  const double limit2 = limit * limit;
+  std::size_t k = 0;
+  for (int s : {p.slave, p.master})
+    for (int node : surfaces_[s].nodes) {
+      double d2 = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const double d = x[3 * node + i] - p.x_at_search[3 * k + i];
+        d2 += d * d;
+      }
+      if (d2 > limit2) return true;
+      ++k;
+    }
+  return false;
+}
+
+void ContactManager::search(Pass& p, const double* x) {
+  bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.margin, p.candidate_offset, p.candidates);
+  std::size_t k = 0;
+  for (int s : {p.slave, p.master})
+    for (int node : surfaces_[s].nodes) {
+      for (int i = 0; i < 3; ++i) p.x_at_search[3 * k + i] = x[3 * node + i];
+      ++k;
+    }
+  p.searched = true;
+  ++total_searches_;
+}
+
+ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*/, double* force) {
+  ContactTotals totals;
+  for (int node : all_nodes_) {
+    status_[node] = 0.0;
+    traction_[3 * node] = traction_[3 * node + 1] = traction_[3 * node + 2] = 0.0;
+  }
+  for (auto& p : passes_) {
+    if (needs_search(p, x)) {
+      search(p, x);
+      ++totals.searches;
+    }
+    const ContactSurface& slave = surfaces_[p.slave];
+    const ContactSurface& master = surfaces_[p.master];
+    for (int k = 0; k < slave.node_count(); ++k) {
+      const int count = p.candidate_offset[k + 1] - p.candidate_offset[k];
+      if (count == 0) continue;
+      const int node = slave.nodes[k];
+      const double* xs = x + 3 * node;
+      const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, xs);
+      if (best.face < 0 || !best.proj.interior || best.proj.gap >= 0.0) continue;
+      // A node deeper than the search margin is not a contact but the far side of a thin body.
+      if (-best.proj.gap > p.margin) continue;
+      const int* fn = &master.face_nodes[4 * best.face];
+      double inv_mM = 0.0;
+      for (int a = 0; a < 4; ++a) inv_mM += best.proj.shape[a] * best.proj.shape[a] / mass_[fn[a]];
+      const double ms = mass_[node], mM = 1.0 / inv_mM;
+      const double m_eff = ms * mM / (ms + mM);
+      const double kp = p.penalty_scale * m_eff / (dt_ref_ * dt_ref_);
+      // f_s = -k_p g n (g < 0 pushes the slave node out along the master's outward normal).
+      const double fn_mag = -kp * best.proj.gap * p.factor;
+      const double* n = best.proj.normal;
+      for (int i = 0; i < 3; ++i) {
+        force[3 * node + i] += fn_mag * n[i];
+        for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= best.proj.shape[a] * fn_mag * n[i];
+      }
+      const double area = slave.node_area[k];
+      for (int i = 0; i < 3; ++i) traction_[3 * node + i] += fn_mag * n[i] / area;
+      status_[node] = 1.0;
+      totals.normal_force += fn_mag;
+      totals.area += p.factor * area;
+      totals.max_penetration = std::max(totals.max_penetration, -best.proj.gap);
+      if (p.primary) ++totals.nodes;
+      if (has_axis_) {
+        double r[3], along = 0.0;
+        for (int i = 0; i < 3; ++i) {
+          r[i] = xs[i] - axis_point_[i];
+          along += r[i] * axis_dir_[i];
+        }
+        double r2 = 0.0;
+        for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
+        totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
+      }
+    }
+  }
+  return totals;
+}
+
+std::vector<ContactManager::Overlap> ContactManager::initial_overlaps(const double* x, int worst_count) {
+  std::vector<Overlap> out;
+  for (auto& p : passes_) {
+    search(p, x);
+    const ContactSurface& slave = surfaces_[p.slave];
+    const ContactSurface& master = surfaces_[p.master];
+    std::vector<Overlap> pass;
+    for (int k = 0; k < slave.node_count(); ++k) {
+      const int count = p.candidate_offset[k + 1] - p.candidate_offset[k];
+      if (count == 0) continue;
+      const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, x + 3 * slave.nodes[k]);
+      if (best.face >= 0 && best.proj.interior)
+        pass.push_back({slave.name + " -> " + master.name, slave.nodes[k], best.proj.gap});
+    }
+    std::sort(pass.begin(), pass.end(), [](const Overlap& a, const Overlap& b) { return a.gap < b.gap; });
+    if (pass.size() > static_cast<std::size_t>(worst_count)) pass.resize(static_cast<std::size_t>(worst_count));
+    out.insert(out.end(), pass.begin(), pass.end());
+  }
+  return out;
+}
+
+}  // namespace tribex::contact

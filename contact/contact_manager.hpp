@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+// The contact library's narrow API (CONVENTIONS.md A.4.5, after Tribol): the solver registers
+// surfaces and interactions once, then calls compute_forces() every step with the current
+// positions and velocities; it never reaches into the search or enforcement.
+//
+// Per step and per interaction pass (slave surface -> master surface; a symmetric interaction runs
+// both passes, each with partition factor 1/2, physics.md 5.1):
+//  1. broad phase (BucketSearch) only when a surface node has moved more than `research_fraction`
+//     of the search margin since the last search; the candidate faces of every slave node are kept
+//     in between;
+//  2. narrow phase: closest-point projection of each slave node on its candidate faces
+//     (quad_projection), keeping the face over which the node projects with the smallest |gap|;
+//  3. enforcement: penalty normal force f = -k_p g n for g < 0 on the slave node and -N_a f on the
+//     master face nodes (momentum conserved exactly), k_p = penalty_scale m_eff / dt_ref^2 with
+//     m_eff = m_s m_M / (m_s + m_M), 1/m_M = sum_a N_a^2 / m_a (physics.md 5.2): with the default
+//     scale 1 the node's frequency stays inside the central-difference limit at the run's time step.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "contact/search/bucket_search.hpp"
+#include "contact/surface.hpp"
+
+namespace tribex::contact {
+
+struct InteractionSettings {
+  std::string name;
+  int slave = 0;    // index into the surfaces given to the manager
+  int master = 1;
+  bool symmetric = false;          // two passes, each surface slave once, factor 1/2
+  double penalty_scale = 1.0;      // k_p dt^2 / m_eff
+  double search_margin = 0.0;      // m; 0: the mean face edge of the master surface
+  double research_fraction = 0.25; // re-search when a node moved this fraction of the margin
+};
+
+struct ContactTotals {
+  double normal_force = 0.0;       // sum of normal contact forces on slave nodes, N
+  double tangential_force = 0.0;   // N (junction model, later)
+  double area = 0.0;               // sum of tributary areas of slave nodes in contact, m^2
+  int nodes = 0;                   // slave nodes in contact (first pass of each interaction)
+  double max_penetration = 0.0;    // m
+  double radius_max = 0.0;         // farthest contacting node from the axis (if one is set), m
+  int searches = 0;                // broad-phase builds this step
+};
+
+class ContactManager {
+ public:
+  /// `mass` [node] the lumped masses; `dt_ref` the run's time step used for the penalty stiffness.
+  ContactManager(std::vector<ContactSurface> surfaces, std::vector<InteractionSettings> interactions,
+                 const std::vector<double>& mass, double dt_ref, int node_count);
+
+  /// Adds contact forces at positions x [node][3] to `force` [node][3] (touching only surface
+  /// nodes) and fills traction [node][3] (force / tributary area, Pa) and status [node] (1 in contact).
+  ContactTotals compute_forces(const double* x, const double* v, double* force);
+
+  /// Contact axis for contact_radius_max: a point and a unit direction.
+  void set_axis(const double point[3], const double direction[3]);
+
+  const std::vector<double>& traction() const { return traction_; }
+  const std::vector<double>& status() const { return status_; }
+  const std::vector<int>& surface_nodes() const { return all_nodes_; }
+  const std::vector<ContactSurface>& surfaces() const { return surfaces_; }
+  long total_searches() const { return total_searches_; }
+
+  /// Initial gaps (pre-flight report): per interaction pass, the most penetrating slave nodes.
+  struct Overlap {
+    std::string pass;  // "slave -> master"
+    int node = -1;     // global node index
+    double gap = 0.0;  // m (< 0: overlap)
+  };
+  std::vector<Overlap> initial_overlaps(const double* x, int worst_count);
+
+ private:
+  struct Pass {
+    int slave, master;
+    double factor;
+    double margin;
+    double research_fraction;
+    double penalty_scale;
+    std::vector<int> candidate_offset, candidates;
+    std::vector<double> x_at_search;  // [slave node + master node][3] positions at the last search
+    bool searched = false;
+    bool primary = true;
+  };
+  bool needs_search(const Pass& p, const double* x) const;
+  void search(Pass& p, const double* x);
+
+  std::vector<ContactSurface> surfaces_;
+  std::vector<Pass> passes_;
+  const std::vector<double>& mass_;
+  double dt_ref_;
+  BucketSearch bucket_;
+  std::vector<double> traction_, status_;
+  std::vector<int> all_nodes_;
+  bool has_axis_ = false;
+  double axis_point_[3] = {0, 0, 0}, axis_dir_[3] = {0, 0, 1};
+  long total_searches_ = 0;
+};
+
+}  // namespace tribex::contact

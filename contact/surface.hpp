@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// A contact surface: the quad faces of a side set and their nodes, with reference tributary areas.
+//
+// Layouts: face_nodes [face][4] global node indices, counter-clockwise seen from outside the body
+// (outward normal); nodes [k] the surface's unique global nodes, sorted; node_area [k] the row sum
+// of int N_I dA over the surface (A_f / 4 per node for a parallelogram face), m^2;
+// node_faces_offset/node_faces: faces touching surface node k (CSR).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace tribex::contact {
+
+struct ContactSurface {
+  std::string name;
+  std::vector<int> face_nodes;
+  std::vector<int> nodes;
+  std::vector<double> node_area;
+  std::vector<int> node_faces_offset;
+  std::vector<int> node_faces;
+  double mean_edge = 0.0;  // mean face edge length, m
+
+  int face_count() const { return static_cast<int>(face_nodes.size() / 4); }
+  int node_count() const { return static_cast<int>(nodes.size()); }
+};
+
+/// Surface from the side sets `side_sets` of `mesh` (which must exist; the caller reports a missing
+/// name with its deck line).
+ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, const std::vector<std::string>& side_sets);
+
+}  // namespace tribex::contact

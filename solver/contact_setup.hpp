@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// From the deck's contact definition to a contact::ContactManager: surfaces from side sets,
+// interactions, the penalty reference time step, and the pre-flight check of initial overlaps.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/contact_manager.hpp"
+#include "inputs/deck.hpp"
+
+namespace tribex::solver {
+
+struct Model;
+
+/// Builds the manager; `dt` is the run's time step (scale factor x stable estimate, capped by the
+/// maximum time step). Throws SetupError for a side set missing from the mesh (deck line + names)
+/// or an initial overlap beyond the tolerance (the worst nodes named).
+std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
+                                                       std::vector<std::string>* report);
+
+}  // namespace tribex::solver
