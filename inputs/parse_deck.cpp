@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// The entry points: lexer -> tree (with schema and value checks) -> Deck; all diagnostics of all
+// stages are collected and thrown together.
+#include "inputs/check_deck.hpp"
+#include "inputs/deck_builder.hpp"
+#include "inputs/diagnostics.hpp"
+
+namespace tribex::inputs {
+namespace {
+
+Deck parse_lines(const std::vector<LogicalLine>& lines, const std::string& file_name, DiagnosticSink& sink) {
+  const Scope root = build_deck_tree(lines, file_name, sink);
+  Deck deck = build_deck(root, file_name, sink);
+  sink.throw_if_any();
+  deck.resolved_text = resolved_text(root);
+  return deck;
+}
+
+}  // namespace
+
+Deck parse_deck_file(const std::string& path) {
+  DiagnosticSink sink;
+  const auto lines = lex_deck_file(path, sink);
+  return parse_lines(lines, path, sink);
+}
+
+Deck parse_deck_string(const std::string& text, const std::string& file_name) {
+  DiagnosticSink sink;
+  const auto lines = lex_deck_text(text, file_name, sink);
+  return parse_lines(lines, file_name, sink);
+}
+
+std::vector<Diagnostic> check_deck_file(const std::string& path) {
+  try {
+    parse_deck_file(path);
+  } catch (const DeckError& e) {
+    return e.diagnostics();
+  }
+  return {};
+}
+
+}  // namespace tribex::inputs

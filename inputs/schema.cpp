@@ -1,0 +1,309 @@
+// SPDX-License-Identifier: MIT
+#include "inputs/schema.hpp"
+
+#include <cstdio>
+
+#include "inputs/lexer.hpp"
+
+namespace tribex::inputs {
+namespace {
+
+// Small constructors so that the table below reads like the deck it describes.
+Range positive() { return {0.0, Range{}.hi, true, false}; }
+Range non_negative() { return {0.0, Range{}.hi, false, false}; }
+Range at_least(double lo) { return {lo, Range{}.hi, false, false}; }
+
+KeySchema real(std::string name, Dimension d, Range r, bool required, std::string def, std::string help) {
+  KeySchema k;
+  k.name = std::move(name);
+  k.kind = ValueKind::real;
+  k.dimension = d;
+  k.range = r;
+  k.required = required;
+  k.default_text = std::move(def);
+  k.help = std::move(help);
+  return k;
+}
+KeySchema reals(std::string name, Dimension d, int count, Range r, bool required, std::string def,
+                std::string help) {
+  KeySchema k = real(std::move(name), d, r, required, std::move(def), std::move(help));
+  k.kind = ValueKind::reals;
+  k.count = count;
+  return k;
+}
+KeySchema integer(std::string name, Range r, bool required, std::string def, std::string help) {
+  KeySchema k = real(std::move(name), dim::none, r, required, std::move(def), std::move(help));
+  k.kind = ValueKind::integer;
+  return k;
+}
+KeySchema integers(std::string name, int count, Range r, bool required, std::string help) {
+  KeySchema k = real(std::move(name), dim::none, r, required, "", std::move(help));
+  k.kind = ValueKind::integers;
+  k.count = count;
+  return k;
+}
+KeySchema text(std::string name, ValueKind kind, bool required, std::string help) {
+  KeySchema k;
+  k.name = std::move(name);
+  k.kind = kind;
+  k.required = required;
+  k.help = std::move(help);
+  return k;
+}
+KeySchema choice(std::string name, ValueKind kind, std::vector<std::string> allowed, bool required, std::string def,
+                 std::string help, std::vector<std::pair<std::string, std::string>> aliases = {}) {
+  KeySchema k = text(std::move(name), kind, required, std::move(help));
+  k.allowed = std::move(allowed);
+  k.aliases = std::move(aliases);
+  k.default_text = std::move(def);
+  return k;
+}
+KeySchema unit(std::string name, Dimension d, bool any, std::string help) {
+  KeySchema k = text(std::move(name), ValueKind::unit, false, std::move(help));
+  k.dimension = d;
+  k.any_dimension = any;
+  k.in_resolved_text = false;  // the resolved text writes the values table in SI instead
+  return k;
+}
+KeySchema quantity(std::string name, std::string def, std::string help) {
+  KeySchema k = text(std::move(name), ValueKind::quantity, false, std::move(help));
+  k.default_text = std::move(def);
+  return k;
+}
+
+const std::vector<std::string> components{"x", "y", "z"};
+const std::vector<std::string> faces{"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+const std::vector<std::string> models{"elastic", "neo_hookean"};
+const std::vector<std::pair<std::string, std::string>> model_aliases{{"neohookean", "neo_hookean"}};
+
+// Output scheduling shared by results and history output: exactly one of the two (checked by
+// the builder).
+std::vector<KeySchema> output_schedule() {
+  return {real("time increment", dim::time, positive(), false, "", "write every this much simulated time"),
+          integer("step increment", at_least(1), false, "", "write every this many steps")};
+}
+
+std::vector<BlockSchema> build_table() {
+  std::vector<BlockSchema> t;
+
+  t.push_back({"sierra", NameRule::required, {}, {}, true, {},
+               {{"function"},
+                {"property specification for material"},
+                {"solid section"},
+                {"finite element model", 1},
+                {"presto procedure", 1, 1}},
+               false, "the whole deck"});
+
+  t.push_back({"function", NameRule::required, {}, {}, true,
+               {choice("type", ValueKind::enumeration, {"piecewise linear"}, true, "", "the kind of function"),
+                unit("abscissa unit", dim::time, false, "unit of the first column (default s)"),
+                unit("ordinate unit", dim::none, true,
+                     "unit of the second column (default: SI of the quantity it drives)")},
+               {{"values", 1, 1}},
+               false, "a function of time f(t), held constant outside its table"});
+
+  t.push_back({"values", NameRule::none, {}, {}, true, {}, {}, true,
+               "rows `t f(t)`, t strictly increasing, at least 2 rows"});
+
+  t.push_back({"property specification for material", NameRule::required, {}, {}, true,
+               {real("density", dim::density, positive(), true, "", "mass density")},
+               {{"parameters for model", 1}},
+               false, "a material"});
+
+  t.push_back({"parameters for model", NameRule::required, models, model_aliases, true,
+               {real("youngs modulus", dim::pressure, positive(), false, "", "E (give E and nu, or K and G)"),
+                real("poissons ratio", dim::none, {-1.0, 0.5, true, true}, false, "", "nu"),
+                real("bulk modulus", dim::pressure, positive(), false, "", "K (give E and nu, or K and G)"),
+                real("shear modulus", dim::pressure, positive(), false, "", "G")},
+               {},
+               false, "elastic constants of one material model"});
+
+  t.push_back({"solid section", NameRule::required, {}, {}, true,
+               {choice("formulation", ValueKind::enumeration, {"mean_quadrature", "fully_integrated"}, false,
+                       "mean_quadrature", "hex8 integration"),
+                real("hourglass stiffness", dim::none, non_negative(), false, "0.05", "kappa_hg"),
+                real("hourglass viscosity", dim::none, non_negative(), false, "0", "nu_hg"),
+                real("linear bulk viscosity", dim::none, non_negative(), false, "0.06", "b1"),
+                real("quadratic bulk viscosity", dim::none, non_negative(), false, "1.2", "b2")},
+               {},
+               false, "element formulation and artificial viscosities"});
+
+  t.push_back({"finite element model", NameRule::required, {}, {}, true,
+               {text("database name", ValueKind::string, false, "gmsh mesh file, relative to the deck"),
+                choice("database type", ValueKind::enumeration, {"gmsh", "generated"}, false, "",
+                       "inferred from database name / generated box")},
+               {{"generated box"}, {"parameters for block", 1}},
+               false, "the mesh and its element blocks"});
+
+  t.push_back({"generated box", NameRule::required, {}, {}, true,
+               {reals("origin", dim::length, 3, Range{}, false, "0 0 0", "lower corner"),
+                reals("size", dim::length, 3, positive(), true, "", "edge lengths"),
+                integers("intervals", 3, at_least(1), true, "elements per axis"),
+                choice("grade toward", ValueKind::enumeration, faces, false, "",
+                       "face the elements shrink toward"),
+                real("grading ratio", dim::none, at_least(1.0), false, "1", "size ratio of neighbours")},
+               {},
+               false, "a structured hex8 box that becomes one element block"});
+
+  t.push_back({"parameters for block", NameRule::required, {}, {}, true,
+               {text("material", ValueKind::string, true, "a material name"),
+                choice("model", ValueKind::enumeration, models, false, "elastic", "material model",
+                       model_aliases),
+                text("section", ValueKind::string, true, "a solid section name")},
+               {},
+               false, "material and section of one element block"});
+
+  t.push_back({"presto procedure", NameRule::required, {}, {}, true, {},
+               {{"time control", 1, 1}, {"presto region", 1, 1}},
+               false, "the explicit dynamics procedure"});
+
+  t.push_back({"time control", NameRule::none, {}, {}, true,
+               {real("start time", dim::time, Range{}, false, "0", "t0"),
+                real("termination time", dim::time, Range{}, true, "", "end time, > start time"),
+                real("time step scale factor", dim::none, {0.0, 1.0, true, false}, false, "0.9",
+                     "fraction of the stable time step"),
+                real("maximum time step", dim::time, positive(), false, "", "cap on the time step")},
+               {},
+               false, "time span and step control"});
+
+  t.push_back({"presto region", NameRule::required, {}, {}, true,
+               {text("use finite element model", ValueKind::string, true, "the model this region runs"),
+                real("mass damping coefficient", dim::rate, non_negative(), false, "0", "c in f = -c m v"),
+                real("energy error limit", dim::none, positive(), false, "", "stop when exceeded")},
+               {{"fixed displacement"},
+                {"prescribed displacement"},
+                {"prescribed velocity"},
+                {"initial velocity"},
+                {"pressure"},
+                {"silent boundary"},
+                {"results output", 0, 1},
+                {"history output", 0, 1}},
+               false, "boundary conditions and output"});
+
+  t.push_back({"fixed displacement", NameRule::none, {}, {}, false,
+               {text("node set", ValueKind::string, true, "a node set of the mesh"),
+                choice("components", ValueKind::enumerations, components, true, "", "fixed components")},
+               {},
+               false, "zero displacement of some components"});
+
+  for (const char* kind : {"prescribed displacement", "prescribed velocity"}) {
+    t.push_back({kind, NameRule::none, {}, {}, false,
+                 {text("node set", ValueKind::string, true, "a node set of the mesh"),
+                  choice("component", ValueKind::enumeration, components, true, "", "driven component"),
+                  text("function", ValueKind::string, true, "a function name"),
+                  quantity("scale factor", "1", "multiplies the function")},
+                 {},
+                 false, "a component driven by a function of time"});
+  }
+
+  t.push_back({"initial velocity", NameRule::none, {}, {}, false,
+               {text("node set", ValueKind::string, false, "a node set (or block)"),
+                text("block", ValueKind::string, false, "an element block (or node set)"),
+                reals("velocity", dim::velocity, 3, Range{}, true, "", "vx vy vz")},
+               {},
+               false, "velocity at t = 0"});
+
+  t.push_back({"pressure", NameRule::none, {}, {}, false,
+               {text("side set", ValueKind::string, true, "a side set of the mesh"),
+                text("function", ValueKind::string, true, "a function name"),
+                quantity("scale factor", "1", "Pa per unit of the function")},
+               {},
+               false, "p(t) on a side set, positive pushing into the body"});
+
+  t.push_back({"silent boundary", NameRule::none, {}, {}, false,
+               {text("side set", ValueKind::string, true, "a side set of the mesh"),
+                real("normal coefficient", dim::none, non_negative(), false, "1", "a"),
+                real("tangential coefficient", dim::none, non_negative(), false, "1", "b")},
+               {},
+               false, "absorbing dashpots"});
+
+  {
+    BlockSchema results{"results output", NameRule::required, {}, {}, true, output_schedule(), {}, false,
+                        "results.h5 + results.xdmf"};
+    results.keys.push_back(choice("nodal variables", ValueKind::enumerations,
+                                  {"displacement", "velocity", "force", "acceleration"}, false, "", "nodal fields"));
+    results.keys.push_back(
+        choice("element variables", ValueKind::enumerations, {"stress"}, false, "", "element fields"));
+    t.push_back(results);
+  }
+  {
+    BlockSchema history{"history output", NameRule::required, {}, {}, true, output_schedule(), {}, false,
+                        "history.csv"};
+    history.keys.push_back(text("reaction force", ValueKind::strings, false, "node sets"));
+    history.keys.push_back(text("mean displacement", ValueKind::strings, false, "node sets"));
+    t.push_back(history);
+  }
+  return t;
+}
+
+}  // namespace
+
+std::string Range::str() const {
+  auto num = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return std::string(b);
+  };
+  const bool has_lo = lo > -std::numeric_limits<double>::infinity();
+  const bool has_hi = hi < std::numeric_limits<double>::infinity();
+  if (has_lo && has_hi) {
+    return "in " + std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) + (hi_open ? ")" : "]");
+  }
+  if (has_lo) return (lo_open ? "> " : ">= ") + num(lo);
+  if (has_hi) return (hi_open ? "< " : "<= ") + num(hi);
+  return "finite";
+}
+
+const KeySchema* BlockSchema::key(std::string_view n) const {
+  for (const auto& k : keys) {
+    if (k.name == n) return &k;
+  }
+  return nullptr;
+}
+
+const ChildRule* BlockSchema::child(std::string_view n) const {
+  for (const auto& c : children) {
+    if (c.type == n) return &c;
+  }
+  return nullptr;
+}
+
+const std::vector<BlockSchema>& all_block_schemas() {
+  static const std::vector<BlockSchema> table = build_table();
+  return table;
+}
+
+const BlockSchema& root_schema() {
+  static const BlockSchema root{"", NameRule::none, {}, {}, true, {}, {{"sierra", 1, 1}}, false, "the deck file"};
+  return root;
+}
+
+const BlockSchema* find_block_schema(std::string_view type) {
+  for (const auto& b : all_block_schemas()) {
+    if (b.type == type) return &b;
+  }
+  return nullptr;
+}
+
+std::string canonical_choice(std::string_view value, const std::vector<std::string>& allowed,
+                             const std::vector<std::pair<std::string, std::string>>& aliases) {
+  const std::string v = lower(value);
+  for (const auto& a : allowed) {
+    if (a == v) return a;
+  }
+  for (const auto& [alias, target] : aliases) {
+    if (alias == v) return target;
+  }
+  return "";
+}
+
+std::string join_choices(const std::vector<std::string>& allowed) {
+  std::string s;
+  for (std::size_t i = 0; i < allowed.size(); ++i) {
+    if (i > 0) s += (i + 1 == allowed.size()) ? " or " : ", ";
+    s += allowed[i];
+  }
+  return s;
+}
+
+}  // namespace tribex::inputs

@@ -1,0 +1,4 @@
+# expect: 1: the deck is empty
+# only comments: nothing to run
+
+   

@@ -1,0 +1,5 @@
+# expect: 4: include cycle
+# the deck includes itself
+begin sierra cyc
+  include include_cycle.i
+end sierra cyc

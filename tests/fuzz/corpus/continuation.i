@@ -1,0 +1,5 @@
+begin sierra a\
+ b
+  x = 1 nm # c
+$ d
+end
