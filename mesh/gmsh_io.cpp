@@ -27,7 +27,7 @@ constexpr int gmsh_point = 15;
 /// gmsh 4.8 reports errors by throwing std::string (and also logs them). Run `body`; turn any gmsh
 /// error into a one-line MeshError naming `path`.
 template <class Body>
-void call_gmsh(const std::string& path, const std::string& doing, Body&& body) {
+void call_gmsh(const std::string& path, const std::string& doing, const std::string& fix, Body&& body) {
   std::string what;
   try {
     body();
@@ -40,7 +40,7 @@ void call_gmsh(const std::string& path, const std::string& doing, Body&& body) {
     what = e.what();
   }
   std::replace(what.begin(), what.end(), '\n', ' ');
-  throw MeshError(path + ": gmsh failed while " + doing + ": " + what);
+  throw MeshError(path + ": gmsh failed while " + doing + " (" + what + "); " + fix);
 }
 
 /// First error gmsh logged since the logger was started, or "".
@@ -334,7 +334,11 @@ Mesh read_gmsh(const std::string& path) {
   {
     GmshSession session;
     GmshScratchModel model("read");
-    call_gmsh(path, "reading it", [&] {
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(path, ec);
+    const std::string fix = "the file (" + std::to_string(bytes) +
+                            " bytes) is truncated or corrupt: write it again from gmsh (format 4.1 or 2.2)";
+    call_gmsh(path, "reading it", fix, [&] {
       gmsh::logger::start();
       try {
         gmsh::merge(path);
@@ -344,7 +348,7 @@ Mesh read_gmsh(const std::string& path) {
       }
       const std::string error = first_logged_error();
       gmsh::logger::stop();
-      if (!error.empty()) throw MeshError(path + ": gmsh could not read it (" + error + "); the file is corrupt or truncated");
+      if (!error.empty()) throw MeshError(path + ": gmsh could not read it (" + error + "); " + fix);
       mesh = extract_mesh(path);
     });
   }
@@ -361,7 +365,7 @@ void write_gmsh(const Mesh& mesh, const std::string& path) {
 
   GmshSession session;
   GmshScratchModel model("write");
-  call_gmsh(path, "writing it", [&] {
+  call_gmsh(path, "writing it", "check that the directory exists and is writable", [&] {
     const int nn = mesh.node_count();
     // Route 1 of DEPENDENCIES.md: discrete entities holding our mesh as it is. One volume per block,
     // one surface per side set, one point entity per extra node set.

@@ -3,7 +3,8 @@
 //
 // Mapping: 3-D physical groups -> element blocks (hex8 only); 2-D physical groups -> side sets
 // (each quad matched to the hex face it lies on) and node sets of the same name;
-// 0-D/1-D physical groups -> node sets. Unnamed physical groups are named "block_<tag>",
+// 0-D/1-D physical groups -> node sets. A file with no 3-D physical group gives one block
+// "block_1" of all hexes. Unnamed physical groups are named "block_<tag>",
 // "surface_<tag>", "nodes_<tag>".
 #pragma once
 

@@ -101,6 +101,8 @@ Mesh two_block_mesh() {
   m.node_sets["pin"] = {0, 7, 33};
   m.node_sets["tip_zmin"].pop_back();  // differs from its side set's nodes: must travel as its own group
   m.side_sets["interior"] = {{5, 5}, {6, 1}};  // faces inside the substrate
+  m.side_sets["unused"] = {};                  // empty sets survive the round trip
+  m.node_sets["none"] = {};
   return m;
 }
 
@@ -132,6 +134,7 @@ TEST_F(GmshIo, RoundTripOfGeneratedMesh) {
   // Mapping rule: a physical surface also gives the node set of the same name.
   auto expected_node_sets = in.node_sets;
   expected_node_sets["interior"] = in.side_set_nodes("interior");
+  expected_node_sets["unused"] = {};
   EXPECT_EQ(out.node_sets, expected_node_sets);
   ASSERT_EQ(out.side_sets.size(), in.side_sets.size());
   for (const auto& [name, sides] : in.side_sets) {
