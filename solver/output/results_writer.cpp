@@ -166,9 +166,12 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     throw SetupError("cannot create results file '" + impl_->h5_path + "': " + std::strerror(errno) +
                      "; choose another output directory or fix its permissions");
   }
+  // Default (sec2) driver: the Open MPI flavour of HDF5 (H5_HAVE_PARALLEL) works serially without
+  // MPI_Init this way; the parallel version swaps in an mpio file-access property list.
   impl_->file = H5Handle(H5Fcreate(impl_->h5_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (!impl_->file.valid())
-    throw SetupError("cannot create results file '" + impl_->h5_path + "': HDF5 H5Fcreate failed");
+    throw SetupError("cannot create results file '" + impl_->h5_path +
+                     "': HDF5 H5Fcreate failed (is another run writing it? HDF5 locks open files)");
 
   try {
     const std::string& p = impl_->h5_path;

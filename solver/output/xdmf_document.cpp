@@ -86,8 +86,8 @@ std::string XdmfDocument::mesh_elements(const std::string& in) const {
 }
 
 void XdmfDocument::add_step(double time, const std::vector<XdmfAttribute>& attributes) {
-  const std::string in = "      ";
-  std::string g = "    <Grid Name=\"" + step_name(step_count_) + "\" GridType=\"Uniform\">\n" + in +
+  const std::string in = "        ";
+  std::string g = "      <Grid Name=\"" + step_name(step_count_) + "\" GridType=\"Uniform\">\n" + in +
                   "<Time Value=\"" + number(time) + "\"/>\n";
   if (step_count_ == 0) {
     g += mesh_elements(in);
@@ -102,7 +102,7 @@ void XdmfDocument::add_step(double time, const std::vector<XdmfAttribute>& attri
          "\" Center=\"" + (a.center == Center::node ? "Node" : "Cell") + "\">" +
          h5_item(a.h5_dataset, rows, a.components, false) + "</Attribute>\n";
   }
-  g += "    </Grid>\n";
+  g += "      </Grid>\n";
   steps_xml_ += g;
   ++step_count_;
 }

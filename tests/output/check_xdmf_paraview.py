@@ -5,7 +5,8 @@ Run with pvpython: pvpython check_xdmf_paraview.py /ABSOLUTE/path/results.xdmf
 Both of ParaView 5.11's XDMF readers are checked (XDMFReader = Xdmf2, Xdmf3ReaderS). The expected
 values repeat the formulas of tests/output/sample_case.hpp: a 3 x 2 x 2 box of unit hexes, times
 0, 0.25, 0.5; displacement u = t (x, 2y, -z); stress (Voigt) = (e+1)(1+t)(1..6) stored as a full
-3x3 tensor; block_id 0 for the 6 lower elements, 1 for the 6 upper ones.
+3x3 tensor; slip = (t e, -t) as a 2-component Matrix; block_id 0 for the 6 lower elements,
+1 for the 6 upper ones.
 Prints one line per check and exits 1 on the first failure.
 """
 import os
@@ -55,6 +56,9 @@ def check(reader_name, reader):
     got = [float(v) for v in stress[e]]
     if not all(close(g, x) for g, x in zip(got, expected)):
         fail(f"{reader_name}: stress of cell {e} = {got}, expected {expected}")
+    slip = [float(v) for v in data.CellData["slip"][e]]  # 2 components: XDMF "Matrix"
+    if not (close(slip[0], t * e) and close(slip[1], -t)):
+        fail(f"{reader_name}: slip of cell {e} = {slip}, expected {[t * e, -t]}")
     block = [int(b) for b in data.CellData["block_id"]]
     if block != [0] * 6 + [1] * 6:
         fail(f"{reader_name}: block_id {block}")
@@ -64,7 +68,7 @@ def check(reader_name, reader):
     if early.GetNumberOfCells() != ELEMENTS or not close(float(early.PointData["temperature"][1]), 300.25):
         fail(f"{reader_name}: step 1 temperature at node 1 wrong or mesh missing")
     print(f"ok: {reader_name}: {NODES} nodes, {ELEMENTS} hexes, {len(TIMES)} steps, "
-          f"displacement/stress/block_id at t={t} match")
+          f"displacement/stress/slip/block_id at t={t} match")
 
 
 def main():

@@ -151,6 +151,9 @@ TEST(ResultsWriter, MeshAndThreeStepsReadBackWithHdf5) {
         EXPECT_EQ(sig.values[9 * e + k], expected.stress[6 * e + voigt[k]]) << "element " << e << " entry " << k;
     EXPECT_EQ(sig.values[9 * 4 + 1], 5 * (1 + t) * 4);  // element 4, xy = (e+1)(1+t)*4
     EXPECT_EQ(read_dataset(f, g + "/element/plastic_strain").values, expected.plastic_strain);
+    const Array slip = read_dataset(f, g + "/element/slip");
+    EXPECT_EQ(slip.dims, (std::vector<hsize_t>{12, 2}));
+    EXPECT_EQ(slip.values, expected.slip);
   }
   H5Fclose(f);
   fs::remove_all(dir);
@@ -172,10 +175,11 @@ TEST(ResultsWriter, XdmfIsWellFormedAndNamesOnlyExistingDatasets) {
   EXPECT_EQ(count(xml, "<xi:include"), 2);
   EXPECT_NE(xml.find("AttributeType=\"Tensor\" Center=\"Cell\"><DataItem Dimensions=\"12 9\""), std::string::npos);
   EXPECT_NE(xml.find("AttributeType=\"Vector\" Center=\"Node\"><DataItem Dimensions=\"36 3\""), std::string::npos);
+  EXPECT_NE(xml.find("AttributeType=\"Matrix\" Center=\"Cell\"><DataItem Dimensions=\"12 2\""), std::string::npos);
   EXPECT_NE(xml.find("Value=\"0:substrate 1:asperity\""), std::string::npos);
 
   const auto refs = h5_references(xml);
-  EXPECT_EQ(refs.size(), 3u + 3u * 4u);  // mesh (3) + 4 fields x 3 steps
+  EXPECT_EQ(refs.size(), 3u + 3u * 5u);  // mesh (3) + 5 fields x 3 steps
   const hid_t f = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
   for (const auto& r : refs) EXPECT_TRUE(h5_path_exists(f, r)) << r;

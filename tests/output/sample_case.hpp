@@ -34,15 +34,17 @@ inline mesh::Mesh make_hand_box(int nx, int ny, int nz) {
 }
 
 /// Sample fields at time t: displacement u = t (x, 2y, -z) m, temperature 300 + t x K,
-/// stress (Voigt xx yy zz xy yz zx) = (e+1)(1+t)(1, 2, 3, 4, 5, 6) Pa, plastic_strain 0.01 e t.
+/// stress (Voigt xx yy zz xy yz zx) = (e+1)(1+t)(1, 2, 3, 4, 5, 6) Pa, plastic_strain 0.01 e t,
+/// slip (2 components, written as an XDMF "Matrix") = (t e, -t) m.
 struct SampleFields {
-  std::vector<double> displacement, temperature, stress, plastic_strain;
+  std::vector<double> displacement, temperature, stress, plastic_strain, slip;
   void fill(const mesh::Mesh& m, double t) {
     const int n = m.node_count(), e = m.element_count();
     displacement.resize(3 * std::size_t(n));
     temperature.resize(std::size_t(n));
     stress.resize(6 * std::size_t(e));
     plastic_strain.resize(std::size_t(e));
+    slip.resize(2 * std::size_t(e));
     for (int a = 0; a < n; ++a) {
       const double* x = &m.coordinates[3 * std::size_t(a)];
       displacement[3 * a] = t * x[0];
@@ -53,13 +55,15 @@ struct SampleFields {
     for (int k = 0; k < e; ++k) {
       for (int c = 0; c < 6; ++c) stress[6 * k + c] = (k + 1) * (1 + t) * (c + 1);
       plastic_strain[k] = 0.01 * k * t;
+      slip[2 * k] = t * k;
+      slip[2 * k + 1] = -t;
     }
   }
   std::vector<solver::FieldView> nodal() const {
     return {{"displacement", 3, displacement}, {"temperature", 1, temperature}};
   }
   std::vector<solver::FieldView> element() const {
-    return {{"stress", 6, stress}, {"plastic_strain", 1, plastic_strain}};
+    return {{"stress", 6, stress}, {"plastic_strain", 1, plastic_strain}, {"slip", 2, slip}};
   }
 };
 

@@ -2,6 +2,7 @@
 // Benchmark: ResultsWriter write time per step on an N^3 hex box (default 60) with displacement
 // and velocity (nodal vectors) and stress (element, Voigt 6 -> stored 9). Not a test.
 //   tribex_bench_results_writer [N] [steps] [directory]
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -44,5 +45,23 @@ int main(int argc, char** argv) {
   std::printf("%d steps: write_step mean %.1f ms, min %.1f ms, max %.1f ms, %.1f MB/step (%.0f MB/s mean)\n",
               steps, 1e3 * sum / steps, 1e3 * lo, 1e3 * hi, mb, mb * steps / sum);
   std::printf("results.h5: %.1f MB\n", double(std::filesystem::file_size(w.h5_path())) / 1e6);
+
+  // Baseline on the same disk: plain fwrite of the same bytes per step (the floor for any format).
+  const std::string raw = dir + "/baseline.bin";
+  std::FILE* f = std::fopen(raw.c_str(), "wb");
+  if (f == nullptr) return 1;
+  std::vector<double> tensor(9 * elements, 1.0);
+  double raw_sum = 0;
+  for (int s = 0; s < steps; ++s) {
+    t0 = clock::now();
+    std::fwrite(u.data(), sizeof(double), u.size(), f);
+    std::fwrite(v.data(), sizeof(double), v.size(), f);
+    std::fwrite(tensor.data(), sizeof(double), tensor.size(), f);
+    std::fflush(f);
+    raw_sum += std::chrono::duration<double>(clock::now() - t0).count();
+  }
+  std::fclose(f);
+  std::filesystem::remove(raw);
+  std::printf("baseline fwrite of the same bytes: mean %.1f ms/step\n", 1e3 * raw_sum / steps);
   return 0;
 }
