@@ -70,7 +70,6 @@ void CentralDifference::init() {
   const bool stress0 = wants_stress_ && wants_stress_(time_, 0);
   compute_forces(time_, stress0);
   energies_.kinetic = ke;
-  energies_.initial = ke + energies_.internal + energies_.hourglass;
   stable_ = {};
   dt_half_ = choose_dt();
   if (!(dt_half_ > 0.0))
@@ -181,14 +180,13 @@ void CentralDifference::account_time_n() {
   const auto& mass = model_.mass;
   // Kinetic energy in the form the central-difference scheme conserves exactly for linear
   // problems, KE^n = (1/2) v^{n-1/2} . M v^{n+1/2} (the "shadow" energy of the leapfrog), so the
-  // energy balance measures the model, not the averaging of v^n. The initial state is exact.
-  double ke = 0.0, mv2 = 0.0;
+  // energy balance measures the model, not the averaging of v^n. At n = 0, v^{-1/2} = v^0.
+  double ke = 0.0;
   const double h = dt_n_;
   for (std::size_t d = 0; d < v_.size(); ++d) {
     v_n_[d] = step_ == 0 ? v_prev_[d] : 0.5 * (v_prev_[d] + v_[d]);  // reported v^n
     a_[d] = (v_[d] - v_prev_[d]) / h;
-    ke += 0.5 * mass[d / 3] * (step_ == 0 ? v_prev_[d] * v_prev_[d] : v_prev_[d] * v_[d]);
-    mv2 += mass[d / 3] * v_n_[d] * v_n_[d];
+    ke += 0.5 * mass[d / 3] * v_prev_[d] * v_[d];
   }
   if (!std::isfinite(ke)) {
     for (std::size_t d = 0; d < v_.size(); ++d)
@@ -198,7 +196,10 @@ void CentralDifference::account_time_n() {
   }
   energies_.kinetic = ke;
 
-  // External work, trapezoidal in force over [t^{n-1}, t^n] with v^{n-1/2} (physics.md 1.3).
+  // Work of the reactions and applied loads, in the pairing that makes the balance exact for
+  // the scheme: W^{n} - W^{n-1} = (1/2) v^{n-1/2} . (dt^{n-1} F^{n-1} + dt^n F^n), which with the
+  // shadow kinetic energy above gives KE + IE = E0 + W to round-off for linear problems (also
+  // across the half first step and variable steps). The F^{n-1} half is kept from the last step.
   double power_left = 0.0, power_right = 0.0;
   for (int dof : model_.constraints.dof) {
     power_left += reaction_[dof] * v_prev_[dof];
@@ -209,11 +210,11 @@ void CentralDifference::account_time_n() {
       power_left += f_ext_[d] * v_prev_[d];
       power_right += f_ext_[d] * v_[d];
     }
-  if (step_ > 0) energies_.external_work += 0.5 * dt_prev_half_ * (external_power_right_ + power_left);
-  external_power_right_ = power_right;
+  if (step_ > 0) energies_.external_work += 0.5 * (external_power_right_ + h * power_left);
+  external_power_right_ = h * power_right;
 
   // Contact: the energy held or dissipated by the interface is minus the work of the contact
-  // forces on the bodies, with the same trapezoidal rule.
+  // forces on the bodies, in the same pairing.
   if (model_.contact) {
     double c_left = 0.0, c_right = 0.0;
     for (int node : model_.contact->surface_nodes())
@@ -221,23 +222,45 @@ void CentralDifference::account_time_n() {
         c_left += f_contact_[3 * node + i] * v_prev_[3 * node + i];
         c_right += f_contact_[3 * node + i] * v_[3 * node + i];
       }
-    if (step_ > 0) energies_.contact_work -= 0.5 * dt_prev_half_ * (contact_power_right_ + c_left);
-    contact_power_right_ = c_right;
+    if (step_ > 0) energies_.contact_work -= 0.5 * (contact_power_right_ + h * c_left);
+    contact_power_right_ = h * c_right;
   }
+  if (step_ == 0) energies_.initial = energies_.kinetic + energies_.internal + energies_.hourglass;
 
-  // Dashpot and damping dissipation over [t^{n-1/2}, t^{n+1/2}]: the semi-implicit force is -c v^n.
+  // Dashpots, mass damping and element viscosity: the force F^n = -C v^n (semi-implicit) or
+  // -C v^{n-1/2} (element viscosity, evaluated with the last half-step velocity) enters the balance
+  // in the same pairing as the loads: through time n, all of F^{n-1} and the v^{n-1/2} half of F^n.
   const auto& sb = model_.silent;
-  double silent = 0.0;
+  double silent_left = 0.0, silent_right = 0.0;
   for (std::size_t k = 0; k < sb.node.size(); ++k) {
-    const double* vn = &v_n_[3 * sb.node[k]];
+    const int node = sb.node[k];
     const double* nv = &sb.normal[3 * k];
-    const double s = vn[0] * nv[0] + vn[1] * nv[1] + vn[2] * nv[2];
-    const double t2 = vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2] - s * s;
-    silent += sb.c_normal[k] * s * s + sb.c_tangential[k] * t2;
+    const double* vb = &v_n_[3 * node];
+    const double* vl = &v_prev_[3 * node];
+    const double* vr = &v_[3 * node];
+    const double bn = vb[0] * nv[0] + vb[1] * nv[1] + vb[2] * nv[2];
+    const double ln = vl[0] * nv[0] + vl[1] * nv[1] + vl[2] * nv[2];
+    const double rn = vr[0] * nv[0] + vr[1] * nv[1] + vr[2] * nv[2];
+    const double bl = vb[0] * vl[0] + vb[1] * vl[1] + vb[2] * vl[2];
+    const double br = vb[0] * vr[0] + vb[1] * vr[1] + vb[2] * vr[2];
+    silent_left += sb.c_normal[k] * bn * ln + sb.c_tangential[k] * (bl - bn * ln);
+    silent_right += sb.c_normal[k] * bn * rn + sb.c_tangential[k] * (br - bn * rn);
   }
-  energies_.silent_boundary_dissipation += h * silent;
-  // Mass damping force -c m v^n (semi-implicit) dissipates c m |v^n|^2 per unit time.
-  if (model_.mass_damping > 0.0) energies_.damping_dissipation += h * model_.mass_damping * mv2;
+  energies_.silent_boundary_dissipation += 0.5 * (silent_power_right_ + h * silent_left);
+  silent_power_right_ = h * silent_right;
+  if (model_.mass_damping > 0.0) {
+    double left = 0.0, right = 0.0;
+    for (std::size_t d = 0; d < v_.size(); ++d) {
+      left += mass[d / 3] * v_n_[d] * v_prev_[d];
+      right += mass[d / 3] * v_n_[d] * v_[d];
+    }
+    energies_.damping_dissipation += 0.5 * model_.mass_damping * (damping_power_right_ + h * left);
+    damping_power_right_ = h * right;
+  }
+  // Element viscosity: F^n . v^{n-1/2} is the computed power; the v^{n+1/2} half is taken equal to
+  // it (the element forces are not kept per node), an O(dt^2) per-step approximation.
+  energies_.viscous_dissipation += 0.5 * (viscous_power_right_ + h * viscous_power_);
+  viscous_power_right_ = h * viscous_power_;
 }
 
 void CentralDifference::step(const std::function<void()>& on_time_n) {
@@ -253,7 +276,6 @@ void CentralDifference::step(const std::function<void()>& on_time_n) {
   ++step_;
   const bool want_stress = wants_stress_ && wants_stress_(time_, step_);
   compute_forces(time_, want_stress);
-  energies_.viscous_dissipation += h * viscous_power_;
   dt_prev_half_ = dt_half_;
   dt_half_ = finished() ? dt_prev_half_ : choose_dt();
   if (!finished() && dt_half_ < 1e-6 * dt_prev_half_)

@@ -86,7 +86,8 @@ class CentralDifference {
   Energies energies_;
   StableStep stable_;
   double external_power_right_ = 0.0;  // F_ext^{n-1} . v^{n-1/2}, for the trapezoidal work rule
-  double viscous_power_ = 0.0;
+  double viscous_power_ = 0.0;        // element viscous dissipation rate of the last force pass
+  double silent_power_right_ = 0.0, damping_power_right_ = 0.0, viscous_power_right_ = 0.0;
   // Contact: current positions of surface nodes, contact forces, totals, lagged contact power.
   std::vector<double> x_, f_contact_;
   contact::ContactTotals contact_totals_;

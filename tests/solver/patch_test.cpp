@@ -73,9 +73,9 @@ INSTANTIATE_TEST_SUITE_P(
                       PatchCase{inputs::MaterialModel::elastic, inputs::ElementFormulation::fully_integrated},
                       PatchCase{inputs::MaterialModel::neo_hookean, inputs::ElementFormulation::mean_quadrature},
                       PatchCase{inputs::MaterialModel::neo_hookean, inputs::ElementFormulation::fully_integrated}),
-    [](const ::testing::TestParamInfo<PatchCase>& info) {
-      return std::string(info.param.material == inputs::MaterialModel::elastic ? "Elastic" : "NeoHookean") +
-             (info.param.formulation == inputs::ElementFormulation::mean_quadrature ? "MeanQuadrature" : "FullyIntegrated");
+    [](const ::testing::TestParamInfo<PatchCase>& p) {
+      return std::string(p.param.material == inputs::MaterialModel::elastic ? "Elastic" : "NeoHookean") +
+             (p.param.formulation == inputs::ElementFormulation::mean_quadrature ? "MeanQuadrature" : "FullyIntegrated");
     });
 
 }  // namespace
