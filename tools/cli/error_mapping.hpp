@@ -28,7 +28,9 @@ int run_mapping_errors(F&& body) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return tools::exit_bad_input;
   } catch (const solver::SetupError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    // Messages that point at a deck line already read "FILE:LINE:COL: error: ...".
+    const bool located = std::string(e.what()).find(": error: ") != std::string::npos;
+    std::fprintf(stderr, "%s%s\n", located ? "" : "error: ", e.what());
     return tools::exit_bad_input;
   } catch (const solver::NumericalFailure& e) {
     std::fprintf(stderr, "Error termination: numerical failure: %s\n", e.what());
