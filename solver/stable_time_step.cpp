@@ -18,30 +18,39 @@ StableStep compute_stable_time_step(const Model& model, const double* u) {
     const double damping_factor = std::sqrt(1.0 + xi * xi) - xi;
     for (int e = 0; e < blk.count; ++e) {
       const int global = blk.first_element + e;
-      double X[24];
-      for (int I = 0; I < 8; ++I) {
-        const int n = m.connectivity[8 * global + I];
-        for (int i = 0; i < 3; ++i) X[3 * I + i] = m.coordinates[3 * n + i] + (u ? u[3 * n + i] : 0.0);
-      }
-      double B[24];
-      const double V = hex8::gradient_operator(X, B);
-      if (!(V > 0.0)) {
-        if (out.inverted_element < 0) out.inverted_element = global;
-        continue;
-      }
-      // Tangent modulus at the element's mean deformation H = (1/V0) u_iI B0_jI.
+      const double* B0 = &blk.B0[24 * e];
+      double L = blk.length0[e];
       double H[9] = {};
+      double J = 1.0;
       if (u) {
-        const double* B0 = &blk.B0[24 * e];
+        // Current operator of the uniform-gradient element, B = cof(F) B0 (exact for an affine
+        // deformation of the element, first order otherwise), V = J V0: no Gauss loop per element.
         for (int I = 0; I < 8; ++I) {
-          const int n = m.connectivity[8 * global + I];
+          const double* un = u + 3 * m.connectivity[8 * global + I];
           for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) H[3 * i + j] += u[3 * n + i] * B0[8 * j + I] / blk.volume0[e];
+            for (int j = 0; j < 3; ++j) H[3 * i + j] += un[i] * B0[8 * j + I];
         }
+        for (double& h : H) h /= blk.volume0[e];
+        const double F[9] = {1 + H[0], H[1], H[2], H[3], 1 + H[4], H[5], H[6], H[7], 1 + H[8]};
+        const double C[9] = {F[4] * F[8] - F[5] * F[7], F[5] * F[6] - F[3] * F[8], F[3] * F[7] - F[4] * F[6],
+                             F[2] * F[7] - F[1] * F[8], F[0] * F[8] - F[2] * F[6], F[1] * F[6] - F[0] * F[7],
+                             F[1] * F[5] - F[2] * F[4], F[2] * F[3] - F[0] * F[5], F[0] * F[4] - F[1] * F[3]};
+        J = F[0] * C[0] + F[1] * C[1] + F[2] * C[2];
+        if (!(J > 0.0)) {
+          if (out.inverted_element < 0) out.inverted_element = global;
+          continue;
+        }
+        double bb = 0.0;
+        for (int I = 0; I < 8; ++I)
+          for (int i = 0; i < 3; ++i) {
+            const double b = C[3 * i] * B0[I] + C[3 * i + 1] * B0[8 + I] + C[3 * i + 2] * B0[16 + I];
+            bb += b * b;
+          }
+        L = J * blk.volume0[e] / std::sqrt(2.0 * bb);
       }
       const double M = std::visit([&](const auto& mat) { return mat.wave_modulus(H); }, blk.material);
-      const double rho = rho0 * blk.volume0[e] / V;
-      const double dt = hex8::characteristic_length(B, V) / std::sqrt(M / rho) * damping_factor;
+      const double rho = rho0 / J;
+      const double dt = L / std::sqrt(M / rho) * damping_factor;
       if (dt < out.dt) {
         out.dt = dt;
         out.controlling_element = global;

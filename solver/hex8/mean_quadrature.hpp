@@ -20,23 +20,30 @@
 
 namespace tribex::solver::hex8 {
 
-template <class Material>
-ElementPassTotals mean_quadrature_forces(const Material& mat, ElementBlock& blk, const int* conn,
-                                         const double* u, const double* v, double* force,
-                                         bool want_stress) {
+template <class Material, bool HourglassViscosity>
+ElementPassTotals mean_quadrature_forces_impl(const Material& mat, ElementBlock& blk, const int* conn,
+                                              const double* u, const double* v, double* force, bool want_stress) {
   ElementPassTotals totals;
   const double b1 = blk.linear_bulk_viscosity, b2 = blk.quadratic_bulk_viscosity;
   const double rho = mat.density, rho_c = blk.rho_c;
+  const double* B0 = blk.B0.data();
+  const double* G0 = blk.gamma.data();
   for (int e = 0; e < blk.count; ++e) {
     const int* nodes = conn + 8 * (blk.first_element + e);
-    const double* B = &blk.B0[24 * e];
-    const double* gam = &blk.gamma[32 * e];
+    const double* B = B0 + 24 * e;
+    const double* gam = G0 + 32 * e;
+    // Gather [component][node] so that every sum below runs over 8 contiguous values.
     double ue[24], ve[24];
-    for (int I = 0; I < 8; ++I)
-      for (int i = 0; i < 3; ++i) {
-        ue[8 * i + I] = u[3 * nodes[I] + i];
-        ve[8 * i + I] = v[3 * nodes[I] + i];
-      }
+    for (int I = 0; I < 8; ++I) {
+      const double* un = u + 3 * nodes[I];
+      const double* vn = v + 3 * nodes[I];
+      ue[I] = un[0];
+      ue[8 + I] = un[1];
+      ue[16 + I] = un[2];
+      ve[I] = vn[0];
+      ve[8 + I] = vn[1];
+      ve[16 + I] = vn[2];
+    }
     const double inv_v0 = 1.0 / blk.volume0[e];
     double H[9];
     for (int i = 0; i < 3; ++i)
@@ -59,35 +66,49 @@ ElementPassTotals mean_quadrature_forces(const Material& mat, ElementBlock& blk,
     S[0] -= q;
     S[4] -= q;
     S[8] -= q;
-    double fe[24];
-    for (int i = 0; i < 3; ++i)
-      for (int I = 0; I < 8; ++I)
-        fe[8 * i + I] = S[3 * i] * B[I] + S[3 * i + 1] * B[8 + I] + S[3 * i + 2] * B[16 + I];
-    // Hourglass.
-    const double k = blk.hg_k[e], c = blk.hg_c[e];
-    double hg_energy = 0.0, hg_power = 0.0;
-    for (int a = 0; a < 4; ++a) {
-      const double* ga = gam + 8 * a;
+    // Hourglass generalized displacements h_ia = u_iJ gamma_aJ (and rates g_ia = v_iJ gamma_aJ).
+    const double k = blk.hg_k[e];
+    double r[12], hg_energy = 0.0, hg_power = 0.0;
+    for (int a = 0; a < 4; ++a)
       for (int i = 0; i < 3; ++i) {
-        double h = 0.0, gv = 0.0;
-        for (int I = 0; I < 8; ++I) {
-          h += ue[8 * i + I] * ga[I];
-          gv += ve[8 * i + I] * ga[I];
-        }
+        double h = 0.0;
+        for (int J = 0; J < 8; ++J) h += ue[8 * i + J] * gam[8 * a + J];
         hg_energy += h * h;
-        hg_power += gv * gv;
-        const double r = k * h + c * gv;
-        for (int I = 0; I < 8; ++I) fe[8 * i + I] += r * ga[I];
+        r[3 * a + i] = k * h;
+        if constexpr (HourglassViscosity) {
+          double g = 0.0;
+          for (int J = 0; J < 8; ++J) g += ve[8 * i + J] * gam[8 * a + J];
+          hg_power += g * g;
+          r[3 * a + i] += blk.hg_c[e] * g;
+        }
       }
+    // f_iI = S_ij B_jI + r_ia gamma_aI, subtracted from the nodal forces.
+    for (int I = 0; I < 8; ++I) {
+      double f[3];
+      for (int i = 0; i < 3; ++i)
+        f[i] = S[3 * i] * B[I] + S[3 * i + 1] * B[8 + I] + S[3 * i + 2] * B[16 + I] + r[i] * gam[I] +
+               r[3 + i] * gam[8 + I] + r[6 + i] * gam[16 + I] + r[9 + i] * gam[24 + I];
+      double* fn = force + 3 * nodes[I];
+      fn[0] -= f[0];
+      fn[1] -= f[1];
+      fn[2] -= f[2];
     }
-    for (int I = 0; I < 8; ++I)
-      for (int i = 0; i < 3; ++i) force[3 * nodes[I] + i] -= fe[8 * i + I];
     totals.strain_energy += W * blk.volume0[e];
     totals.hourglass_energy += 0.5 * k * hg_energy;
-    totals.viscous_power += c * hg_power - q * edot * blk.volume0[e];
+    totals.viscous_power -= q * edot * blk.volume0[e];
+    if constexpr (HourglassViscosity) totals.viscous_power += blk.hg_c[e] * hg_power;
     if (want_stress) mat.cauchy_stress(H, &blk.stress[6 * e]);
   }
   return totals;
+}
+
+template <class Material>
+ElementPassTotals mean_quadrature_forces(const Material& mat, ElementBlock& blk, const int* conn,
+                                         const double* u, const double* v, double* force,
+                                         bool want_stress) {
+  if (blk.hourglass_viscosity > 0.0)
+    return mean_quadrature_forces_impl<Material, true>(mat, blk, conn, u, v, force, want_stress);
+  return mean_quadrature_forces_impl<Material, false>(mat, blk, conn, u, v, force, want_stress);
 }
 
 }  // namespace tribex::solver::hex8
