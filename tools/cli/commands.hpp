@@ -8,5 +8,7 @@
 
 namespace tribex::cli {
 
+int gw_command(const std::vector<std::string>& args);       // tools/gw/gw_command.cpp
+int surface_command(const std::vector<std::string>& args);  // tools/surface/surface_command.cpp
 
 }  // namespace tribex::cli

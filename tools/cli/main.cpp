@@ -22,6 +22,8 @@ struct Command {
 };
 
 const std::vector<Command> commands = {
+    {"gw", "Greenwood-Williamson models: F_n, discrete/DMT/tangential GW (CSV)", tribex::cli::gw_command},
+    {"surface", "rough-surface statistics of AFM maps and McCool GW tables", tribex::cli::surface_command},
 };
 
 void print_usage(std::FILE* to) {
