@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "mesh/mesh_error.hpp"
 
@@ -38,19 +40,26 @@ HeightMap level_plane(const HeightMap& map) {
   return out;
 }
 
+namespace {
+std::string nm(double metres) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g nm", metres * 1e9);
+  return b;
+}
+}  // namespace
+
 HeightMap crop(const HeightMap& map, double x0, double y0, double wx, double wy) {
   if (!(wx > 0.0 && wy > 0.0 && x0 >= 0.0 && y0 >= 0.0) || x0 + wx > map.size_x() * (1 + 1e-9) ||
       y0 + wy > map.size_y() * (1 + 1e-9))
-    throw MeshError(map.source + ": window " + std::to_string(x0) + ", " + std::to_string(y0) + ", " + std::to_string(wx) +
-                    " x " + std::to_string(wy) + " m must be non-empty and inside the " + std::to_string(map.size_x()) + " x " +
-                    std::to_string(map.size_y()) + " m map");
+    throw MeshError(map.source + ": window at (" + nm(x0) + ", " + nm(y0) + ") of " + nm(wx) + " x " + nm(wy) +
+                    " must be non-empty and inside the " + nm(map.size_x()) + " x " + nm(map.size_y()) + " map");
   const auto ix0 = static_cast<std::size_t>(std::ceil(x0 / map.dx - 0.5 - 1e-9));
   const auto iy0 = static_cast<std::size_t>(std::ceil(y0 / map.dy - 0.5 - 1e-9));
   const auto ix1 = std::min(map.nx, static_cast<std::size_t>(std::ceil((x0 + wx) / map.dx - 0.5 - 1e-9)));
   const auto iy1 = std::min(map.ny, static_cast<std::size_t>(std::ceil((y0 + wy) / map.dy - 0.5 - 1e-9)));
   if (ix1 < ix0 + 2 || iy1 < iy0 + 2)
-    throw MeshError(map.source + ": window of " + std::to_string(wx) + " x " + std::to_string(wy) +
-                    " m holds fewer than 2 x 2 pixels (pixel size " + std::to_string(map.dx) + " m); enlarge it");
+    throw MeshError(map.source + ": window of " + nm(wx) + " x " + nm(wy) + " holds fewer than 2 x 2 pixels (pixel size " +
+                    nm(map.dx) + "); enlarge it");
   HeightMap out;
   out.nx = ix1 - ix0;
   out.ny = iy1 - iy0;

@@ -84,12 +84,14 @@ GwPoint dmt_gw_discrete(const std::vector<double>& heights, double t, double bet
 
 double tangential_gw(double t, double slip) {
   if (slip < 0.0) throw std::invalid_argument("tangential_gw: slip must be >= 0");
-  // Stuck asperities (w < slip^2): slip * int_0^{slip^2} sqrt(w) phi(t + w) dw, with w = s^2;
-  // sliding ones (w >= slip^2): int_c^inf w phi(t + w) dw = F_1(t + c) + c F_0(t + c), c = slip^2.
+  // An asperity slides once sqrt(w) slip >= w, i.e. w <= c = slip^2 (small asperities have small capacity).
+  // Sliding ones: int_0^c w phi(t + w) dw = F_1(t) - [F_1(t + c) + c F_0(t + c)];
+  // stuck ones:   slip int_c^inf sqrt(w) phi(t + w) dw = slip [F_1/2(t) - int_0^slip 2 s^2 phi(t + s^2) ds]  (w = s^2).
   const double c = slip * slip;
-  const double stuck =
-      slip > 0.0 ? slip * gauss_legendre([t](double s) { return 2.0 * s * s * normal_pdf(t + s * s); }, 0.0, slip, 64) : 0.0;
-  return stuck + gw_integral(1.0, t + c) + c * gw_integral(0.0, t + c);
+  const double sliding = gw_integral(1.0, t) - gw_integral(1.0, t + c) - c * gw_integral(0.0, t + c);
+  const double head =
+      slip > 0.0 ? gauss_legendre([t](double s) { return 2.0 * s * s * normal_pdf(t + s * s); }, 0.0, slip, 64) : 0.0;
+  return sliding + slip * (gw_integral(0.5, t) - head);
 }
 
 double tangential_gw_discrete(const std::vector<double>& heights, double t, double slip) {
