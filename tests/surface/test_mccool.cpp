@@ -6,6 +6,7 @@
 
 #include "tools/gw/gw_integrals.hpp"
 #include "tools/surface/mccool.hpp"
+#include "tools/surface/summit_contact.hpp"
 
 using namespace tribex::surface;
 
@@ -57,4 +58,28 @@ TEST(McCool, HardnessFractionFollowsTheHertzMeanPressure) {
               tribex::gw::gw_integral(0, 1.0 + w_h / r.summits.sigma_s) / tribex::gw::gw_integral(0, 1.0), 1e-15);
   in.hardness = 1e15;
   EXPECT_LT(mccool_at_separation(in, 1.0).fraction_past_hardness, 1e-12);
+}
+
+TEST(SummitContact, ParaboloidSummitIsHertzPlusDmt) {
+  // z = z_top - (x^2 + y^2) / (2R) on a grid: central differences are exact for a quadratic,
+  // so the found summit has kappa = 1/R and the discrete model reduces to Hertz / DMT.
+  tribex::mesh::afm::HeightMap m;
+  m.nx = m.ny = 21;
+  m.dx = m.dy = 1e-9;
+  const double R = 50e-9;
+  for (std::size_t iy = 0; iy < m.ny; ++iy)
+    for (std::size_t ix = 0; ix < m.nx; ++ix) {
+      const double x = (static_cast<double>(ix) - 10) * 1e-9, y = (static_cast<double>(iy) - 10) * 1e-9;
+      m.heights.push_back(-(x * x + y * y) / (2 * R));
+    }
+  const auto summits = find_summits(m);
+  ASSERT_EQ(summits.size(), 1u);
+  EXPECT_NEAR(summits[0].curvature * R, 1.0, 1e-9);
+  const double w = 0.3e-9, e_star = 80e9, W = 0.1;
+  const auto c = summit_contact(summits, e_star, W, summits[0].height - w);
+  EXPECT_EQ(c.contacts, 1u);
+  EXPECT_NEAR(c.area / (M_PI * R * w), 1.0, 1e-9);
+  EXPECT_NEAR(c.load_hertz / ((4.0 / 3.0) * e_star * std::sqrt(R) * std::pow(w, 1.5)), 1.0, 1e-9);
+  EXPECT_NEAR(c.load_hertz - c.load_dmt, 2 * M_PI * W * R, 1e-9 * 2 * M_PI * W * R);
+  EXPECT_EQ(summit_contact(summits, e_star, W, summits[0].height + 1e-12).contacts, 0u);
 }

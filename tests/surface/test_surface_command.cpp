@@ -28,6 +28,7 @@ TEST(SurfaceCommand, EveryAfmSampleGivesAStatisticsTable) {
                          "--median", "--smooth"}),
             0);
   EXPECT_EQ(run_surface({"mccool", afm_dir + "di-3.di", afm_dir + "matrix-3.txt", "--load", "10mN"}), 0);
+  EXPECT_EQ(run_surface({"contact", afm_dir + "di-5.di", "--points", "5"}), 0);
 }
 
 TEST(SurfaceCommand, BadInputExitsTwo) {

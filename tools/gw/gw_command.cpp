@@ -223,10 +223,12 @@ int figures(const std::vector<std::string>& argv) {
     const double t = 1.0;
     const auto n = static_cast<std::size_t>(std::lround(100.0 / gw::gw_integral(0.0, t)));
     const auto pop = gw::gaussian_population(n, static_cast<std::uint64_t>(seed) + 10);
+    // Each curve is normalised by its own full-sliding force tau* A (continuous F_1(t), discrete sum of w).
+    const double a_discrete = gw::discrete_gw(pop, t).area;
     for (int i = 0; i <= 300; ++i) {
       const double s = 0.01 * i;
       std::snprintf(b, sizeof b, "%.4f,%.10g,%.10g\n", s, gw::tangential_gw(t, s) / gw::gw_integral(1.0, t),
-                    gw::tangential_gw_discrete(pop, t, s) / gw::gw_integral(1.0, t));
+                    gw::tangential_gw_discrete(pop, t, s) / a_discrete);
       o << b;
     }
     write_output(out + "/fig4_11.csv", o.str());

@@ -13,6 +13,10 @@
 #include "tools/common/errors.hpp"
 #include "tools/surface/mccool.hpp"
 #include "tools/surface/spectral_moments.hpp"
+#include "tools/surface/summit_contact.hpp"
+#include <fstream>
+#include <sstream>
+#include <algorithm>
 
 namespace tribex::cli {
 namespace {
@@ -229,19 +233,85 @@ int mccool(const std::vector<std::string>& argv) {
   return tools::exit_ok;
 }
 
+const char* contact_usage =
+    "usage: tribex surface contact FILE [options]\n"
+    "Discrete GW over the summits found on the map (8-neighbour maxima, own radius each; report Eq. 4.2),\n"
+    "Hertz and DMT (Eq. 4.11), for a rigid flat lowered from the highest summit: CSV with columns\n"
+    "h_m, contacts, area_fraction, pressure_hertz_Pa, pressure_dmt_Pa (pressures over the map area).\n"
+    "  --channel N, --window, --resample N, --median, --smooth   as in `surface stats`\n"
+    "  --E1 164GPa --nu1 0.23 --E2 164GPa --nu2 0.23   elastic constants of the two bodies\n"
+    "  --work-of-adhesion 0.1J/m^2   W of the DMT term\n"
+    "  --points 200        flat positions from the highest summit down to the mean plane (geometric approach)\n"
+    "  --csv FILE          output (default: stdout)\n";
+
+int contact(const std::vector<std::string>& argv) {
+  Args a(argv, "tribex surface contact", contact_usage, {"--median", "--smooth"});
+  if (a.help_requested()) { std::fputs(contact_usage, stdout); return tools::exit_ok; }
+  const std::string file = a.positional(0, "FILE");
+  const int channel = channel_option(a, "--channel");
+  std::vector<double> window;
+  long resample = 0;
+  bool median = false, smooth = false;
+  add_preprocess_options(a, window, resample, median, smooth);
+  const double e1 = a.quantity("--E1", 164e9, inputs::dim::pressure), e2 = a.quantity("--E2", 164e9, inputs::dim::pressure);
+  const double nu1 = a.real("--nu1", 0.23), nu2 = a.real("--nu2", 0.23);
+  const double w = a.quantity("--work-of-adhesion", 0.1, inputs::dim::energy_per_area);
+  const long points = a.integer("--points", 200);
+  const std::string csv = a.text("--csv", "");
+  a.finish();
+  if (!(e1 > 0 && e2 > 0)) throw BadInput("--E1 and --E2 must be positive");
+  if (!(nu1 > -1 && nu1 < 0.5 && nu2 > -1 && nu2 < 0.5)) throw BadInput("--nu1 and --nu2 must lie in (-1, 0.5)");
+  if (!(w >= 0)) throw BadInput("--work-of-adhesion must be >= 0");
+  if (points < 2 || points > 100000) throw BadInput("--points must lie in 2 to 100000");
+  const Prepared p = prepare(file, channel, window, resample, median, smooth);
+  const auto summits = surface::find_summits(p.map);
+  if (summits.empty()) throw BadInput(file + ": no summits found on the map; nothing to put in contact");
+  double top = -1e300;
+  for (const auto& s : summits) top = std::max(top, s.height);
+  const double e_star = surface::composite_modulus(e1, nu1, e2, nu2);
+  const double area = p.map.size_x() * p.map.size_y();
+  std::ostringstream o;
+  o << "h_m,contacts,area_fraction,pressure_hertz_Pa,pressure_dmt_Pa\n";
+  char b[200];
+  for (long i = 0; i < points; ++i) {
+    // Approach delta = top - h spaced geometrically from 1e-6 top to top, so the first contacts (where
+    // adhesion matters) are resolved as well as the approach down to the mean plane.
+    const double delta = i == 0 ? 0.0 : top * std::pow(1e-6, 1.0 - static_cast<double>(i - 1) / static_cast<double>(points - 2));
+    const double h = top - delta;
+    const auto c = surface::summit_contact(summits, e_star, w, h);
+    std::snprintf(b, sizeof b, "%.9g,%zu,%.9g,%.9g,%.9g\n", h, c.contacts, c.area / area, c.load_hertz / area, c.load_dmt / area);
+    o << b;
+  }
+  if (csv.empty()) {
+    std::fputs(o.str().c_str(), stdout);
+  } else {
+    const std::string tmp = csv + ".tmp";
+    {
+      std::ofstream out(tmp, std::ios::binary);
+      if (!out) throw BadInput("cannot write '" + csv + "' (check that its folder exists and is writable)");
+      out << o.str();
+      if (!out.flush()) throw BadInput("writing '" + csv + "' failed");
+    }
+    if (std::rename(tmp.c_str(), csv.c_str()) != 0) throw BadInput("cannot rename '" + tmp + "' to '" + csv + "'");
+  }
+  return tools::exit_ok;
+}
+
 }  // namespace
 
 int surface_command(const std::vector<std::string>& args) {
   const char* usage =
       "usage: tribex surface stats FILE [options]      spectral moments and summit statistics\n"
       "       tribex surface mccool FILE1 [FILE2] ...  McCool GW table for two surfaces in contact\n"
+      "       tribex surface contact FILE ...          discrete Hertz/DMT GW over the map's own summits (CSV)\n"
       "(tribex surface SUB --help for details)\n";
-  if (args.empty()) throw BadInput(std::string("tribex surface needs a subcommand: stats or mccool (see tribex surface --help)"));
+  if (args.empty()) throw BadInput(std::string("tribex surface needs a subcommand: stats, mccool or contact (see tribex surface --help)"));
   if (args[0] == "--help" || args[0] == "-h") { std::fputs(usage, stdout); return tools::exit_ok; }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "stats") return stats(rest);
   if (args[0] == "mccool") return mccool(rest);
-  throw BadInput("tribex surface: unknown subcommand '" + args[0] + "' (use stats or mccool)");
+  if (args[0] == "contact") return contact(rest);
+  throw BadInput("tribex surface: unknown subcommand '" + args[0] + "' (use stats, mccool or contact)");
 }
 
 }  // namespace tribex::cli
