@@ -12,5 +12,7 @@ int run_command(const std::vector<std::string>& args);    // tools/cli/run_comma
 int check_command(const std::vector<std::string>& args);  // tools/cli/run_command.cpp
 int bench_command(const std::vector<std::string>& args);  // tools/bench/bench_command.cpp
 
+int gw_command(const std::vector<std::string>& args);       // tools/gw/gw_command.cpp
+int surface_command(const std::vector<std::string>& args);  // tools/surface/surface_command.cpp
 
 }  // namespace tribex::cli

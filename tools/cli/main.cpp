@@ -25,6 +25,8 @@ const std::vector<Command> commands = {
     {"run", "run an input deck: tribex run DECK [-o OUTDIR] [--quiet]", tribex::cli::run_command},
     {"check", "validate a deck and its mesh, print the set-up summary, run nothing", tribex::cli::check_command},
     {"bench", "benchmarks: tribex bench block --n N --element E --material M --steps S", tribex::cli::bench_command},
+    {"gw", "Greenwood-Williamson models: F_n, discrete/DMT/tangential GW (CSV)", tribex::cli::gw_command},
+    {"surface", "rough-surface statistics of AFM maps and McCool GW tables", tribex::cli::surface_command},
 };
 
 void print_usage(std::FILE* to) {

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// Small helpers shared by the text-format height-map readers (internal to mesh/afm).
+#pragma once
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribex::mesh::afm::detail {
+
+inline std::string trim(const std::string& s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+  return s.substr(a, b - a);
+}
+
+/// A whole-token real number, or nothing (no partial parses like "1.5abc").
+inline std::optional<double> to_number(const std::string& text) {
+  const std::string t = trim(text);
+  double v = 0.0;
+  const char* first = t.data();
+  if (!t.empty() && t[0] == '+') ++first;
+  auto [p, ec] = std::from_chars(first, t.data() + t.size(), v);
+  if (ec != std::errc() || p != t.data() + t.size() || t.empty()) return std::nullopt;
+  return v;
+}
+
+/// Splits on blanks/tabs (and commas when `commas`).
+inline std::vector<std::string> split_fields(const std::string& line, bool commas = false) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == ' ' || c == '\t' || c == '\r' || (commas && c == ',')) {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur.push_back(c);
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+/// Metres per unit for the SI-prefixed length units text exports use ("m", "nm", "um", "µm", "pm", "mm").
+inline std::optional<double> metres_per(const std::string& unit_text) {
+  const std::string u = trim(unit_text);
+  if (u == "m") return 1.0;
+  if (u == "mm") return 1e-3;
+  if (u == "um" || u == "\xc2\xb5m" || u == "\xb5m" || u == "~m") return 1e-6;
+  if (u == "nm") return 1e-9;
+  if (u == "pm") return 1e-12;
+  if (u == "A" || u == "\xc3\x85") return 1e-10;
+  return std::nullopt;
+}
+
+}  // namespace tribex::mesh::afm::detail
