@@ -8,5 +8,6 @@
 
 namespace tribex::cli {
 
+int pstd_command(const std::vector<std::string>& args);  // tools/pstd/
 
 }  // namespace tribex::cli

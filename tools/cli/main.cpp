@@ -22,6 +22,7 @@ struct Command {
 };
 
 const std::vector<Command> commands = {
+    {"pstd", "pre-sliding tangential deflection model (report 2.1.9)", tribex::cli::pstd_command},
 };
 
 void print_usage(std::FILE* to) {
