@@ -68,12 +68,12 @@ void write_events_csv(const std::string& path, const std::vector<PstdEvent>& eve
   File out(path);
   std::fprintf(out.f,
                "event,start[nm],end[nm],length[nm],lifts,normal_force_start[uN],normal_force_end[uN],"
-               "true_area_start[um^2],true_area_end[um^2],contacts_min,contacts_max\n");
+               "true_area_start[um^2],true_area_end[um^2],contacts_min,contacts_max,mean_half_width[nm]\n");
   for (std::size_t i = 0; i < events.size(); ++i) {
     const auto& e = events[i];
-    std::fprintf(out.f, "%zu,%.3f,%.3f,%.3f,%zu,%.9g,%.9g,%.9g,%.9g,%d,%d\n", i + 1, e.start * nm, e.end * nm,
+    std::fprintf(out.f, "%zu,%.3f,%.3f,%.3f,%zu,%.9g,%.9g,%.9g,%.9g,%d,%d,%.6g\n", i + 1, e.start * nm, e.end * nm,
                  (e.end - e.start) * nm, e.lifts, e.force_start * uN, e.force_end * uN, e.area_start * um2,
-                 e.area_end * um2, e.contacts_min, e.contacts_max);
+                 e.area_end * um2, e.contacts_min, e.contacts_max, e.half_width * nm);
   }
 }
 
