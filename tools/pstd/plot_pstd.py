@@ -37,6 +37,7 @@ def main(out):
     ax.plot(x, t["normal_force[uN]"], lw=1.0, label="normal force")
     shade_events(ax, ev)
     ax.set_xlabel("counterface position [um]")
+    ax.set_yscale("log")  # W falls by orders of magnitude along a run
     ax.set_ylabel("normal force [uN]")
     ax.set_title("PSTD model: normal force vs position (%d PSTD events shaded)" % len(ev.get("event", [])))
     ax.grid(alpha=0.3)
@@ -50,6 +51,7 @@ def main(out):
     ax1.set_ylabel("contacting asperities", color="tab:blue")
     ax2 = ax1.twinx()
     ax2.plot(x, t["true_area[um^2]"], color="tab:green", lw=1.0)
+    ax2.set_yscale("log")
     ax2.set_ylabel("true contact area [um^2]", color="tab:green")
     shade_events(ax1, ev)
     ax1.set_title("contacts (left) and true contact area (right); PSTD events shaded")
@@ -67,6 +69,7 @@ def main(out):
             fs = [f / n for f, k in zip(tr["normal_force[uN]"], tr["copies"]) if k == n]
             ax.plot(xs, fs, lw=0.9, label="%d copies, %d initial contacts" % (n, c0))
         ax.set_xlabel("counterface position [um]")
+        ax.set_yscale("log")
         ax.set_ylabel("normal force per copy [uN]")
         ax.set_title("apparent-area study")
         ax.legend(fontsize=7)

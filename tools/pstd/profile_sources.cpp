@@ -172,6 +172,10 @@ HeightMap read_height_map(const std::string& path) {
     }
     const auto fields = split_fields(line);
     if (fields.empty()) continue;
+    if (width <= 0 || height <= 0 || z_unit <= 0)
+      throw tools::BadInput(at + ": not a Gwyddion ASCII matrix (data before the '# Width:', '# Height:' and "
+                            "'# Value units:' header lines); --afm reads only that format for now: export a line "
+                            "as x[nm],z[nm] CSV and use --substrate-file");
     if (map.nx == 0) map.nx = fields.size();
     if (fields.size() != map.nx)
       throw tools::BadInput(at + ": row has " + std::to_string(fields.size()) + " values, the first row had " +
