@@ -2,7 +2,9 @@
 // `tribex pstd`: the pre-sliding tangential deflection model of the seed report, Section 2.1.9.
 // Builds the substrate and counterface profiles, runs the quasi-static stepping (tools/pstd/stepping.hpp),
 // detects PSTD events (events.hpp), and writes CSV, JSON and PNG plots into the output folder.
+#include <cctype>
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +15,7 @@
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
 #include "tools/pstd/counterface.hpp"
+#include "tools/pstd/deck.hpp"
 #include "tools/pstd/events.hpp"
 #include "tools/pstd/output.hpp"
 #include "tools/pstd/profile_sources.hpp"
@@ -23,12 +26,14 @@ namespace tribex::cli {
 namespace {
 
 const char* usage =
-    "usage: tribex pstd [options]\n"
+    "usage: tribex pstd [DECK.i] [options]\n"
     "\n"
     "Quasi-static 2-D model of pre-sliding tangential deflection (seed report, Section 2.1.9): a rigid\n"
     "counterface of linked line scans is pressed onto a substrate line to a normal force; it advances 1 grid\n"
     "step whenever the restoring force exceeds the shear capacity tau*A, otherwise it is lifted (normal force\n"
     "reduced) until it does. Lengths and forces take units (10nm, 2um, 50uN); plain numbers are SI.\n"
+    "A deck (first argument) holds 'begin pstd' ... 'end pstd' with 'key = value' lines (keys below);\n"
+    "options after it override its values.\n"
     "\n"
     "profiles (default: seeded synthetic Gaussian-correlated lines):\n"
     "  --afm FILE              height map (Gwyddion ASCII matrix .txt): substrate = a row, segments = columns\n"
@@ -61,10 +66,24 @@ const char* usage =
     "  --pstd-length-factor X  event extent >= X a, a = mean half-width in the event (10)\n"
     "  --pstd-gap-factor X     lifts at most X a apart belong to one event (1)\n"
     "output:\n"
-    "  -o DIR                  output folder (pstd_out): trajectory.csv events.csv initial_contacts.csv\n"
+    "  -o DIR                  output folder (pstd_output): trajectory.csv events.csv initial_contacts.csv\n"
     "                          summary.json normal_force.png contacts_area.png [area_study.csv/.png]\n"
     "  --no-plots              skip the PNG plots (they need /usr/bin/python3 with matplotlib)\n"
     "  --quiet                 print nothing on success\n";
+
+/// The option named in a BadInput message ("tribex pstd --copies: ..." or "... --copies must ..."), if any.
+std::string option_in(const std::string& message, const std::map<std::string, std::string>& where) {
+  std::string best;
+  for (const auto& [option, at] : where) {
+    for (auto pos = message.find(option); pos != std::string::npos; pos = message.find(option, pos + 1)) {
+      const std::size_t end = pos + option.size();
+      const bool word_end = end == message.size() || !(std::isalnum(static_cast<unsigned char>(message[end])) ||
+                                                        message[end] == '-');
+      if (word_end && option.size() > best.size()) best = option;
+    }
+  }
+  return best;
+}
 
 using pstd::Profile;
 
@@ -157,11 +176,34 @@ std::string number(double v) {
 
 }  // namespace
 
-int pstd_command(const std::vector<std::string>& args) {
+int pstd_run(const std::vector<std::string>& args);
+
+int pstd_command(const std::vector<std::string>& cli_args) {
+  // A deck as first argument expands to options; options after it override the deck's.
+  pstd::DeckArgs deck;
+  std::vector<std::string> args = cli_args;
+  if (!args.empty() && !args[0].empty() && args[0][0] != '-') {
+    deck = pstd::read_deck(args[0]);
+    args.erase(args.begin());
+    for (const auto& option : args) deck.where.erase(option);  // overridden: errors are the command line's
+    args.insert(args.begin(), deck.args.begin(), deck.args.end());
+  }
+  try {
+    return pstd_run(args);
+  } catch (const tools::BadInput& e) {
+    const std::string option = option_in(e.what(), deck.where);
+    if (option.empty()) throw;
+    throw tools::BadInput(deck.where.at(option) + ": " + e.what());
+  }
+}
+
+int pstd_run(const std::vector<std::string>& args) {
   namespace dim = inputs::dim;
   tools::Args a(args, "tribex pstd", usage, {"--study", "--no-plots", "--quiet"});
   if (a.help_requested()) {
     std::fputs(usage, stdout);
+    std::fputs("\ndeck keys (deck key, option):\n", stdout);
+    std::fputs(pstd::deck_keys_help().c_str(), stdout);
     return tools::exit_ok;
   }
   // 1. Everything is read and checked before anything is computed or written.
@@ -181,7 +223,7 @@ int pstd_command(const std::vector<std::string>& args) {
   pstd::DetectionRule rule;
   rule.length_factor = a.real("--pstd-length-factor", rule.length_factor);
   rule.gap_factor = a.real("--pstd-gap-factor", rule.gap_factor);
-  const std::string out_dir = a.text("-o", "pstd_out");
+  const std::string out_dir = a.text("-o", "pstd_output");
   const bool plots = !a.flag("--no-plots");
   const bool quiet = a.flag("--quiet");
   if (!(dx > 0)) throw tools::BadInput("tribex pstd: --sampling must be positive (e.g. 1nm)");
