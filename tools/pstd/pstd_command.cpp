@@ -174,9 +174,9 @@ std::string number(double v) {
   return buf;
 }
 
-}  // namespace
-
 int pstd_run(const std::vector<std::string>& args);
+
+}  // namespace
 
 int pstd_command(const std::vector<std::string>& cli_args) {
   // A deck as first argument expands to options; options after it override the deck's.
@@ -196,6 +196,8 @@ int pstd_command(const std::vector<std::string>& cli_args) {
     throw tools::BadInput(deck.where.at(option) + ": " + e.what());
   }
 }
+
+namespace {
 
 int pstd_run(const std::vector<std::string>& args) {
   namespace dim = inputs::dim;
@@ -336,5 +338,7 @@ int pstd_run(const std::vector<std::string>& args) {
   }
   return tools::exit_ok;
 }
+
+}  // namespace
 
 }  // namespace tribex::cli
