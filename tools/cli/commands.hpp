@@ -14,5 +14,6 @@ int bench_command(const std::vector<std::string>& args);  // tools/bench/bench_c
 
 int gw_command(const std::vector<std::string>& args);       // tools/gw/gw_command.cpp
 int surface_command(const std::vector<std::string>& args);  // tools/surface/surface_command.cpp
+int pstd_command(const std::vector<std::string>& args);  // tools/pstd/
 
 }  // namespace tribex::cli

@@ -27,6 +27,7 @@ const std::vector<Command> commands = {
     {"bench", "benchmarks: tribex bench block --n N --element E --material M --steps S", tribex::cli::bench_command},
     {"gw", "Greenwood-Williamson models: F_n, discrete/DMT/tangential GW (CSV)", tribex::cli::gw_command},
     {"surface", "rough-surface statistics of AFM maps and McCool GW tables", tribex::cli::surface_command},
+    {"pstd", "pre-sliding tangential deflection model (report 2.1.9)", tribex::cli::pstd_command},
 };
 
 void print_usage(std::FILE* to) {

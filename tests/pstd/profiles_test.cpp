@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Profile sources of the PSTD model: the seeded synthetic line (determinism, RMS, autocorrelation), linear
+// oversampling, the text profile reader and the Gwyddion ASCII height-map reader on the real AFM sample.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "tools/common/errors.hpp"
+#include "tools/pstd/profile_sources.hpp"
+#include "tools/pstd/profiles.hpp"
+
+using namespace tribex::pstd;
+
+TEST(PstdProfiles, SyntheticLineIsDeterministicWithExactRms) {
+  const auto a = synthetic_line(4096, 10e-9, 2.7e-9, 40e-9, 7, 0);
+  const auto b = synthetic_line(4096, 10e-9, 2.7e-9, 40e-9, 7, 0);
+  const auto c = synthetic_line(4096, 10e-9, 2.7e-9, 40e-9, 8, 0);
+  const auto d = synthetic_line(4096, 10e-9, 2.7e-9, 40e-9, 7, 1);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  EXPECT_NE(a, d);
+  double mean = 0, sq = 0;
+  for (double z : a) { mean += z; sq += z * z; }
+  EXPECT_NEAR(mean / 4096, 0.0, 1e-22);
+  EXPECT_NEAR(std::sqrt(sq / 4096), 2.7e-9, 1e-21);
+}
+
+TEST(PstdProfiles, SyntheticLineHasGaussianAutocorrelation) {
+  // ACF exp(-x^2/xi^2): at lag xi it is e^-1, at 2 xi e^-4. xi = 10 samples over 2^16 samples: the standard
+  // error of the sample ACF is about sqrt(2 xi / n) ~ 0.02, so 0.06 is a 3-sigma tolerance.
+  const std::size_t n = 1 << 16;
+  const auto z = synthetic_line(n, 1.0, 1.0, 10.0, 3, 0);
+  auto acf = [&](std::size_t lag) {
+    double s = 0;
+    for (std::size_t i = 0; i < n; ++i) s += z[i] * z[(i + lag) % n];
+    return s / static_cast<double>(n);
+  };
+  EXPECT_NEAR(acf(10), std::exp(-1.0), 0.06);
+  EXPECT_NEAR(acf(20), std::exp(-4.0), 0.06);
+  EXPECT_NEAR(acf(5), std::exp(-0.25), 0.06);
+}
+
+TEST(PstdProfiles, OversamplingIsLinearAndPeriodicWrapCloses) {
+  const std::vector<double> x{0, 10, 20, 30}, z{0, 10, 30, 60};
+  const auto fine = resample(x, z, 0.0, 1.0, 40, true);
+  EXPECT_DOUBLE_EQ(fine[5], 5.0);
+  EXPECT_DOUBLE_EQ(fine[25], 45.0);
+  EXPECT_DOUBLE_EQ(fine[35], 30.0);  // halfway from 60 (x = 30) back to 0 (x = 40 == 0)
+  std::vector<double> tilted{1, 2, 3, 4, 5};
+  level(tilted);
+  for (double v : tilted) EXPECT_NEAR(v, 0.0, 1e-15);
+}
+
+TEST(PstdProfiles, ReadsProfileFilesWithUnitsAndRejectsBadOnesWithFileAndLine) {
+  const auto dir = std::filesystem::temp_directory_path() / "tribex_pstd_profiles_test";
+  std::filesystem::create_directories(dir);
+  const std::string good = (dir / "good.csv").string(), bad = (dir / "bad.csv").string(),
+                    one = (dir / "one.txt").string();
+  std::ofstream(good) << "# a profile\nx[nm],z[nm]\n0,1\n10,2\n20,-1\n";
+  std::ofstream(bad) << "x[nm],z[nm]\n0,1\n10,2\n5,oops\n";
+  std::ofstream(one) << "1e-9\n2e-9\n3e-9\n";
+  const RawProfile p = read_profile_file(good, std::nullopt);
+  ASSERT_EQ(p.z.size(), 3u);
+  EXPECT_DOUBLE_EQ(p.x[1], 10e-9);
+  EXPECT_DOUBLE_EQ(p.z[2], -1e-9);
+  try {
+    read_profile_file(bad, std::nullopt);
+    FAIL() << "expected BadInput";
+  } catch (const tribex::tools::BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find(bad + ":4:"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(read_profile_file(one, std::nullopt), tribex::tools::BadInput);  // needs --dx
+  EXPECT_DOUBLE_EQ(read_profile_file(one, 5e-9).x[2], 10e-9);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PstdProfiles, ReadsTheGwyddionMatrixSample) {
+  const HeightMap map = read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/matrix-3.txt");
+  EXPECT_EQ(map.nx, 256u);
+  EXPECT_EQ(map.ny, 256u);
+  EXPECT_NEAR(map.dx, 10e-6 / 256, 1e-15);
+  EXPECT_NEAR(map.z[0], 1.8823e-8, 1e-13);  // first value of the file
+  EXPECT_NEAR(map.z[1], 1.8497e-8, 1e-13);
+  const Profile seg = window_fine(map.column(3), 1e-6, 2e-6, 1e-9, true);
+  EXPECT_EQ(seg.z.size(), 2000u);
+  EXPECT_NEAR(seg.source_dx, 10e-6 / 256, 1e-15);
+}
