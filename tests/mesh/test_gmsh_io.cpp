@@ -153,7 +153,7 @@ TEST_F(GmshIo, RoundTripOfGeneratedMesh) {
 }
 
 /// gmsh's own mesher: OCC box 1 x 2 x 0.5, transfinite 3 x 4 x 2 intervals, recombined to hexes.
-void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false) {
+void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false, int order = 1, bool groups = true) {
   GmshSession session;
   GmshScratchModel model("test");
   gmsh::model::occ::addBox(0, 0, 0, 1.0, 2.0, 0.5);
@@ -176,6 +176,11 @@ void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false) 
     gmsh::model::mesh::setTransfiniteVolume(1);
   }
   gmsh::model::mesh::generate(3);
+  if (order > 1) gmsh::model::mesh::setOrder(order);
+  if (!groups) {
+    gmsh::write(path);
+    return;
+  }
   gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "solid");
   gmsh::vectorpair top, corner;
   gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, 0.4, 1.1, 2.1, 0.6, top, 2);
@@ -243,6 +248,24 @@ TEST_F(GmshIo, TetMeshIsRejectedWithTheFix) {
   EXPECT_NE(msg.find("Tetrahedron"), std::string::npos) << msg;
   EXPECT_NE(msg.find("all-hex8"), std::string::npos) << msg;
   EXPECT_NE(msg.find("Recombine"), std::string::npos) << msg;
+}
+
+TEST_F(GmshIo, FileWithoutPhysicalGroupsIsOneBlock) {
+  const fs::path file = scratch_dir() / "plain.msh";
+  mesh_box_with_gmsh(file.string(), true, false, 1, /*groups=*/false);
+  const Mesh m = read_gmsh(file.string());
+  ASSERT_EQ(m.blocks.size(), 1u);
+  EXPECT_EQ(m.blocks[0].name, "block_1");
+  EXPECT_EQ(m.element_count(), 24);
+  EXPECT_TRUE(m.side_sets.empty());
+}
+
+TEST_F(GmshIo, SecondOrderHexesAreRejected) {
+  const fs::path file = scratch_dir() / "hex27.msh";
+  mesh_box_with_gmsh(file.string(), true, false, /*order=*/2);
+  const std::string msg = read_error(file.string());
+  EXPECT_NE(msg.find("Hexahedron 27"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Mesh.ElementOrder = 1"), std::string::npos) << msg;
 }
 
 TEST_F(GmshIo, MissingFile) {
