@@ -5,6 +5,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -298,6 +299,31 @@ TEST_F(GmshIo, TruncatedFiles) {
       EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
     }
   }
+}
+
+// gmsh 4.8 trusts tags and counts: a huge node tag made it segfault and a huge entity count made it
+// spin for minutes in random-corruption trials. The MSH 4.1 pre-scan must turn both into MeshError.
+TEST_F(GmshIo, CorruptTagsAndCountsAreCaughtBeforeGmsh) {
+  const fs::path good = scratch_dir() / "good.msh";
+  write_gmsh(two_block_mesh(), good.string());
+  std::ifstream in(good, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto corrupt = [&](const std::string& name, const std::string& section, std::size_t offset, std::uint64_t value) {
+    std::string b = bytes;
+    const std::size_t at = b.find("\n$" + section + "\n") + section.size() + 3 + offset;
+    std::memcpy(b.data() + at, &value, sizeof value);
+    const fs::path file = scratch_dir() / name;
+    std::ofstream(file, std::ios::binary) << b;
+    return read_error(file.string());
+  };
+  // $Elements header is 4 size_t; a block header is 3 int + 1 size_t; then tag, node tags.
+  std::string msg = corrupt("node_tag.msh", "Elements", 32 + 20 + 8, std::uint64_t(1) << 40);
+  EXPECT_NE(msg.find("node_tag.msh: byte "), std::string::npos) << msg;
+  EXPECT_NE(msg.find("element node tag 1099511627776 is outside the declared range"), std::string::npos) << msg;
+  msg = corrupt("element_tag.msh", "Elements", 32 + 20, std::uint64_t(1) << 56);
+  EXPECT_NE(msg.find("element tag"), std::string::npos) << msg;
+  msg = corrupt("entities.msh", "Entities", 0, std::uint64_t(1) << 40);
+  EXPECT_NE(msg.find("entities.msh: byte "), std::string::npos) << msg;
 }
 
 TEST_F(GmshIo, QuadThatIsNoHexFaceIsRejected) {
