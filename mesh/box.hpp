@@ -15,13 +15,14 @@ struct BoxSpec {
   std::array<double, 3> size{1.0, 1.0, 1.0};    // m
   std::array<int, 3> intervals{1, 1, 1};
   /// Geometric grading: elements shrink toward this face ("xmin".."zmax"); each element is
-  /// `grading_ratio` times its neighbour nearer that face. Empty: uniform.
+  /// `grading_ratio` (>= 1) times its neighbour nearer that face. Empty: uniform (ratio must be 1).
   std::string grade_toward;
   double grading_ratio = 1.0;
 };
 
 /// One block NAME; node sets and side sets NAME_xmin, NAME_xmax, NAME_ymin, NAME_ymax,
 /// NAME_zmin, NAME_zmax; node set NAME_all. Elements are numbered x fastest, then y, then z.
+/// Throws MeshError for a bad spec (intervals < 1, size <= 0, unknown face, ratio < 1).
 Mesh generate_box(const BoxSpec& spec);
 
 }  // namespace tribex::mesh

@@ -15,6 +15,7 @@
 
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/msh_prescan.hpp"
 
 namespace tribex::mesh {
 
@@ -62,6 +63,19 @@ std::string element_type_name(int type) {
     name = "type " + std::to_string(type);
   }
   return name;
+}
+
+/// Node count of a gmsh element type, 0 if gmsh does not know it (needs a live GmshSession).
+int gmsh_nodes_per_element(int type) {
+  std::string name;
+  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
+  std::vector<double> local;
+  try {
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
+  } catch (...) {
+    return 0;
+  }
+  return num_nodes;
 }
 
 /// gmsh node tag -> our 0-based node index (dense table when tags are dense, else a hash map).
@@ -333,6 +347,7 @@ Mesh read_gmsh(const std::string& path) {
   Mesh mesh;
   {
     GmshSession session;
+    prescan_msh41(path, gmsh_nodes_per_element);  // gmsh 4.8 can crash on corrupt tags: check first
     GmshScratchModel model("read");
     std::error_code ec;
     const auto bytes = std::filesystem::file_size(path, ec);

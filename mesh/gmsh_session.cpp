@@ -22,9 +22,15 @@ GmshSession::GmshSession() {
     // readConfigFiles = false: a user's ~/.gmshrc must not change how we read or write meshes.
     char arg0[] = "tribex";
     char* argv[] = {arg0, nullptr};
-    gmsh::initialize(1, argv, false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.Verbosity", 2);  // errors and warnings only, into the logger
+    try {
+      gmsh::initialize(1, argv, false);
+      gmsh::option::setNumber("General.Terminal", 0);
+      gmsh::option::setNumber("General.Verbosity", 2);  // errors and warnings only, into the logger
+    } catch (...) {  // no destructor will run: undo the count and the lock
+      --live_sessions;
+      gmsh_mutex().unlock();
+      throw;
+    }
   }
 }
 

@@ -48,7 +48,7 @@ struct Mesh {
   const Block* find_block(const std::string& name) const;
   /// The 4 global node indices of a side, counter-clockwise seen from outside.
   std::array<int, 4> side_nodes(const Side& s) const;
-  /// Sorted unique nodes touched by a side set.
+  /// Sorted unique nodes touched by a side set; MeshError if there is no side set `name`.
   std::vector<int> side_set_nodes(const std::string& name) const;
 };
 

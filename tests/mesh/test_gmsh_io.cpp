@@ -5,6 +5,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -153,7 +154,7 @@ TEST_F(GmshIo, RoundTripOfGeneratedMesh) {
 }
 
 /// gmsh's own mesher: OCC box 1 x 2 x 0.5, transfinite 3 x 4 x 2 intervals, recombined to hexes.
-void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false) {
+void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false, int order = 1, bool groups = true) {
   GmshSession session;
   GmshScratchModel model("test");
   gmsh::model::occ::addBox(0, 0, 0, 1.0, 2.0, 0.5);
@@ -176,6 +177,11 @@ void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false) 
     gmsh::model::mesh::setTransfiniteVolume(1);
   }
   gmsh::model::mesh::generate(3);
+  if (order > 1) gmsh::model::mesh::setOrder(order);
+  if (!groups) {
+    gmsh::write(path);
+    return;
+  }
   gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "solid");
   gmsh::vectorpair top, corner;
   gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, 0.4, 1.1, 2.1, 0.6, top, 2);
@@ -245,6 +251,24 @@ TEST_F(GmshIo, TetMeshIsRejectedWithTheFix) {
   EXPECT_NE(msg.find("Recombine"), std::string::npos) << msg;
 }
 
+TEST_F(GmshIo, FileWithoutPhysicalGroupsIsOneBlock) {
+  const fs::path file = scratch_dir() / "plain.msh";
+  mesh_box_with_gmsh(file.string(), true, false, 1, /*groups=*/false);
+  const Mesh m = read_gmsh(file.string());
+  ASSERT_EQ(m.blocks.size(), 1u);
+  EXPECT_EQ(m.blocks[0].name, "block_1");
+  EXPECT_EQ(m.element_count(), 24);
+  EXPECT_TRUE(m.side_sets.empty());
+}
+
+TEST_F(GmshIo, SecondOrderHexesAreRejected) {
+  const fs::path file = scratch_dir() / "hex27.msh";
+  mesh_box_with_gmsh(file.string(), true, false, /*order=*/2);
+  const std::string msg = read_error(file.string());
+  EXPECT_NE(msg.find("Hexahedron 27"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Mesh.ElementOrder = 1"), std::string::npos) << msg;
+}
+
 TEST_F(GmshIo, MissingFile) {
   const std::string path = (scratch_dir() / "nope.msh").string();
   const std::string msg = read_error(path);
@@ -275,6 +299,31 @@ TEST_F(GmshIo, TruncatedFiles) {
       EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
     }
   }
+}
+
+// gmsh 4.8 trusts tags and counts: a huge node tag made it segfault and a huge entity count made it
+// spin for minutes in random-corruption trials. The MSH 4.1 pre-scan must turn both into MeshError.
+TEST_F(GmshIo, CorruptTagsAndCountsAreCaughtBeforeGmsh) {
+  const fs::path good = scratch_dir() / "good.msh";
+  write_gmsh(two_block_mesh(), good.string());
+  std::ifstream in(good, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto corrupt = [&](const std::string& name, const std::string& section, std::size_t offset, std::uint64_t value) {
+    std::string b = bytes;
+    const std::size_t at = b.find("\n$" + section + "\n") + section.size() + 3 + offset;
+    std::memcpy(b.data() + at, &value, sizeof value);
+    const fs::path file = scratch_dir() / name;
+    std::ofstream(file, std::ios::binary) << b;
+    return read_error(file.string());
+  };
+  // $Elements header is 4 size_t; a block header is 3 int + 1 size_t; then tag, node tags.
+  std::string msg = corrupt("node_tag.msh", "Elements", 32 + 20 + 8, std::uint64_t(1) << 40);
+  EXPECT_NE(msg.find("node_tag.msh: byte "), std::string::npos) << msg;
+  EXPECT_NE(msg.find("element node tag 1099511627776 is outside the declared range"), std::string::npos) << msg;
+  msg = corrupt("element_tag.msh", "Elements", 32 + 20, std::uint64_t(1) << 56);
+  EXPECT_NE(msg.find("element tag"), std::string::npos) << msg;
+  msg = corrupt("entities.msh", "Entities", 0, std::uint64_t(1) << 40);
+  EXPECT_NE(msg.find("entities.msh: byte "), std::string::npos) << msg;
 }
 
 TEST_F(GmshIo, QuadThatIsNoHexFaceIsRejected) {
