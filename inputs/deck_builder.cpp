@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "inputs/deck_builder.hpp"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
 
 #include "inputs/did_you_mean.hpp"
+#include "inputs/lexer.hpp"
 
 namespace tribex::inputs {
 namespace {
@@ -331,6 +334,8 @@ class Builder {
         b.tangential_coefficient = real(c, "tangential coefficient", 1.0);
         b.where = c.where;
         r.silent_boundaries.push_back(b);
+      } else if (t == "contact definition") {
+        r.contact = contact(c);
       } else if (t == "results output") {
         ResultsOutputSpec o;
         schedule(c, o);
@@ -346,6 +351,60 @@ class Builder {
       }
     }
     return r;
+  }
+
+  // `begin contact definition`: surfaces from `contact surface NAME contains SIDESET...` lines,
+  // interactions naming two of them.
+  ContactSpec contact(const Scope& c) {
+    ContactSpec spec;
+    spec.name = c.name;
+    spec.where = c.where;
+    for (const auto& k : c.keys) {
+      if (k.schema->name != "contact surface" || !k.value) continue;
+      const auto& w = k.value->words;
+      if (w.size() < 3 || lower(w[1]) != "contains") {
+        error(k.where, c, "write 'contact surface NAME contains SIDESET [SIDESET ...]'");
+        continue;
+      }
+      for (const auto& existing : spec.surfaces)
+        if (existing.name == w[0]) error(k.where, c, "contact surface '" + w[0] + "' is defined twice (first at " + line_of(existing.where) + ")");
+      spec.surfaces.push_back({w[0], std::vector<std::string>(w.begin() + 2, w.end()), k.where});
+    }
+    spec.penalty_scale_factor = real(c, "penalty scale factor", 1.0);
+    spec.search_margin = optional_real(c, "search margin");
+    spec.initial_overlap_tolerance = optional_real(c, "initial overlap tolerance");
+    if (auto axis = get(c, "contact axis"); axis && axis->numbers.size() == 6) {
+      std::array<double, 6> a{};
+      std::copy(axis->numbers.begin(), axis->numbers.end(), a.begin());
+      if (a[3] == 0.0 && a[4] == 0.0 && a[5] == 0.0) error(where(c, "contact axis"), c, "the axis direction (last three numbers) must not be zero");
+      spec.axis = a;
+    }
+    std::vector<std::string> names;
+    for (const auto& sf : spec.surfaces) names.push_back(sf.name);
+    for (const Scope* it : c.children_of("interaction")) {
+      InteractionSpec i;
+      i.name = it->name;
+      i.where = it->where;
+      const auto w = words(*it, "surfaces");
+      if (w.size() != 2) {
+        error(where(*it, "surfaces"), *it, "'surfaces' takes two contact surface names: SLAVE MASTER");
+      } else {
+        i.slave = w[0];
+        i.master = w[1];
+        for (const auto& n : w)
+          if (std::find(names.begin(), names.end(), n) == names.end()) {
+            const std::string hint = closest_match(n, names);
+            error(where(*it, "surfaces"), *it, "no contact surface named '" + n + "'" +
+                      (hint.empty() ? "" : "; did you mean '" + hint + "'?") + "; defined: " +
+                      (names.empty() ? std::string("none") : join_choices(names)));
+          }
+        if (w[0] == w[1]) error(where(*it, "surfaces"), *it, "an interaction needs two different surfaces");
+      }
+      i.model = InteractionModel::frictionless;
+      if (auto v = get(*it, "symmetric")) i.symmetric = v->flag;
+      spec.interactions.push_back(i);
+    }
+    return spec;
   }
 
   template <class Output>

@@ -343,7 +343,7 @@ class TreeBuilder {
       return;
     }
     for (const auto& existing : top.keys) {
-      if (existing.schema == key) {
+      if (existing.schema == key && !key->repeatable) {
         sink_.error(line.where(), top.path,
                     "duplicate key '" + key->name + "' (first at " + existing.where.file + ":" +
                         std::to_string(existing.where.line) + "); give it once");

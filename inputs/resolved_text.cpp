@@ -24,6 +24,11 @@ void emit(const Scope& s, const Scope* parent, int depth, std::string& out) {
   out += indent + "begin " + header + "\n";
   for (const auto& key : s.schema->keys) {
     if (!key.in_resolved_text) continue;
+    if (key.repeatable) {
+      for (const auto& k : s.keys)
+        if (k.schema == &key && k.value) out += indent + "  " + key.name + " " + format_value(key, *k.value) + "\n";
+      continue;
+    }
     std::optional<Value> v;
     if (const KeyLine* k = s.find(key.name)) {
       v = k->value;

@@ -71,6 +71,12 @@ KeySchema quantity(std::string name, std::string def, std::string help) {
   return k;
 }
 
+KeySchema boolean_key(std::string name, std::string def, std::string help) {
+  KeySchema k = text(std::move(name), ValueKind::boolean, false, std::move(help));
+  k.default_text = std::move(def);
+  return k;
+}
+
 const std::vector<std::string> components{"x", "y", "z"};
 const std::vector<std::string> faces{"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
 const std::vector<std::string> models{"elastic", "neo_hookean"};
@@ -176,9 +182,34 @@ std::vector<BlockSchema> build_table() {
                 {"initial velocity"},
                 {"pressure"},
                 {"silent boundary"},
+                {"contact definition", 0, 1},
                 {"results output", 0, 1},
                 {"history output", 0, 1}},
                false, "boundary conditions and output"});
+
+  {
+    KeySchema surface = text("contact surface", ValueKind::strings, true,
+                             "NAME contains SIDESET [SIDESET ...] (one line per surface)");
+    surface.repeatable = true;
+    t.push_back({"contact definition", NameRule::optional, {}, {}, true,
+                 {surface,
+                  real("penalty scale factor", dim::none, {0.0, 2.0, true, false}, false, "1",
+                       "k_p dt^2 / m_eff of the penalty springs"),
+                  real("search margin", dim::length, positive(), false, "",
+                       "capture distance of the contact search (default: mean face edge)"),
+                  reals("contact axis", dim::length, 6, Range{}, false, "",
+                        "px py pz dx dy dz: point and direction for contact_radius_max"),
+                  real("initial overlap tolerance", dim::length, non_negative(), false, "",
+                       "largest overlap accepted at t = 0 (default: 1 % of the mean face edge)")},
+                 {{"interaction", 1, unlimited}},
+                 false, "contact surfaces and their interactions (physics.md 5)"});
+  }
+  t.push_back({"interaction", NameRule::required, {}, {}, true,
+               {text("surfaces", ValueKind::strings, true, "SLAVE MASTER (the slave is the finer surface)"),
+                choice("model", ValueKind::enumeration, {"frictionless"}, false, "frictionless", "interaction model"),
+                boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved")},
+               {},
+               false, "one pair of contact surfaces and its model"});
 
   t.push_back({"fixed displacement", NameRule::none, {}, {}, false,
                {text("node set", ValueKind::string, true, "a node set of the mesh"),
@@ -221,7 +252,9 @@ std::vector<BlockSchema> build_table() {
     BlockSchema results{"results output", NameRule::required, {}, {}, true, output_schedule(), {}, false,
                         "results.h5 + results.xdmf"};
     results.keys.push_back(choice("nodal variables", ValueKind::enumerations,
-                                  {"displacement", "velocity", "force", "acceleration"}, false, "", "nodal fields"));
+                                  {"displacement", "velocity", "force", "acceleration", "contact_traction",
+                                   "contact_status"},
+                                  false, "", "nodal fields"));
     results.keys.push_back(
         choice("element variables", ValueKind::enumerations, {"stress"}, false, "", "element fields"));
     t.push_back(results);

@@ -54,6 +54,7 @@ struct KeySchema {
   std::string default_text;  // in deck syntax; empty: no default (optional key stays unset)
   bool any_dimension = false;  // unit keys: the dimension is checked where the value is used
   bool in_resolved_text = true;  // false: folded into other values in the resolved text
+  bool repeatable = false;       // may be given on several lines (`contact surface A contains ...`)
   std::string help;
 };
 
