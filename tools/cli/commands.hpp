@@ -8,5 +8,7 @@
 
 namespace tribex::cli {
 
+/// tools/friction_test/command.cpp: `tribex friction-test calibrate|static|dynamic|synth`.
+int friction_test_command(const std::vector<std::string>& args);
 
 }  // namespace tribex::cli

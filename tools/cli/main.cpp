@@ -22,6 +22,7 @@ struct Command {
 };
 
 const std::vector<Command> commands = {
+    {"friction-test", "friction-test data reduction: spring calibration, mu_s, mu_d", tribex::cli::friction_test_command},
 };
 
 void print_usage(std::FILE* to) {

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+#include "tools/friction_test/dynamic_friction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "tools/common/errors.hpp"
+#include "tools/friction_test/calibration.hpp"
+
+namespace tribex::friction_test {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// First guesses from the record itself. x_eq: the middle of the largest swing; omega_d: mean
+// crossings; sigma and delta: successive extreme amplitudes A_n about x_eq obey
+// A_{n+1} = rho A_n - delta (1 + rho), rho = exp(-sigma pi / omega_d) (one half cycle of the
+// closed form in oscillator.hpp), a straight line in (A_n, A_{n+1}).
+struct Guess {
+  double x_eq, omega_d, sigma, delta;
+};
+
+Guess first_guess(const std::vector<double>& t, const std::vector<double>& x, const std::string& what) {
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  Guess g{};
+  g.x_eq = 0.5 * (*lo + *hi);
+  const double half_range = 0.5 * (*hi - *lo);
+  g.omega_d = crossing_frequency(t, x, g.x_eq, 0.05 * half_range);
+  if (g.omega_d <= 0)
+    throw tools::BadInput(what + ": the position does not oscillate about its mid-range (fewer than 3 crossings); "
+                          "a dynamic-friction record must start at the slip and cover several cycles");
+  // Extremes: largest |x - x_eq| in each half period window.
+  const double half_period = pi / g.omega_d;
+  std::vector<double> amps;
+  std::size_t i = 0;
+  while (i < t.size()) {
+    const double end = t[i] + half_period;
+    double best = 0;
+    for (; i < t.size() && t[i] < end; ++i) best = std::max(best, std::abs(x[i] - g.x_eq));
+    amps.push_back(best);
+  }
+  // Keep the decaying part (stop once a swing no longer decreases: stuck).
+  std::size_t keep = 1;
+  while (keep < amps.size() && amps[keep] < amps[keep - 1]) ++keep;
+  g.sigma = 0.0;
+  g.delta = 0.0;
+  if (keep >= 4) {
+    std::vector<double> a0(amps.begin(), amps.begin() + static_cast<long>(keep) - 1),
+        a1(amps.begin() + 1, amps.begin() + static_cast<long>(keep));
+    const FitResult line = fit_line(a0, a1);
+    const double rho = std::clamp(line.parameters(1), 0.05, 0.9999);
+    g.sigma = -std::log(rho) * g.omega_d / pi;
+    g.delta = std::max(0.0, -line.parameters(0) / (1 + rho));
+  }
+  if (g.delta <= 0) g.delta = 0.01 * half_range;
+  if (g.sigma <= 0) g.sigma = 1e-3 * g.omega_d;
+  return g;
+}
+
+}  // namespace
+
+DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& x, const Calibration& cal,
+                       const std::string& what) {
+  const std::size_t n = t.size();
+  if (n < 30) throw tools::BadInput(what + ": " + std::to_string(n) + " samples; a dynamic fit needs at least 30");
+  const Guess g = first_guess(t, x, what);
+
+  // Start state: x0 from the first sample, v0 from a least-squares line through the first samples
+  // (a sixteenth of a cycle), good enough for LM to take over.
+  const double dt_avg = (t.back() - t.front()) / static_cast<double>(n - 1);
+  const std::size_t m = std::clamp<std::size_t>(static_cast<std::size_t>(pi / 8 / g.omega_d / dt_avg), 3, n);
+  std::vector<double> ts(t.begin(), t.begin() + static_cast<long>(m)), xs(x.begin(), x.begin() + static_cast<long>(m));
+  const FitResult v_line = fit_line(ts, xs);
+  const double v0 = v_line.parameters(1);
+
+  // Static friction F_s > F_d stops the device earlier than pure Coulomb friction would. A
+  // record cannot pin F_s down (any value between the last two reversal swings gives the same
+  // stop), so when the record ends at rest (the last half period moves less than 3% of the first)
+  // the model sticks at a reversal within |x_rest - x_eq| + delta: below the previous swing,
+  // which is at least 2 delta larger, and above the final one.
+  const double first_range = [&] {
+    double lo = x.front(), hi = x.front();
+    for (std::size_t i = 0; i < n && t[i] - t.front() < pi / g.omega_d; ++i) lo = std::min(lo, x[i]), hi = std::max(hi, x[i]);
+    return hi - lo;
+  }();
+  double tail_lo = x.back(), tail_hi = x.back(), tail_sum = 0;
+  std::size_t tail_n = 0;
+  for (std::size_t i = n; i-- > 0 && t.back() - t[i] < pi / g.omega_d;) {
+    tail_lo = std::min(tail_lo, x[i]);
+    tail_hi = std::max(tail_hi, x[i]);
+    tail_sum += x[i];
+    ++tail_n;
+  }
+  const bool ends_at_rest = tail_n >= 5 && tail_hi - tail_lo < 0.03 * first_range;
+  const double x_rest = tail_sum / static_cast<double>(std::max<std::size_t>(tail_n, 1));
+
+  auto params = [&](const Eigen::VectorXd& p) {
+    OscillatorParams o;
+    o.omega0 = p(0);
+    o.sigma = p(1);
+    o.coulomb_offset = p(2);
+    o.stick_offset = ends_at_rest ? std::max(p(2), std::abs(x_rest - p(3)) + p(2)) : p(2);
+    o.x_eq = p(3);
+    return o;
+  };
+  auto residuals = [&](const Eigen::VectorXd& p) -> std::optional<Eigen::VectorXd> {
+    std::vector<double> model;
+    if (!oscillator_positions(params(p), {t.front(), p(4), p(5)}, t, model)) return std::nullopt;
+    Eigen::VectorXd r(static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i) r(static_cast<Eigen::Index>(i)) = model[i] - x[i];
+    return r;
+  };
+  const double half_range = 0.5 * (*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
+  Eigen::VectorXd start(6), scale(6);
+  start << std::sqrt(g.omega_d * g.omega_d + g.sigma * g.sigma), g.sigma, g.delta, g.x_eq, x.front(), v0;
+  scale << g.omega_d, g.omega_d * 1e-2, half_range * 1e-2, half_range, half_range, half_range * g.omega_d;
+  DynamicFit out;
+  out.fit = levenberg_marquardt(residuals, start, scale);
+  const auto& p = out.fit.parameters;
+  const auto& c = out.fit.covariance;
+  out.oscillator = params(p);
+  out.start = {t.front(), p(4), p(5)};
+  out.omega0_sigma = std::sqrt(c(0, 0));
+  out.sigma_sigma = std::sqrt(c(1, 1));
+  out.coulomb_offset_sigma = std::sqrt(c(2, 2));
+  out.x_eq_sigma = std::sqrt(c(3, 3));
+  out.rms_residual = out.fit.rms_residual;
+  out.samples = n;
+  out.ends_at_rest = ends_at_rest;
+  oscillator_positions(out.oscillator, out.start, t, out.model);
+
+  const double w = p(0), s = p(1), d = p(2);
+  const double rel_w = out.omega0_sigma / w, rel_s = s > 0 ? out.sigma_sigma / s : 0.0,
+               rel_d = d > 0 ? out.coulomb_offset_sigma / d : 0.0;
+  out.quality = s > 0 ? w / (2 * s) : 0.0;
+  if (cal.stiffness > 0) {
+    const double rel_k = cal.stiffness_sigma / cal.stiffness;
+    out.stiffness = cal.stiffness;
+    out.stiffness_sigma = cal.stiffness_sigma;
+    out.mass = cal.stiffness / (w * w);
+    out.mass_sigma = out.mass * std::hypot(rel_k, 2 * rel_w);
+    out.friction_force = cal.stiffness * d;
+    out.friction_force_sigma = out.friction_force * std::hypot(rel_k, rel_d);
+    out.damping = 2 * cal.stiffness * s / (w * w);
+    out.damping_sigma = out.damping * std::sqrt(rel_k * rel_k + rel_s * rel_s + 4 * rel_w * rel_w);
+  } else {
+    const double rel_m = cal.mass_sigma / cal.mass;
+    out.mass = cal.mass;
+    out.mass_sigma = cal.mass_sigma;
+    out.stiffness = cal.mass * w * w;
+    out.stiffness_sigma = out.stiffness * std::hypot(rel_m, 2 * rel_w);
+    out.friction_force = out.stiffness * d;
+    // F_d = m w^2 delta: w and delta come from the same fit; their correlation is small next to
+    // the mass term but is kept: var(ln F) = rel_m^2 + 4 rel_w^2 + rel_d^2 + 4 corr rel_w rel_d.
+    const double corr = out.fit.correlation(0, 2);
+    out.friction_force_sigma =
+        out.friction_force * std::sqrt(std::max(0.0, rel_m * rel_m + 4 * rel_w * rel_w + rel_d * rel_d +
+                                                        4 * corr * rel_w * rel_d));
+    out.damping = 2 * cal.mass * s;
+    out.damping_sigma = out.damping * std::hypot(rel_m, rel_s);
+  }
+  return out;
+}
+
+LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force) {
+  const FitResult line = fit_line(normal_force, friction_force);
+  LoadLine out;
+  const double a = line.parameters(0), b = line.parameters(1);
+  const auto& c = line.covariance;
+  out.mu_d = b;
+  out.mu_d_sigma = std::sqrt(c(1, 1));
+  out.intercept = a;
+  out.intercept_sigma = std::sqrt(c(0, 0));
+  out.adhesion_force = a / b;
+  const double ga = 1 / b, gb = -a / (b * b);
+  out.adhesion_force_sigma = std::sqrt(std::max(0.0, ga * ga * c(0, 0) + gb * gb * c(1, 1) + 2 * ga * gb * c(0, 1)));
+  out.rms_residual = line.rms_residual;
+  return out;
+}
+
+}  // namespace tribex::friction_test
