@@ -9,23 +9,27 @@
 
 namespace tribex::friction_test {
 
-double crossing_frequency(const std::vector<double>& t, const std::vector<double>& x, double centre, double band) {
-  // Crossings of the centre line, counted only after leaving the +-band, located by linear interpolation.
-  std::vector<double> crossings;
+std::vector<std::size_t> centre_crossings(const std::vector<double>& x, double centre, double band) {
+  std::vector<std::size_t> out;
   int side = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double d = x[i] - centre;
     const int now = d > band ? 1 : (d < -band ? -1 : 0);
     if (now != 0 && side != 0 && now != side) {
-      // find the last sign change of d between the previous side and i
-      std::size_t j = i;
+      std::size_t j = i;  // walk back to the last sample still on the old side
       while (j > 0 && (x[j - 1] - centre) * now > 0) --j;
-      if (j > 0) {
-        const double d0 = x[j - 1] - centre, d1 = x[j] - centre;
-        crossings.push_back(t[j - 1] + (t[j] - t[j - 1]) * d0 / (d0 - d1));
-      }
+      if (j > 0) out.push_back(j);
     }
     if (now != 0) side = now;
+  }
+  return out;
+}
+
+double crossing_frequency(const std::vector<double>& t, const std::vector<double>& x, double centre, double band) {
+  std::vector<double> crossings;  // located by linear interpolation
+  for (std::size_t j : centre_crossings(x, centre, band)) {
+    const double d0 = x[j - 1] - centre, d1 = x[j] - centre;
+    crossings.push_back(t[j - 1] + (t[j] - t[j - 1]) * d0 / (d0 - d1));
   }
   if (crossings.size() < 3) return 0.0;
   return std::numbers::pi * static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());

@@ -49,6 +49,9 @@ Stiffness stiffness_from_frequency(double omega0, double omega0_sigma, double ma
 double folded_spring_stiffness(double youngs_modulus, double thickness, double width, double length,
                                int folds = 4);
 
+/// Indices j where x crosses `centre` between samples j-1 and j, counted only after leaving the
+/// +-band on the other side (hysteresis against noise).
+std::vector<std::size_t> centre_crossings(const std::vector<double>& x, double centre, double band);
 /// First guesses of omega_d from mean crossings (with hysteresis): 0 when fewer than 3 crossings.
 double crossing_frequency(const std::vector<double>& t, const std::vector<double>& x, double centre, double band);
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <cstdio>
+#include <cstdlib>
 
 #include "tools/common/errors.hpp"
 #include "tools/friction_test/calibration.hpp"
@@ -13,10 +15,12 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// First guesses from the record itself. x_eq: the middle of the largest swing; omega_d: mean
-// crossings; sigma and delta: successive extreme amplitudes A_n about x_eq obey
-// A_{n+1} = rho A_n - delta (1 + rho), rho = exp(-sigma pi / omega_d) (one half cycle of the
-// closed form in oscillator.hpp), a straight line in (A_n, A_{n+1}).
+// First guesses from the record itself. omega_d: centre crossings. Then the reversal extremes
+// e_n (the largest |x - centre| between successive crossings) obey, by one half cycle of the
+// closed form in oscillator.hpp with a_n = e_n - x_eq and rho = exp(-sigma pi / omega_d),
+//     a_{n+1} = -rho a_n + sign(a_n) delta (1 + rho),
+// i.e. e_{n+1} = x_eq (1 + rho) - rho e_n + sign(a_n) delta (1 + rho): linear least squares in
+// (x_eq (1 + rho), rho, delta (1 + rho)) gives x_eq, sigma and delta.
 struct Guess {
   double x_eq, omega_d, sigma, delta;
 };
@@ -24,37 +28,40 @@ struct Guess {
 Guess first_guess(const std::vector<double>& t, const std::vector<double>& x, const std::string& what) {
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
   Guess g{};
-  g.x_eq = 0.5 * (*lo + *hi);
-  const double half_range = 0.5 * (*hi - *lo);
-  g.omega_d = crossing_frequency(t, x, g.x_eq, 0.05 * half_range);
+  const double centre = 0.5 * (*lo + *hi), half_range = 0.5 * (*hi - *lo);
+  g.x_eq = centre;
+  g.omega_d = crossing_frequency(t, x, centre, 0.05 * half_range);
   if (g.omega_d <= 0)
     throw tools::BadInput(what + ": the position does not oscillate about its mid-range (fewer than 3 crossings); "
                           "a dynamic-friction record must start at the slip and cover several cycles");
-  // Extremes: largest |x - x_eq| in each half period window.
-  const double half_period = pi / g.omega_d;
-  std::vector<double> amps;
-  std::size_t i = 0;
-  while (i < t.size()) {
-    const double end = t[i] + half_period;
-    double best = 0;
-    for (; i < t.size() && t[i] < end; ++i) best = std::max(best, std::abs(x[i] - g.x_eq));
-    amps.push_back(best);
+  const auto cross = centre_crossings(x, centre, 0.05 * half_range);
+  std::vector<double> extremes, signs;
+  for (std::size_t c = 0; c + 1 < cross.size(); ++c) {
+    std::size_t best = cross[c];
+    for (std::size_t i = cross[c]; i < cross[c + 1]; ++i)
+      if (std::abs(x[i] - centre) > std::abs(x[best] - centre)) best = i;
+    extremes.push_back(x[best]);
+    signs.push_back(x[best] > centre ? 1.0 : -1.0);
   }
-  // Keep the decaying part (stop once a swing no longer decreases: stuck).
-  std::size_t keep = 1;
-  while (keep < amps.size() && amps[keep] < amps[keep - 1]) ++keep;
-  g.sigma = 0.0;
-  g.delta = 0.0;
-  if (keep >= 4) {
-    std::vector<double> a0(amps.begin(), amps.begin() + static_cast<long>(keep) - 1),
-        a1(amps.begin() + 1, amps.begin() + static_cast<long>(keep));
-    const FitResult line = fit_line(a0, a1);
-    const double rho = std::clamp(line.parameters(1), 0.05, 0.9999);
+  g.sigma = 1e-3 * g.omega_d;
+  g.delta = 0.01 * half_range;
+  if (extremes.size() >= 4) {
+    const auto m = static_cast<Eigen::Index>(extremes.size() - 1);
+    Eigen::MatrixXd a(m, 3);
+    Eigen::VectorXd b(m);
+    for (Eigen::Index k = 0; k < m; ++k) {
+      const auto u = static_cast<std::size_t>(k);
+      a(k, 0) = 1.0;
+      a(k, 1) = -extremes[u];
+      a(k, 2) = signs[u];
+      b(k) = extremes[u + 1];
+    }
+    const Eigen::Vector3d q = a.colPivHouseholderQr().solve(b);
+    const double rho = std::clamp(q(1), 0.05, 0.9999);
+    g.x_eq = q(0) / (1 + rho);
     g.sigma = -std::log(rho) * g.omega_d / pi;
-    g.delta = std::max(0.0, -line.parameters(0) / (1 + rho));
+    if (q(2) > 0) g.delta = q(2) / (1 + rho);
   }
-  if (g.delta <= 0) g.delta = 0.01 * half_range;
-  if (g.sigma <= 0) g.sigma = 1e-3 * g.omega_d;
   return g;
 }
 
@@ -66,13 +73,21 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
   if (n < 30) throw tools::BadInput(what + ": " + std::to_string(n) + " samples; a dynamic fit needs at least 30");
   const Guess g = first_guess(t, x, what);
 
-  // Start state: x0 from the first sample, v0 from a least-squares line through the first samples
-  // (a sixteenth of a cycle), good enough for LM to take over.
+  // Start state: a parabola x0 + v0 tau + b tau^2 through the first eighth of a cycle (error
+  // O(tau^3) of the motion), good enough for LM to take over.
   const double dt_avg = (t.back() - t.front()) / static_cast<double>(n - 1);
-  const std::size_t m = std::clamp<std::size_t>(static_cast<std::size_t>(pi / 8 / g.omega_d / dt_avg), 3, n);
-  std::vector<double> ts(t.begin(), t.begin() + static_cast<long>(m)), xs(x.begin(), x.begin() + static_cast<long>(m));
-  const FitResult v_line = fit_line(ts, xs);
-  const double v0 = v_line.parameters(1);
+  const auto m = static_cast<Eigen::Index>(std::clamp<std::size_t>(static_cast<std::size_t>(pi / 4 / g.omega_d / dt_avg), 4, n));
+  Eigen::MatrixXd pa(m, 3);
+  Eigen::VectorXd pb(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const double tau = (t[static_cast<std::size_t>(i)] - t.front()) * g.omega_d;
+    pa(i, 0) = 1;
+    pa(i, 1) = tau;
+    pa(i, 2) = tau * tau;
+    pb(i) = x[static_cast<std::size_t>(i)];
+  }
+  const Eigen::Vector3d parabola = pa.colPivHouseholderQr().solve(pb);
+  const double x0 = parabola(0), v0 = parabola(1) * g.omega_d;
 
   // Static friction F_s > F_d stops the device earlier than pure Coulomb friction would. A
   // record cannot pin F_s down (any value between the last two reversal swings gives the same
@@ -113,10 +128,12 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
   };
   const double half_range = 0.5 * (*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
   Eigen::VectorXd start(6), scale(6);
-  start << std::sqrt(g.omega_d * g.omega_d + g.sigma * g.sigma), g.sigma, g.delta, g.x_eq, x.front(), v0;
+  start << std::sqrt(g.omega_d * g.omega_d + g.sigma * g.sigma), g.sigma, g.delta, g.x_eq, x0, v0;
   scale << g.omega_d, g.omega_d * 1e-2, half_range * 1e-2, half_range, half_range, half_range * g.omega_d;
   DynamicFit out;
+  if (std::getenv("FT_DEBUG")) std::fprintf(stderr, "guess w=%g s=%g d=%g xe=%g x0=%g v0=%g rest=%d xr=%g\n", start(0), start(1), start(2), start(3), start(4), start(5), ends_at_rest, x_rest);
   out.fit = levenberg_marquardt(residuals, start, scale);
+  if (std::getenv("FT_DEBUG")) std::fprintf(stderr, "fit w=%g s=%g d=%g xe=%g x0=%g v0=%g it=%d rms=%g\n", out.fit.parameters(0), out.fit.parameters(1), out.fit.parameters(2), out.fit.parameters(3), out.fit.parameters(4), out.fit.parameters(5), out.fit.iterations, out.fit.rms_residual);
   const auto& p = out.fit.parameters;
   const auto& c = out.fit.covariance;
   out.oscillator = params(p);
