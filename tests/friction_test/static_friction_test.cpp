@@ -44,7 +44,7 @@ TEST_P(StaticRecovery, RecoversMuSAndAdhesionWithinUncertainty) {
   std::vector<double> fn;
   for (double volts : v) fn.push_back(s.clamp.normal_force(volts));
   const StaticFit f = fit_static(detect_slips(x, fn, s.stiffness, 0.0, 0.5e-6), c.name, 0.5e-6);
-  EXPECT_GE(f.events.size(), 8u);
+  EXPECT_GE(f.events.size(), 5u);
   // 3 sigma with fixed seeds; sigma itself must be at or below the report's +-0.01.
   EXPECT_NEAR(f.mu_s, c.mu_s, 3 * f.mu_s_sigma);
   EXPECT_LT(f.mu_s_sigma, 0.01);

@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <cstdio>
-#include <cstdlib>
 
 #include "tools/common/errors.hpp"
 #include "tools/friction_test/calibration.hpp"
@@ -131,9 +129,7 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
   start << std::sqrt(g.omega_d * g.omega_d + g.sigma * g.sigma), g.sigma, g.delta, g.x_eq, x0, v0;
   scale << g.omega_d, g.omega_d * 1e-2, half_range * 1e-2, half_range, half_range, half_range * g.omega_d;
   DynamicFit out;
-  if (std::getenv("FT_DEBUG")) std::fprintf(stderr, "guess w=%g s=%g d=%g xe=%g x0=%g v0=%g rest=%d xr=%g\n", start(0), start(1), start(2), start(3), start(4), start(5), ends_at_rest, x_rest);
   out.fit = levenberg_marquardt(residuals, start, scale);
-  if (std::getenv("FT_DEBUG")) std::fprintf(stderr, "fit w=%g s=%g d=%g xe=%g x0=%g v0=%g it=%d rms=%g\n", out.fit.parameters(0), out.fit.parameters(1), out.fit.parameters(2), out.fit.parameters(3), out.fit.parameters(4), out.fit.parameters(5), out.fit.iterations, out.fit.rms_residual);
   const auto& p = out.fit.parameters;
   const auto& c = out.fit.covariance;
   out.oscillator = params(p);
