@@ -58,20 +58,24 @@ INSTANTIATE_TEST_SUITE_P(
                       DynamicCase{"fotas_1nm", 0.38, 50, 112e-9, 0.0, 12e-6, 1e-9, 22},
                       DynamicCase{"fotas_stuck", 0.38, 50, 112e-9, 136e-9, 12e-6, 10e-9, 23},
                       DynamicCase{"light_friction_q20", 0.40, 20, 30e-9, 0.0, 5e-6, 10e-9, 24},
-                      DynamicCase{"stiff_q200", 4.5, 200, 400e-9, 0.0, 4e-6, 1e-9, 25}));
+                      DynamicCase{"stiff_q200", 4.5, 200, 400e-9, 0.0, 4e-6, 1e-9, 25},
+                      DynamicCase{"fotas_long_release", 0.38, 50, 56e-9, 68e-9, 20e-6, 10e-9, 26}));
 
 // Fig. 2.11: F_d against applied load (tensile loads negative) is a line whose intercept at zero
 // load, mu_d F_adh, is positive: friction under tensile load. FOTAS numbers as above.
 TEST(DynamicFriction, LoadLineRecoversMuDAndAPositiveIntercept) {
   const double mu_d = 0.28, adhesion = 0.4e-6;
-  std::vector<double> loads{-0.2e-6, 0.0, 0.3e-6, 0.6e-6, 1.0e-6}, fd;
+  std::vector<double> loads{-0.2e-6, 0.0, 0.3e-6, 0.6e-6, 1.0e-6}, fd, fd_sigma;
   std::uint64_t seed = 31;
   for (double load : loads) {
     OscillatorSetup s;
-    DynamicCase c{"load", 0.38, 50, mu_d * (load + adhesion), 0.0, 20e-6, 10e-9, seed++};
-    fd.push_back(fit_case(c, s).friction_force);
+    const double f_d = mu_d * (load + adhesion);
+    DynamicCase c{"load", 0.38, 50, f_d, f_d * 0.34 / 0.28, 20e-6, 10e-9, seed++};  // mu_s = 0.34 holds it at the end
+    const DynamicFit f = fit_case(c, s);
+    fd.push_back(f.friction_force);
+    fd_sigma.push_back(f.friction_force_sigma);
   }
-  const LoadLine line = fit_load_line(loads, fd);
+  const LoadLine line = fit_load_line(loads, fd, fd_sigma);
   EXPECT_NEAR(line.mu_d, mu_d, 3 * line.mu_d_sigma);
   EXPECT_LT(line.mu_d_sigma, 0.01);
   EXPECT_NEAR(line.adhesion_force, adhesion, 3 * line.adhesion_force_sigma);

@@ -337,9 +337,12 @@ int dynamic_friction(const std::vector<std::string>& argv) {
   } else {
     r.tables.push_back({"records_columns_normal_force_friction_force_sigma_damping_sigma_rms_residual", rows});
     if (loads.size() >= 3) {
-      std::vector<double> fd;
-      for (const auto& f : fits) fd.push_back(f.friction_force);
-      const LoadLine line = fit_load_line(loads, fd);
+      std::vector<double> fd, fd_sigma;
+      for (const auto& f : fits) {
+        fd.push_back(f.friction_force);
+        fd_sigma.push_back(f.friction_force_sigma);
+      }
+      const LoadLine line = fit_load_line(loads, fd, fd_sigma);
       r.add("mu_d", line.mu_d, line.mu_d_sigma, "", "slope of F_d = mu_d F_N + mu_d F_adh");
       r.add("intercept", line.intercept, line.intercept_sigma, "N", "F_d at zero applied load");
       r.add("adhesion_force", line.adhesion_force, line.adhesion_force_sigma, "N", "intercept / slope");

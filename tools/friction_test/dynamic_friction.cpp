@@ -189,11 +189,22 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
   return out;
 }
 
-LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force) {
+LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force,
+                       const std::vector<double>& friction_force_sigma) {
   const FitResult line = fit_line(normal_force, friction_force);
   LoadLine out;
   const double a = line.parameters(0), b = line.parameters(1);
-  const auto& c = line.covariance;
+  Eigen::Matrix2d c = line.covariance;
+  if (friction_force_sigma.size() == normal_force.size()) {
+    Eigen::Matrix2d atwa = Eigen::Matrix2d::Zero();
+    for (std::size_t i = 0; i < normal_force.size(); ++i) {
+      const double w = 1.0 / (friction_force_sigma[i] * friction_force_sigma[i]);
+      const Eigen::Vector2d row(1.0, normal_force[i]);
+      atwa += w * row * row.transpose();
+    }
+    const Eigen::Matrix2d propagated = atwa.inverse();
+    if (propagated(1, 1) > c(1, 1)) c = propagated;
+  }
   out.mu_d = b;
   out.mu_d_sigma = std::sqrt(c(1, 1));
   out.intercept = a;

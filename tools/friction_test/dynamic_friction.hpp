@@ -57,7 +57,11 @@ struct LoadLine {
   double adhesion_force = 0.0, adhesion_force_sigma = 0.0;  // N
   double rms_residual = 0.0;                                // N
 };
-/// Straight line F_d(F_N) through at least 3 records.
-LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force);
+/// Straight line F_d(F_N) through at least 3 records. With `friction_force_sigma` (one per
+/// record) the parameter uncertainties are the larger of the scatter-based ones and those
+/// propagated from the records' own 1-sigma errors, (A^T W A)^-1 with W = diag(1/sigma_i^2):
+/// a handful of records gives too few degrees of freedom to trust the scatter alone.
+LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force,
+                       const std::vector<double>& friction_force_sigma = {});
 
 }  // namespace tribex::friction_test
