@@ -56,9 +56,16 @@ bool write_plot(const std::string& png, const std::string& title, const std::vec
     }
     files.push_back(path);
   }
-  std::string cmd = "/usr/bin/python3 " + shell_quote(TRIBEX_FRICTION_PLOT_SCRIPT) + " " + shell_quote(png) + " " +
-                    shell_quote(title);
-  for (const auto& f : files) cmd += " " + shell_quote(f);
+  // Built with append: GCC 12 warns (-Wrestrict, a known false positive) on `" " + std::string`.
+  std::string cmd = "/usr/bin/python3";
+  for (const std::string& part : {std::string(TRIBEX_FRICTION_PLOT_SCRIPT), png, title}) {
+    cmd += ' ';
+    cmd += shell_quote(part);
+  }
+  for (const auto& f : files) {
+    cmd += ' ';
+    cmd += shell_quote(f);
+  }
   const int rc = std::system(cmd.c_str());
   for (const auto& f : files) std::filesystem::remove(f);
   if (rc != 0) {
