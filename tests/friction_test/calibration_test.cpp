@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "tools/friction_test/calibration.hpp"
 #include "tools/common/errors.hpp"
@@ -77,6 +78,33 @@ TEST(Calibration, FlatRecordIsBadInput) {
     x.push_back(1e-6 + 1e-9 * i);  // a drift, no oscillation
   }
   EXPECT_THROW(fit_ringdown(t, x, "flat.csv"), tools::BadInput);
+}
+
+}  // namespace
+}  // namespace tribex::friction_test
+
+namespace tribex::friction_test {
+namespace {
+
+// A driven resonance curve of the report's device (m = 2.25 ug, k = 0.38 N/m, Q = 50) with 1 nm
+// amplitude noise: omega0 and sigma recovered within 3 sigma, and Eq. 2.4 gives k back.
+TEST(Calibration, ResonanceCurveRecoversOmega0AndDamping) {
+  const double m = 2.25e-9, k = 0.38, w0 = std::sqrt(k / m), sigma = w0 / 100, f0_m = 1e-6 * 2 * sigma * w0;
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> noise(0.0, 1e-9);
+  std::vector<double> w, a;
+  for (int i = 0; i < 120; ++i) {
+    w.push_back(w0 * (0.8 + 0.4 * i / 119.0));
+    const double d = w0 * w0 - w.back() * w.back();
+    a.push_back(f0_m / std::sqrt(d * d + 4 * sigma * sigma * w.back() * w.back()) + noise(rng));
+  }
+  const ResonanceFit f = fit_resonance(w, a, "sweep");
+  EXPECT_NEAR(f.omega0, w0, 3 * f.omega0_sigma);
+  EXPECT_LT(f.omega0_sigma, 1e-3 * w0);
+  EXPECT_NEAR(f.sigma, sigma, 3 * f.sigma_sigma);
+  EXPECT_NEAR(f.quality, 50.0, 3 * f.quality_sigma);
+  const Stiffness ks = stiffness_from_frequency(f.omega0, f.omega0_sigma, m, 0.0);
+  EXPECT_NEAR(ks.value, k, 3 * ks.sigma);
 }
 
 }  // namespace

@@ -116,6 +116,51 @@ RingdownFit fit_ringdown(const std::vector<double>& t, const std::vector<double>
   return out;
 }
 
+double ResonanceFit::amplitude(double omega) const {
+  const auto& p = fit.parameters;
+  const double d = p(1) * p(1) - omega * omega;
+  return p(0) / std::sqrt(d * d + 4 * p(2) * p(2) * omega * omega);
+}
+
+ResonanceFit fit_resonance(const std::vector<double>& omega, const std::vector<double>& amplitude,
+                           const std::string& what) {
+  using tools::BadInput;
+  const std::size_t n = omega.size();
+  if (n < 10) throw BadInput(what + ": " + std::to_string(n) + " points; a resonance fit needs at least 10");
+  const auto peak = static_cast<std::size_t>(std::max_element(amplitude.begin(), amplitude.end()) - amplitude.begin());
+  if (peak == 0 || peak + 1 == n)
+    throw BadInput(what + ": the amplitude peaks at the end of the sweep; sweep across the resonance");
+  const double w0 = omega[peak], a_max = amplitude[peak];
+  // Half-power points on either side of the peak (amplitude a_max / sqrt 2).
+  std::size_t lo = peak, hi = peak;
+  while (lo > 0 && amplitude[lo] > a_max / std::sqrt(2.0)) --lo;
+  while (hi + 1 < n && amplitude[hi] > a_max / std::sqrt(2.0)) ++hi;
+  const double sigma = std::max(0.5 * (omega[hi] - omega[lo]) / 2, 1e-6 * w0);
+  ResonanceFit out;
+  Eigen::VectorXd start(3), scale(3);
+  start << a_max * 2 * sigma * w0, w0, sigma;  // at resonance X = (F0/m) / (2 sigma omega0)
+  scale << start(0), w0, sigma;
+  auto residuals = [&](const Eigen::VectorXd& p) -> std::optional<Eigen::VectorXd> {
+    if (p(1) <= 0 || p(2) <= 0) return std::nullopt;
+    Eigen::VectorXd r(static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d = p(1) * p(1) - omega[i] * omega[i];
+      r(static_cast<Eigen::Index>(i)) = p(0) / std::sqrt(d * d + 4 * p(2) * p(2) * omega[i] * omega[i]) - amplitude[i];
+    }
+    return r;
+  };
+  out.fit = levenberg_marquardt(residuals, start, scale);
+  const auto& p = out.fit.parameters;
+  out.omega0 = p(1);
+  out.sigma = p(2);
+  out.omega0_sigma = out.fit.sigma(1);
+  out.sigma_sigma = out.fit.sigma(2);
+  out.quality = out.omega0 / (2 * out.sigma);
+  out.quality_sigma = out.quality * std::hypot(out.omega0_sigma / out.omega0, out.sigma_sigma / out.sigma);
+  out.rms_residual = out.fit.rms_residual;
+  return out;
+}
+
 Stiffness stiffness_from_frequency(double omega0, double omega0_sigma, double mass, double mass_sigma) {
   Stiffness k;
   k.value = mass * omega0 * omega0;  // Eq. 2.4

@@ -39,6 +39,22 @@ struct RingdownFit {
 /// when the record does not oscillate.
 RingdownFit fit_ringdown(const std::vector<double>& t, const std::vector<double>& x, const std::string& what);
 
+/// A driven resonance curve: steady-state amplitude X(omega) of m x'' + c x' + k x = F0 cos(omega t),
+///     X(omega) = (F0/m) / sqrt((omega0^2 - omega^2)^2 + (2 sigma omega)^2),
+/// fitted by Levenberg-Marquardt over (F0/m, omega0, sigma). First guesses: omega0 at the peak,
+/// sigma from the half-power width (omega2 - omega1 = 2 sigma for light damping).
+struct ResonanceFit {
+  double omega0 = 0.0, omega0_sigma = 0.0;  // rad/s
+  double sigma = 0.0, sigma_sigma = 0.0;    // 1/s
+  double quality = 0.0, quality_sigma = 0.0;
+  double rms_residual = 0.0;                // m
+  FitResult fit;                            // parameters (F0/m, omega0, sigma)
+  double amplitude(double omega) const;
+};
+/// `omega` in rad/s (increasing), `amplitude` in m; at least 10 points around the peak.
+ResonanceFit fit_resonance(const std::vector<double>& omega, const std::vector<double>& amplitude,
+                           const std::string& what);
+
 struct Stiffness {
   double value = 0.0, sigma = 0.0;  // N/m
 };

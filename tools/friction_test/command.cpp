@@ -39,7 +39,8 @@ const char* top_usage =
 const char* calibrate_usage =
     "usage: tribex friction-test calibrate [FILE] [--mass 2.25ug] [--mass-uncertainty 0.15ug]\n"
     "         [--width W --length L --thickness T --youngs-modulus E [--folds 4]] [--json] [-o PLOT.png]\n"
-    "FILE: CSV with columns time[s] and position[unit], a free ringdown. Fits\n"
+    "FILE: CSV with columns time[s] and position[unit], a free ringdown, or frequency[Hz] and\n"
+    "amplitude[unit], a driven resonance curve (fits X = (F0/m)/sqrt((w0^2-w^2)^2 + (2 sigma w)^2)). Fits\n"
     "x = x_eq + exp(-sigma t)(a cos wd t + b sin wd t); k = m w0^2 (Eq. 2.4), w0^2 = wd^2 + sigma^2,\n"
     "with the mass uncertainty propagated. Geometry options add the folded-flexure constant\n"
     "k = (folds/2) E T W^3 / L^3. Values take units (2.25ug, 1.8um, 164.8GPa); plain numbers are SI.\n";
@@ -134,6 +135,34 @@ int calibrate(const std::vector<std::string>& argv) {
       throw BadInput("tribex friction-test calibrate: geometry and modulus must be > 0");
     r.add("stiffness_geometry", folded_spring_stiffness(*youngs, *thickness, *width, *length, static_cast<int>(folds)),
           -1, "N/m", "(folds/2) E t w^3 / L^3");
+  }
+  if (file && Record::read(*file).has("frequency")) {
+    const Record rec = Record::read(*file);
+    const auto& f_hz = rec.column("frequency", dim::rate);
+    const auto& amp = rec.column("amplitude", dim::length);
+    rec.require_increasing("frequency");
+    rec.require_rows(10, "for a resonance fit");
+    std::vector<double> w(f_hz);
+    for (double& v : w) v *= 2 * std::numbers::pi;
+    const ResonanceFit f = fit_resonance(w, amp, *file);
+    const Stiffness k = stiffness_from_frequency(f.omega0, f.omega0_sigma, mass, mass_sigma);
+    r.text.push_back({"file", *file});
+    r.add("omega0", f.omega0, f.omega0_sigma, "rad/s", "undamped natural frequency");
+    r.add("frequency", f.omega0 / (2 * std::numbers::pi), f.omega0_sigma / (2 * std::numbers::pi), "Hz");
+    r.add("decay_rate", f.sigma, f.sigma_sigma, "1/s", "sigma = c/(2m)");
+    r.add("quality_factor", f.quality, f.quality_sigma, "", "omega0 / (2 sigma)");
+    r.add("mass", mass, mass_sigma, "kg", "input");
+    r.add("stiffness", k.value, k.sigma, "N/m", "k = m omega0^2 (Eq. 2.4)");
+    r.add("rms_residual", f.rms_residual, -1, "m");
+    emit(r, json);
+    if (!json || plot) {
+      std::vector<double> fit(w.size());
+      for (std::size_t i = 0; i < w.size(); ++i) fit[i] = f.amplitude(w[i]) * 1e9;
+      PlotPanel curve{"frequency (Hz)", "amplitude (nm)", "resonance curve and fit", {{"f", f_hz}, {"data", to_nm(amp)}, {"fit", fit}}};
+      const std::string png = plot.value_or(default_plot_path(*file));
+      if (write_plot(png, "resonance: " + *file, {curve})) std::fprintf(stderr, "plot: %s\n", png.c_str());
+    }
+    return tools::exit_ok;
   }
   if (file) {
     const Record rec = Record::read(*file);

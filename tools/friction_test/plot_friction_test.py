@@ -49,7 +49,7 @@ def main(argv):
             if name.startswith("fit"):
                 ax.plot(xs, ys, "-", lw=1.3, label=name)
             else:
-                ax.plot(xs, ys, ".", ms=3, label=name)
+                ax.plot(xs, ys, "o" if len(xs) <= 50 else ".", ms=5 if len(xs) <= 50 else 3, label=name)
         ax.set_xlabel(labels[0])
         ax.set_ylabel(labels[1] if len(labels) > 1 else "")
         if len(labels) > 2:
@@ -57,7 +57,7 @@ def main(argv):
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle(title, fontsize=11)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
     tmp = out + ".tmp.png"
     fig.savefig(tmp, dpi=120)
     os.replace(tmp, out)
