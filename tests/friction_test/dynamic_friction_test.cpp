@@ -95,3 +95,66 @@ TEST(DynamicFriction, RecordThatDoesNotOscillateIsBadInput) {
 
 }  // namespace
 }  // namespace tribex::friction_test
+
+namespace tribex::friction_test {
+namespace {
+
+// Real records start at an arbitrary phase: drop the first 7 samples (a seventh of a cycle, the
+// device already moving) and calibrate by mass instead of stiffness.
+TEST(DynamicFriction, RecordStartingMidSwingWithMassCalibration) {
+  OscillatorSetup s;
+  s.damping = s.mass * std::sqrt(s.stiffness / s.mass) / 50;
+  s.friction_force = 112e-9;
+  s.static_force = 136e-9;
+  s.x_release = 12e-6;
+  s.noise = 10e-9;
+  s.seed = 41;
+  const Record r = synth_oscillator(s);
+  const auto& t_all = r.column("time", inputs::dim::time);
+  const auto& x_all = r.column("position", inputs::dim::length);
+  const std::vector<double> t(t_all.begin() + 7, t_all.end()), x(x_all.begin() + 7, x_all.end());
+  Calibration cal;
+  cal.mass = s.mass;
+  const DynamicFit f = fit_dynamic(t, x, cal, "mid_swing");
+  EXPECT_NEAR(f.friction_force, s.friction_force, 3 * f.friction_force_sigma);
+  EXPECT_LT(f.friction_force_sigma, 0.02 * s.friction_force);
+  EXPECT_NEAR(f.damping, s.damping, 3 * f.damping_sigma);
+  EXPECT_NEAR(f.stiffness, s.stiffness, 3 * f.stiffness_sigma);
+  EXPECT_TRUE(f.ends_at_rest);
+  EXPECT_LT(std::abs(f.start.v0), 1.0);           // fitted start velocity is finite and physical
+  EXPECT_GT(std::abs(f.start.v0), 1e-3);          // and clearly non-zero (it was moving)
+  EXPECT_NEAR(f.rms_residual, 10e-9, 2e-9);
+}
+
+}  // namespace
+}  // namespace tribex::friction_test
+
+namespace tribex::friction_test {
+namespace {
+
+// Robustness over seeds and stick ratios in the regime that once trapped the fit (the last swings
+// do not cross x_eq): every fit must reach the noise floor and recover F_d and c within 3 sigma.
+TEST(DynamicFriction, ManySeedsAndStickRatiosReachTheNoiseFloor) {
+  for (double stick_ratio : {0.0, 0.34 / 0.28, 1.8}) {
+    for (std::uint64_t seed = 41; seed < 47; ++seed) {
+      OscillatorSetup s;
+      s.damping = s.mass * std::sqrt(s.stiffness / s.mass) / 50;
+      s.friction_force = 112e-9;
+      s.static_force = stick_ratio * s.friction_force;
+      s.x_release = 12e-6;
+      s.seed = seed;
+      const Record r = synth_oscillator(s);
+      Calibration cal;
+      cal.stiffness = s.stiffness;
+      const DynamicFit f =
+          fit_dynamic(r.column("time", inputs::dim::time), r.column("position", inputs::dim::length), cal, "seeds");
+      SCOPED_TRACE("seed " + std::to_string(seed) + " stick ratio " + std::to_string(stick_ratio));
+      EXPECT_LT(f.rms_residual, 1.1 * s.noise);
+      EXPECT_NEAR(f.friction_force, s.friction_force, 3 * f.friction_force_sigma);
+      EXPECT_NEAR(f.damping, s.damping, 3 * f.damping_sigma);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tribex::friction_test

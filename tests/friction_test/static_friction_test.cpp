@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+
+#include "tools/cli/commands.hpp"
 
 #include "tools/friction_test/static_friction.hpp"
 #include "tools/common/errors.hpp"
@@ -81,6 +84,36 @@ TEST(StaticFriction, JumpsAwayFromTheSpringZeroAreNotSlips) {
   EXPECT_DOUBLE_EQ(ev[0].friction_force, 4.5 * 10e-6);
   EXPECT_DOUBLE_EQ(ev[0].normal_force, 1.5e-3);
   EXPECT_DOUBLE_EQ(ev[0].load_resolution, 0.5e-3);
+}
+
+}  // namespace
+}  // namespace tribex::friction_test
+
+namespace tribex::friction_test {
+namespace {
+
+// A normal_force column is used as F_N directly; the --stiffness uncertainty adds to mu_s only.
+TEST(StaticFriction, NormalForceColumnAndStiffnessUncertaintyThroughTheCommand) {
+  StaticSetup s;
+  s.seed = 17;
+  const Record r = synth_static(s);
+  const auto& v = r.voltage("voltage");
+  const auto& x = r.column("position", inputs::dim::length);
+  std::vector<double> fn;
+  for (double volts : v) fn.push_back(s.clamp.normal_force(volts));
+  const auto dir = std::filesystem::temp_directory_path() / "tribex_friction_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "ramp_fn.csv").string();
+  Record(path, {{"normal_force", {fn, "uN"}}, {"position", {x, "nm"}}}).write(path);
+  testing::internal::CaptureStdout();
+  EXPECT_EQ(cli::friction_test_command({"static", path, "--stiffness", "4.5", "--stiffness-uncertainty", "0.045", "--json"}), 0);
+  const std::string out = testing::internal::GetCapturedStdout();
+  // mu_s uncertainty is dominated by the 1% stiffness error: 0.31 * 0.01 = 0.0031.
+  EXPECT_NE(out.find("\"mu_s\": {\"value\": 0.31"), std::string::npos) << out;
+  const auto at = out.find("\"mu_s\"");
+  const auto unc = out.find("\"uncertainty\": ", at);
+  const double mu_sigma = std::stod(out.substr(unc + 15));
+  EXPECT_NEAR(mu_sigma, 0.0031, 0.0002);
 }
 
 }  // namespace

@@ -90,30 +90,35 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
   // Static friction F_s > F_d stops the device earlier than pure Coulomb friction would. A
   // record cannot pin F_s down (any value between the last two reversal swings gives the same
   // stop), so when the record ends at rest (the last half period moves less than 3% of the first)
-  // the model sticks at a reversal within |x_rest - x_eq| + delta: below the previous swing,
-  // which is at least 2 delta larger, and above the final one.
+  // the model sticks at a reversal with |x - x_eq| <= max(delta, |x_rest - x_eq| + eps): pure
+  // Coulomb sticking when that explains the rest position, else just above the observed final
+  // swing. eps = 0.05 delta plus 3 standard errors of x_rest keeps the noise from deciding it;
+  // the previous swing is larger by (1 + rho)(|a_{N-1}| - delta), almost always far more.
   const double first_range = [&] {
     double lo = x.front(), hi = x.front();
     for (std::size_t i = 0; i < n && t[i] - t.front() < pi / g.omega_d; ++i) lo = std::min(lo, x[i]), hi = std::max(hi, x[i]);
     return hi - lo;
   }();
-  double tail_lo = x.back(), tail_hi = x.back(), tail_sum = 0;
+  double tail_lo = x.back(), tail_hi = x.back(), tail_sum = 0, tail_sq = 0;
   std::size_t tail_n = 0;
   for (std::size_t i = n; i-- > 0 && t.back() - t[i] < pi / g.omega_d;) {
     tail_lo = std::min(tail_lo, x[i]);
     tail_hi = std::max(tail_hi, x[i]);
     tail_sum += x[i];
+    tail_sq += x[i] * x[i];
     ++tail_n;
   }
   const bool ends_at_rest = tail_n >= 5 && tail_hi - tail_lo < 0.03 * first_range;
-  const double x_rest = tail_sum / static_cast<double>(std::max<std::size_t>(tail_n, 1));
+  const double tail_count = static_cast<double>(std::max<std::size_t>(tail_n, 1));
+  const double x_rest = tail_sum / tail_count;
+  const double rest_error = std::sqrt(std::max(0.0, tail_sq / tail_count - x_rest * x_rest) / tail_count);
 
   auto params = [&](const Eigen::VectorXd& p) {
     OscillatorParams o;
     o.omega0 = p(0);
     o.sigma = p(1);
     o.coulomb_offset = p(2);
-    o.stick_offset = ends_at_rest ? std::max(p(2), std::abs(x_rest - p(3)) + p(2)) : p(2);
+    o.stick_offset = ends_at_rest ? std::max(p(2), std::abs(x_rest - p(3)) + 0.05 * p(2) + 3 * rest_error) : p(2);
     o.x_eq = p(3);
     return o;
   };

@@ -7,16 +7,21 @@
 namespace tribex::friction_test {
 namespace {
 
-void fill_statistics(FitResult& r, const Eigen::MatrixXd& jtj_free, const std::vector<int>& free,
+// Covariance from the SVD of J itself, J = U S V^T -> (J^T J)^-1 = V S^-2 V^T: forming J^T J
+// squares the condition number and can turn a merely ill-conditioned fit into negative variances.
+void fill_statistics(FitResult& r, const Eigen::MatrixXd& j_free, const std::vector<int>& free,
                      double sum_squares, std::size_t n, const Eigen::VectorXd& scale) {
   const std::size_t p = free.size();
   const double dof = n > p ? static_cast<double>(n - p) : 1.0;
   r.rms_residual = std::sqrt(sum_squares / static_cast<double>(n));
   r.residual_sigma = std::sqrt(sum_squares / dof);
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(jtj_free);
-  if (!lu.isInvertible())
-    throw std::runtime_error("the fit is degenerate (J^T J singular): the data do not determine all parameters");
-  const Eigen::MatrixXd cov_q = lu.inverse() * (sum_squares / dof);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(j_free, Eigen::ComputeThinV);
+  const Eigen::VectorXd sv = svd.singularValues();
+  if (sv.size() == 0 || !(sv(sv.size() - 1) > 1e-13 * sv(0)))
+    throw std::runtime_error("the fit is degenerate (J rank-deficient): the data do not determine all parameters");
+  const Eigen::MatrixXd v = svd.matrixV();
+  const Eigen::MatrixXd cov_q =
+      v * sv.array().square().inverse().matrix().asDiagonal() * v.transpose() * (sum_squares / dof);
   const auto np = static_cast<int>(r.parameters.size());
   r.covariance = Eigen::MatrixXd::Zero(np, np);
   for (std::size_t a = 0; a < p; ++a)
@@ -103,9 +108,8 @@ FitResult levenberg_marquardt(const ResidualFunction& residuals, Eigen::VectorXd
       break;
     }
   }
-  jtj = j.transpose() * j;
   out.parameters = p;
-  fill_statistics(out, jtj, free, s, static_cast<std::size_t>(r.size()), scale);
+  fill_statistics(out, j, free, s, static_cast<std::size_t>(r.size()), scale);
   return out;
 }
 
@@ -133,7 +137,7 @@ FitResult fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   const double s = (a * q - b).squaredNorm() * ys * ys;
   out.converged = true;
   const Eigen::Vector2d scale(ys, ys / xs);
-  fill_statistics(out, a.transpose() * a, {0, 1}, s / (ys * ys), static_cast<std::size_t>(n), scale);
+  fill_statistics(out, a, {0, 1}, s / (ys * ys), static_cast<std::size_t>(n), scale);
   out.rms_residual *= ys;
   out.residual_sigma *= ys;
   return out;
