@@ -26,6 +26,19 @@ grep -q '^mu_s' ramp.txt
 test -s ramp.png || { echo "no PNG written"; exit 1; }
 head -c 8 ramp.png | od -c | grep -q 'P   N   G' || { echo "ramp.png is not a PNG"; exit 1; }
 
+# Dynamic: FOTAS mu_d = 0.28 at F_N + F_adh = 400 nN; the JSON carries friction_force, damping, mu_d.
+"$tribex" friction-test synth dynamic -o dyn.csv --friction-force 112nN --static-force 136nN --seed 8 2> /dev/null
+"$tribex" friction-test dynamic dyn.csv --stiffness 0.38 --normal-force 400nN --json > dyn.json
+$py -c '
+import json
+d = json.load(open("dyn.json"))
+for key in ("friction_force", "damping", "mu_d"):
+    assert "uncertainty" in d[key], key
+m = d["mu_d"]
+assert abs(m["value"] - 0.28) < 3 * m["uncertainty"], m
+assert abs(d["friction_force"]["value"] - 112e-9) < 3 * d["friction_force"]["uncertainty"], d
+'
+
 printf 'time[s],position[nm]\n0,1\n2,2\n1,3\n' > backwards.csv
 set +e
 "$tribex" friction-test calibrate backwards.csv 2> err.txt
