@@ -15,5 +15,7 @@ int bench_command(const std::vector<std::string>& args);  // tools/bench/bench_c
 int gw_command(const std::vector<std::string>& args);       // tools/gw/gw_command.cpp
 int surface_command(const std::vector<std::string>& args);  // tools/surface/surface_command.cpp
 int pstd_command(const std::vector<std::string>& args);  // tools/pstd/
+/// tools/friction_test/command.cpp: `tribex friction-test calibrate|static|dynamic|synth`.
+int friction_test_command(const std::vector<std::string>& args);
 
 }  // namespace tribex::cli

@@ -28,6 +28,7 @@ const std::vector<Command> commands = {
     {"gw", "Greenwood-Williamson models: F_n, discrete/DMT/tangential GW (CSV)", tribex::cli::gw_command},
     {"surface", "rough-surface statistics of AFM maps and McCool GW tables", tribex::cli::surface_command},
     {"pstd", "pre-sliding tangential deflection model (report 2.1.9)", tribex::cli::pstd_command},
+    {"friction-test", "friction-test data reduction: spring calibration, mu_s, mu_d", tribex::cli::friction_test_command},
 };
 
 void print_usage(std::FILE* to) {

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// The fitted quantities of a friction-test command and how they are printed: one JSON object
+// (`--json`: every quantity as {"value", "uncertainty", "unit"}, SI) or a readable table.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace tribex::friction_test {
+
+struct Quantity {
+  std::string name;         // JSON key, e.g. "friction_force"
+  double value = 0.0;       // SI
+  double uncertainty = -1;  // 1 sigma, SI; < 0 when not applicable (exact or input)
+  std::string unit;         // SI unit, "" for dimensionless
+  std::string note;         // shown in the table only
+};
+
+struct Report {
+  std::string command;  // "calibrate", "static", "dynamic"
+  std::vector<std::pair<std::string, std::string>> text;  // string fields (file, ...)
+  std::vector<Quantity> quantities;
+  std::vector<std::pair<std::string, std::vector<std::vector<double>>>> tables;  // e.g. slip events, rows
+
+  void add(std::string name, double value, double uncertainty, std::string unit, std::string note = "") {
+    quantities.push_back({std::move(name), value, uncertainty, std::move(unit), std::move(note)});
+  }
+  const Quantity& get(const std::string& name) const;
+  std::string json() const;
+  void print_table(std::FILE* to) const;
+};
+
+}  // namespace tribex::friction_test
