@@ -79,6 +79,26 @@ struct GeneratedBoxSpec {
   SourceLocation where;
 };
 
+/// `begin generated asperity` inside a finite element model (our extension, mesh/asperity.hpp):
+/// blocks `tip`, `substrate` (and `coating`); side and node sets tip_surface, tip_top, tip_sides,
+/// substrate_top, substrate_bottom, substrate_sides; node sets tip_axis_top, tip_apex,
+/// substrate_axis_top, substrate_axis_bottom.
+struct GeneratedAsperitySpec {
+  double radius = 27e-9;
+  double tip_width = 20e-9;
+  double tip_height = 15e-9;
+  double substrate_width = 40e-9;
+  double substrate_depth = 20e-9;
+  double gap = 0.0;
+  double element_size = 0.5e-9;
+  double fine_half_width = 4e-9;
+  double fine_depth = 2e-9;
+  double grading_ratio = 1.25;
+  double coating_thickness = 0.0;
+  int coating_layers = 6;
+  SourceLocation where;
+};
+
 /// `begin parameters for block NAME` inside a finite element model.
 struct BlockParameters {
   std::string block;     // must exist in the mesh (checked when the mesh is built)
@@ -93,7 +113,8 @@ struct FiniteElementModelSpec {
   std::string name;
   enum class Source { generated, gmsh } source = Source::generated;
   std::string database_path;  // gmsh: path resolved relative to the deck's folder
-  std::vector<GeneratedBoxSpec> boxes;  // generated: one or more boxes
+  std::vector<GeneratedBoxSpec> boxes;  // generated: boxes (appended in deck order)
+  std::optional<GeneratedAsperitySpec> asperity;  // generated: the asperity problem
   std::vector<BlockParameters> blocks;
   SourceLocation where;
 };

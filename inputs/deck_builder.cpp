@@ -169,12 +169,31 @@ class Builder {
     m.name = s.name;
     m.where = s.where;
     const auto boxes = s.children_of("generated box");
+    const auto asperities = s.children_of("generated asperity");
+    const bool generated = !boxes.empty() || !asperities.empty();
     const KeyLine* db = s.find("database name");
     const std::string type = word(s, "database type");
-    if (db && !boxes.empty()) {
-      error(db->where, s, "model '" + m.name + "' has both 'database name' and 'begin generated box'; use one");
-    } else if (!db && boxes.empty()) {
-      error(s.where, s, "model '" + m.name + "' needs a mesh: 'database name = FILE.msh' or 'begin generated box NAME'");
+    if (db && generated) {
+      error(db->where, s, "model '" + m.name + "' has both 'database name' and a generated mesh; use one");
+    } else if (!db && !generated) {
+      error(s.where, s, "model '" + m.name + "' needs a mesh: 'database name = FILE.msh', 'begin generated box NAME' or 'begin generated asperity'");
+    }
+    for (const Scope* a : asperities) {
+      GeneratedAsperitySpec g;
+      g.where = a->where;
+      g.radius = real(*a, "radius");
+      g.tip_width = real(*a, "tip width");
+      g.tip_height = real(*a, "tip height");
+      g.substrate_width = real(*a, "substrate width");
+      g.substrate_depth = real(*a, "substrate depth");
+      g.gap = real(*a, "gap");
+      g.element_size = real(*a, "element size");
+      g.fine_half_width = real(*a, "fine half width");
+      g.fine_depth = real(*a, "fine depth");
+      g.grading_ratio = real(*a, "grading ratio");
+      g.coating_thickness = real(*a, "coating thickness");
+      g.coating_layers = static_cast<int>(real(*a, "coating layers"));
+      m.asperity = g;
     }
     if (db) {
       m.source = FiniteElementModelSpec::Source::gmsh;

@@ -138,8 +138,24 @@ std::vector<BlockSchema> build_table() {
                {text("database name", ValueKind::string, false, "gmsh mesh file, relative to the deck"),
                 choice("database type", ValueKind::enumeration, {"gmsh", "generated"}, false, "",
                        "inferred from database name / generated box")},
-               {{"generated box"}, {"parameters for block", 1}},
+               {{"generated box"}, {"generated asperity", 0, 1}, {"parameters for block", 1}},
                false, "the mesh and its element blocks"});
+
+  t.push_back({"generated asperity", NameRule::none, {}, {}, true,
+               {real("radius", dim::length, positive(), true, "", "R of the spherical tip"),
+                real("tip width", dim::length, positive(), false, "20 nm", "side of the square tip column"),
+                real("tip height", dim::length, positive(), false, "15 nm", "column height above the apex"),
+                real("substrate width", dim::length, positive(), false, "40 nm", "side of the square substrate"),
+                real("substrate depth", dim::length, positive(), false, "20 nm", "substrate thickness"),
+                real("gap", dim::length, non_negative(), false, "0", "apex height above the substrate"),
+                real("element size", dim::length, positive(), true, "", "element size at the contact"),
+                real("fine half width", dim::length, positive(), false, "4 nm", "uniformly fine region |x|,|y|"),
+                real("fine depth", dim::length, positive(), false, "2 nm", "uniformly fine layers in z"),
+                real("grading ratio", dim::none, {1.0, 2.0, false, false}, false, "1.25", "growth per element"),
+                real("coating thickness", dim::length, non_negative(), false, "0", "bonded coating (block coating)"),
+                integer("coating layers", at_least(1), false, "6", "elements through the coating")},
+               {},
+               false, "sphere-tipped asperity above a substrate (blocks tip, substrate, coating)"});
 
   t.push_back({"generated box", NameRule::required, {}, {}, true,
                {reals("origin", dim::length, 3, Range{}, false, "0 0 0", "lower corner"),

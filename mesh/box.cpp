@@ -65,18 +65,28 @@ Mesh generate_box(const BoxSpec& spec) {
     throw MeshError(source + ": grading_ratio is set but grade_toward is empty; name the face to grade toward");
   }
 
-  const std::int64_t nx = spec.intervals[0], ny = spec.intervals[1], nz = spec.intervals[2];
+  std::array<std::vector<double>, 3> axes;
+  for (int d = 0; d < 3; ++d)
+    axes[d] = axis_coordinates(spec.origin[d], spec.size[d], spec.intervals[d], spec.grading_ratio,
+                               graded_face == 2 * d, graded_face == 2 * d + 1);
+  return generate_grid(spec.name, axes);
+}
+
+Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes) {
+  const std::string source = "structured grid '" + name + "'";
+  for (int d = 0; d < 3; ++d) {
+    if (axes[d].size() < 2) throw MeshError(source + ": an axis needs at least 2 coordinates");
+    for (std::size_t i = 1; i < axes[d].size(); ++i)
+      if (!(axes[d][i] > axes[d][i - 1])) throw MeshError(source + ": axis coordinates must increase strictly");
+  }
+  const std::int64_t nx = static_cast<std::int64_t>(axes[0].size()) - 1, ny = static_cast<std::int64_t>(axes[1].size()) - 1,
+                     nz = static_cast<std::int64_t>(axes[2].size()) - 1;
   const std::int64_t node_count = (nx + 1) * (ny + 1) * (nz + 1);
   const std::int64_t element_count = nx * ny * nz;
   // Arrays are indexed by int: keep 8 * elements and 3 * nodes below INT_MAX.
   if (element_count > std::numeric_limits<int>::max() / 8 || node_count > std::numeric_limits<int>::max() / 3)
     throw MeshError(source + ": " + std::to_string(element_count) +
                     " elements exceed the int index range; use fewer intervals");
-
-  std::array<std::vector<double>, 3> axes;
-  for (int d = 0; d < 3; ++d)
-    axes[d] = axis_coordinates(spec.origin[d], spec.size[d], spec.intervals[d], spec.grading_ratio,
-                               graded_face == 2 * d, graded_face == 2 * d + 1);
 
   Mesh mesh;
   mesh.coordinates.resize(static_cast<std::size_t>(node_count) * 3);
@@ -108,7 +118,7 @@ Mesh generate_box(const BoxSpec& spec) {
         c[7] = node(i, j + 1, k + 1);
         p += 8;
       }
-  mesh.blocks.push_back({spec.name, 0, static_cast<int>(element_count)});
+  mesh.blocks.push_back({name, 0, static_cast<int>(element_count)});
 
   // Boundary sets. For face f, loop the two in-plane axes; the element and node indices follow
   // from fixing the normal axis at its min or max.
@@ -117,8 +127,8 @@ Mesh generate_box(const BoxSpec& spec) {
     const int d = f / 2;
     const bool at_max = f % 2 == 1;
     const int a = (d + 1) % 3, b = (d + 2) % 3;  // in-plane axes
-    std::vector<Side>& sides = mesh.side_sets[spec.name + "_" + face_names[f]];
-    std::vector<int>& nodes = mesh.node_sets[spec.name + "_" + face_names[f]];
+    std::vector<Side>& sides = mesh.side_sets[name + "_" + face_names[f]];
+    std::vector<int>& nodes = mesh.node_sets[name + "_" + face_names[f]];
     sides.reserve(static_cast<std::size_t>(n_el[a] * n_el[b]));
     nodes.reserve(static_cast<std::size_t>((n_el[a] + 1) * (n_el[b] + 1)));
     std::int64_t ijk[3];
@@ -139,7 +149,7 @@ Mesh generate_box(const BoxSpec& spec) {
     std::sort(sides.begin(), sides.end(), [](const Side& s, const Side& t) { return s.element < t.element; });
     std::sort(nodes.begin(), nodes.end());
   }
-  std::vector<int>& all = mesh.node_sets[spec.name + "_all"];
+  std::vector<int>& all = mesh.node_sets[name + "_all"];
   all.resize(static_cast<std::size_t>(node_count));
   for (int n = 0; n < static_cast<int>(node_count); ++n) all[n] = n;
   return mesh;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -24,5 +25,10 @@ struct BoxSpec {
 /// NAME_zmin, NAME_zmax; node set NAME_all. Elements are numbered x fastest, then y, then z.
 /// Throws MeshError for a bad spec (intervals < 1, size <= 0, unknown face, ratio < 1).
 Mesh generate_box(const BoxSpec& spec);
+
+/// The structured grid behind generate_box: nodes on the tensor product of three strictly
+/// increasing coordinate lists (m), one block NAME and the same sets. Generators that map a grid
+/// (the asperity's spherical tip, AFM surfaces) start from it.
+Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes);
 
 }  // namespace tribex::mesh

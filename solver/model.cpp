@@ -6,8 +6,10 @@
 #include <map>
 
 #include "inputs/did_you_mean.hpp"
+#include "mesh/asperity.hpp"
 #include "mesh/box.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "mesh/mesh_error.hpp"
 #include "solver/contact_setup.hpp"
 #include "solver/errors.hpp"
 #include "solver/stable_time_step.hpp"
@@ -95,6 +97,27 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
       b.grade_toward = box.grade_toward;
       b.grading_ratio = box.grading_ratio;
       mesh::append(m, mesh::generate_box(b));
+    }
+    if (spec.asperity) {
+      const auto& a = *spec.asperity;
+      mesh::AsperitySpec g;
+      g.radius = a.radius;
+      g.tip_width = a.tip_width;
+      g.tip_height = a.tip_height;
+      g.substrate_width = a.substrate_width;
+      g.substrate_depth = a.substrate_depth;
+      g.gap = a.gap;
+      g.element_size = a.element_size;
+      g.fine_half_width = a.fine_half_width;
+      g.fine_depth = a.fine_depth;
+      g.grading_ratio = a.grading_ratio;
+      g.coating_thickness = a.coating_thickness;
+      g.coating_layers = a.coating_layers;
+      try {
+        mesh::append(m, mesh::generate_asperity(g));
+      } catch (const mesh::MeshError& e) {
+        throw SetupError(a.where.str() + ": error: " + e.what());
+      }
     }
     mesh::validate(m, "generated mesh of finite element model '" + spec.name + "'");
   }

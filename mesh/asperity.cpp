@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+#include "mesh/asperity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "mesh/box.hpp"
+#include "mesh/mesh_error.hpp"
+
+namespace tribex::mesh {
+namespace {
+
+// Symmetric axis: fine spacing on [-fine, fine], graded outward to +-half.
+std::vector<double> symmetric_axis(double half, double h, double fine, double ratio) {
+  const std::vector<double> right = graded_axis(0.0, half, h, fine, ratio);
+  std::vector<double> axis;
+  for (auto it = right.rbegin(); it != right.rend(); ++it) axis.push_back(-*it);
+  axis.insert(axis.end(), right.begin() + 1, right.end());
+  return axis;
+}
+
+void rename(Mesh& m, const std::string& from, const std::string& to) {
+  if (auto it = m.side_sets.find(from); it != m.side_sets.end()) {
+    m.side_sets[to] = std::move(it->second);
+    m.side_sets.erase(it);
+  }
+  if (auto it = m.node_sets.find(from); it != m.node_sets.end()) {
+    m.node_sets[to] = std::move(it->second);
+    m.node_sets.erase(it);
+  }
+}
+
+void merge_sides(Mesh& m, const std::string& prefix, const std::string& to) {
+  std::vector<Side> sides;
+  std::vector<int> nodes;
+  for (const char* f : {"_xmin", "_xmax", "_ymin", "_ymax"}) {
+    const auto& s = m.side_sets.at(prefix + f);
+    sides.insert(sides.end(), s.begin(), s.end());
+    const auto& n = m.node_sets.at(prefix + f);
+    nodes.insert(nodes.end(), n.begin(), n.end());
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  m.side_sets[to] = std::move(sides);
+  m.node_sets[to] = std::move(nodes);
+}
+
+int nearest_node(const Mesh& m, const std::vector<int>& set, double x, double y) {
+  int best = set.front();
+  double best_d = INFINITY;
+  for (int n : set) {
+    const double d = std::hypot(m.coordinates[3 * n] - x, m.coordinates[3 * n + 1] - y);
+    if (d < best_d) {
+      best_d = d;
+      best = n;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<double> graded_axis(double lo, double hi, double h, double fine, double ratio) {
+  std::vector<double> x{lo};
+  const double length = hi - lo;
+  const int n_fine = std::max(1, static_cast<int>(std::ceil(std::min(fine, length) / h - 1e-9)));
+  const double hf = std::min(fine, length) / n_fine;
+  for (int i = 1; i <= n_fine; ++i) x.push_back(lo + i * hf);
+  double size = hf;
+  while (x.back() < hi - 1e-12 * length) {
+    size *= ratio;
+    const double next = x.back() + size;
+    // Absorb a last sliver (under half an element) into the previous element.
+    if (next >= hi || hi - next < 0.5 * size * ratio) {
+      x.push_back(hi);
+      break;
+    }
+    x.push_back(next);
+  }
+  x.back() = hi;
+  return x;
+}
+
+Mesh generate_asperity(const AsperitySpec& s) {
+  const std::string src = "asperity mesh: ";
+  auto require = [&](bool ok, const std::string& what) {
+    if (!ok) throw MeshError(src + what);
+  };
+  require(s.radius > 0 && s.element_size > 0 && s.tip_width > 0 && s.tip_height > 0 && s.substrate_width > 0 &&
+              s.substrate_depth > 0,
+          "radius, element size, tip and substrate sizes must be positive");
+  require(s.grading_ratio >= 1.0 && s.grading_ratio <= 2.0, "grading ratio must be in [1, 2]");
+  require(s.gap >= 0.0, "gap must be >= 0");
+  const double corner = s.tip_width / std::sqrt(2.0);
+  require(corner < 0.9 * s.radius, "tip width too large for the radius: the column corners (at " +
+                                       std::to_string(corner * 1e9) + " nm from the axis) must stay within 0.9 R; "
+                                       "reduce the tip width");
+  const double sag = s.radius - std::sqrt(s.radius * s.radius - corner * corner);
+  require(sag < 0.5 * s.tip_height, "tip height too small for the curvature of its bottom face; make it at least " +
+                                        std::to_string(2 * sag * 1e9) + " nm");
+  require(s.fine_half_width < 0.5 * std::min(s.tip_width, s.substrate_width),
+          "fine half width must be below half the tip and substrate widths");
+  require(s.coating_thickness >= 0 && (s.coating_thickness == 0 || s.coating_layers >= 1),
+          "coating thickness must be >= 0 with at least one layer");
+  require(s.coating_thickness < s.substrate_depth, "the coating must be thinner than the substrate depth");
+
+  const double h = s.element_size, r = s.grading_ratio;
+  // Substrate (and coating): z from -depth to 0, fine near the top.
+  std::array<std::vector<double>, 3> sub_axes;
+  sub_axes[0] = symmetric_axis(0.5 * s.substrate_width, h, s.fine_half_width, r);
+  sub_axes[1] = sub_axes[0];
+  std::vector<double> z;
+  int coating_k = -1;  // first element layer of the coating
+  if (s.coating_thickness > 0.0) {
+    const double hc = s.coating_thickness / s.coating_layers;
+    // Below the coating, continue with the coating's spacing (or h if finer) and grade down.
+    std::vector<double> below = graded_axis(0.0, s.substrate_depth - s.coating_thickness, std::min(hc, h),
+                                            std::max(0.0, s.fine_depth - s.coating_thickness), r);
+    for (auto it = below.rbegin(); it != below.rend(); ++it) z.push_back(-s.coating_thickness - *it);
+    coating_k = static_cast<int>(z.size()) - 1;
+    for (int i = 1; i <= s.coating_layers; ++i) z.push_back(-s.coating_thickness + i * hc);
+  } else {
+    const std::vector<double> down = graded_axis(0.0, s.substrate_depth, h, s.fine_depth, r);
+    for (auto it = down.rbegin(); it != down.rend(); ++it) z.push_back(-*it);
+  }
+  sub_axes[2] = z;
+  Mesh sub = generate_grid("substrate", sub_axes);
+  if (coating_k >= 0) {
+    const int layer = static_cast<int>((sub_axes[0].size() - 1) * (sub_axes[1].size() - 1));
+    const int split = coating_k * layer;
+    const int total = sub.element_count();
+    sub.blocks = {{"substrate", 0, split}, {"coating", split, total - split}};
+  }
+  rename(sub, "substrate_zmax", "substrate_top");
+  rename(sub, "substrate_zmin", "substrate_bottom");
+  merge_sides(sub, "substrate", "substrate_sides");
+
+  // Tip: a column on [-w/2, w/2]^2 x [0, H] mapped so that its bottom follows the sphere.
+  std::array<std::vector<double>, 3> tip_axes;
+  tip_axes[0] = symmetric_axis(0.5 * s.tip_width, h, s.fine_half_width, r);
+  tip_axes[1] = tip_axes[0];
+  tip_axes[2] = graded_axis(0.0, s.tip_height, h, s.fine_depth, r);
+  Mesh tip = generate_grid("tip", tip_axes);
+  const double top = s.gap + s.tip_height;
+  for (int n = 0; n < tip.node_count(); ++n) {
+    double* x = &tip.coordinates[3 * n];
+    const double zb = s.gap + s.radius - std::sqrt(s.radius * s.radius - x[0] * x[0] - x[1] * x[1]);
+    // z' in [0, H] -> [zb, top], so fine layers stay fine next to the spherical face.
+    x[2] = zb + x[2] / s.tip_height * (top - zb);
+  }
+  rename(tip, "tip_zmin", "tip_surface");
+  rename(tip, "tip_zmax", "tip_top");
+  merge_sides(tip, "tip", "tip_sides");
+  tip.node_sets["tip_axis_top"] = {nearest_node(tip, tip.node_sets.at("tip_top"), 0.0, 0.0)};
+  sub.node_sets["substrate_axis_bottom"] = {nearest_node(sub, sub.node_sets.at("substrate_bottom"), 0.0, 0.0)};
+  sub.node_sets["substrate_axis_top"] = {nearest_node(sub, sub.node_sets.at("substrate_top"), 0.0, 0.0)};
+  tip.node_sets["tip_apex"] = {nearest_node(tip, tip.node_sets.at("tip_surface"), 0.0, 0.0)};
+
+  Mesh mesh = std::move(sub);
+  append(mesh, tip);
+  validate(mesh, "asperity mesh");
+  return mesh;
+}
+
+}  // namespace tribex::mesh

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// The report's asperity problem (Fig. 3.2): a sphere-tipped asperity above a (optionally coated)
+// substrate, all hex8, graded so the elements at the contact are as small as asked while the total
+// stays small.
+//
+//            tip_top
+//        +-----------+        block `tip`: a square column (side tip_width) whose bottom face
+//        |           |        follows the sphere z = gap + R - sqrt(R^2 - x^2 - y^2) (tip_surface)
+//         \_________/  <- apex at (0, 0, gap)
+//   +-------------------------+  substrate_top (z = 0): top of block `coating` if coated, else `substrate`
+//   |                         |  substrate_sides (x, y = +-substrate_width/2), substrate_bottom (z = -depth)
+//   +-------------------------+
+//
+// In x and y the spacing is `element_size` within |x|, |y| <= fine_half_width and grows by
+// `grading_ratio` per element beyond; in z it is `element_size` within fine_depth of the contact
+// and grows likewise. Node sets of the same names as the side sets, plus `tip_axis_top` (the tip
+// top node on the axis) and `substrate_axis_bottom`.
+#pragma once
+
+#include "mesh/mesh.hpp"
+
+namespace tribex::mesh {
+
+struct AsperitySpec {
+  double radius = 27e-9;            // R of the spherical tip, m
+  double tip_width = 20e-9;         // side of the square tip column, m (corners must stay inside R)
+  double tip_height = 15e-9;        // column height above the apex, m
+  double substrate_width = 40e-9;   // side of the square substrate, m
+  double substrate_depth = 20e-9;   // m
+  double gap = 0.0;                 // apex height above the substrate top, m
+  double element_size = 0.5e-9;     // at the contact, m
+  double fine_half_width = 4e-9;    // uniformly fine region |x|, |y| <= this, m
+  double fine_depth = 2e-9;         // uniformly fine layers above the apex and below the surface, m
+  double grading_ratio = 1.25;      // growth per element outside the fine region
+  double coating_thickness = 0.0;   // bonded coating on the substrate (block `coating`), m; 0: none
+  int coating_layers = 6;           // elements through the coating
+};
+
+/// Throws MeshError for inconsistent sizes (naming the parameter and the fix).
+Mesh generate_asperity(const AsperitySpec& spec);
+
+/// Node coordinates on [lo, hi] with spacing h in [lo, lo + fine] growing by `ratio` per element
+/// after it (the last element absorbs the remainder); used by the asperity and AFM generators.
+std::vector<double> graded_axis(double lo, double hi, double h, double fine, double ratio);
+
+}  // namespace tribex::mesh
