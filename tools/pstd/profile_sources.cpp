@@ -123,27 +123,23 @@ std::string map_name(const mesh::afm::HeightMap& map) {
   if (!map.channel.empty()) name += " channel " + map.channel;
   return name;
 }
+
+/// Row iy (along x) or column ix (along y) of the map, positions from 0.
+RawProfile map_line(const mesh::afm::HeightMap& map, bool along_x, std::size_t index) {
+  RawProfile p;
+  p.origin = map_name(map) + (along_x ? " row " : " column ") + std::to_string(index);
+  const std::size_t n = along_x ? map.nx : map.ny;
+  for (std::size_t k = 0; k < n; ++k) {
+    p.x.push_back((along_x ? map.dx : map.dy) * static_cast<double>(k));
+    p.z.push_back(along_x ? map.at(k, index) : map.at(index, k));
+  }
+  return p;
+}
 }  // namespace
 
-RawProfile map_row(const mesh::afm::HeightMap& map, std::size_t iy) {
-  RawProfile p;
-  p.origin = map_name(map) + " row " + std::to_string(iy);
-  for (std::size_t ix = 0; ix < map.nx; ++ix) {
-    p.x.push_back(map.dx * static_cast<double>(ix));
-    p.z.push_back(map.at(ix, iy));
-  }
-  return p;
-}
+RawProfile map_row(const mesh::afm::HeightMap& map, std::size_t iy) { return map_line(map, true, iy); }
 
-RawProfile map_column(const mesh::afm::HeightMap& map, std::size_t ix) {
-  RawProfile p;
-  p.origin = map_name(map) + " column " + std::to_string(ix);
-  for (std::size_t iy = 0; iy < map.ny; ++iy) {
-    p.x.push_back(map.dy * static_cast<double>(iy));
-    p.z.push_back(map.at(ix, iy));
-  }
-  return p;
-}
+RawProfile map_column(const mesh::afm::HeightMap& map, std::size_t ix) { return map_line(map, false, ix); }
 
 Profile periodic_fine(const RawProfile& raw, double dx) {
   Profile p;
