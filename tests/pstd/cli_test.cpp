@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tools/cli/commands.hpp"
+#include "mesh/mesh_error.hpp"
 #include "tools/common/errors.hpp"
 
 namespace {
@@ -53,6 +54,42 @@ TEST(PstdCli, BadInputIsRejectedBeforeAnythingIsWritten) {
   EXPECT_THROW(tribex::cli::pstd_command({"--segments", "6", "-o", o}), tribex::tools::BadInput);  // 12 um > 10 um
   EXPECT_THROW(tribex::cli::pstd_command({"--restoring", "-1", "--travel", "5nm", "--no-plots", "-o", o}),
                tribex::tools::BadInput);
+  EXPECT_THROW(tribex::cli::pstd_command({"--channel", "0", "-o", o}), tribex::tools::BadInput);  // needs --afm
+  EXPECT_THROW(tribex::cli::pstd_command({"deck.i", "-o", o}), tribex::tools::BadInput);  // options only
+  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_SHARED_DIR) + "/data/afm/di-1.di", "--channel",
+                                          "99", "-o", o}),
+               tribex::mesh::MeshError);
+  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_SHARED_DIR) + "/data/afm/README.md", "-o", o}),
+               tribex::mesh::MeshError);
   EXPECT_FALSE(std::filesystem::exists(out));
   EXPECT_EQ(tribex::cli::pstd_command({"--help"}), 0);
+}
+
+TEST(PstdCli, RunsOnALineOfANanoscopeAndAGsfMap) {
+  // Any format mesh/afm reads. di-1.di: 512 px over 500 nm, so the periodic substrate is 0.5 um and the default
+  // travel (the substrate length) at 0.5 nm sampling is 1000 steps; example_gsf.gsf: 256 px over 20 um.
+  const auto base = std::filesystem::temp_directory_path() / "tribex_pstd_cli_afm";
+  std::filesystem::remove_all(base);
+  const std::string data = std::string(TRIBEX_SHARED_DIR) + "/data/afm/";
+  ASSERT_EQ(tribex::cli::pstd_command({"--afm", data + "di-1.di", "--line", "100", "--segments", "2",
+                                       "--segment-length", "200nm", "--sampling", "0.5nm", "--normal-force", "20uN",
+                                       "--no-plots", "--quiet", "-o", (base / "di").string()}),
+            0);
+  const std::string di_json = slurp(base / "di" / "summary.json");
+  EXPECT_NE(di_json.find("\"substrate\": \"di-1.di channel Height row 100\""), std::string::npos) << di_json;
+  EXPECT_NE(di_json.find("\"substrate_length_um\": 0.5,"), std::string::npos) << di_json;
+  EXPECT_NE(di_json.find("\"counterface_length_um\": 0.4,"), std::string::npos) << di_json;
+  const std::string di_csv = slurp(base / "di" / "trajectory.csv");
+  EXPECT_EQ(std::count(di_csv.begin(), di_csv.end(), '\n'), 1002);  // header + positions 0..500 nm by 0.5 nm
+
+  ASSERT_EQ(tribex::cli::pstd_command({"--afm", data + "example_gsf.gsf", "--channel", "0", "--line", "10",
+                                       "--travel", "1um", "--no-plots", "--quiet", "-o", (base / "gsf").string()}),
+            0);
+  const std::string gsf_json = slurp(base / "gsf" / "summary.json");
+  EXPECT_NE(gsf_json.find("example_gsf.gsf channel Test image row 10"), std::string::npos) << gsf_json;
+  EXPECT_NE(gsf_json.find("\"substrate_length_um\": 20,"), std::string::npos) << gsf_json;
+  EXPECT_NE(gsf_json.find("\"counterface_length_um\": 6,"), std::string::npos) << gsf_json;
+  const std::string gsf_csv = slurp(base / "gsf" / "trajectory.csv");
+  EXPECT_EQ(std::count(gsf_csv.begin(), gsf_csv.end(), '\n'), 1002);  // header + positions 0..1000 nm
+  std::filesystem::remove_all(base);
 }

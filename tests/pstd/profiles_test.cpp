@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Profile sources of the PSTD model: the seeded synthetic line (determinism, RMS, autocorrelation), linear
-// oversampling, the text profile reader and the Gwyddion ASCII height-map reader on the real AFM sample.
+// oversampling, the text profile reader and lines cut out of the real AFM samples (read by mesh/afm).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "mesh/afm/height_map.hpp"
 #include "tools/common/errors.hpp"
 #include "tools/pstd/profile_sources.hpp"
 #include "tools/pstd/profiles.hpp"
@@ -76,14 +77,36 @@ TEST(PstdProfiles, ReadsProfileFilesWithUnitsAndRejectsBadOnesWithFileAndLine) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(PstdProfiles, ReadsTheGwyddionMatrixSample) {
-  const HeightMap map = read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/matrix-3.txt");
-  EXPECT_EQ(map.nx, 256u);
-  EXPECT_EQ(map.ny, 256u);
-  EXPECT_NEAR(map.dx, 10e-6 / 256, 1e-15);
-  EXPECT_NEAR(map.z[0], 1.8823e-8, 1e-13);  // first value of the file
-  EXPECT_NEAR(map.z[1], 1.8497e-8, 1e-13);
-  const Profile seg = window_fine(map.column(3), 1e-6, 2e-6, 1e-9, true);
+TEST(PstdProfiles, CutsLinesOutOfTheGwyddionMatrixSample) {
+  // Read by mesh/afm; row 0 is the first line of the file, pixel = 10 um / 256.
+  const auto map = tribex::mesh::afm::read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/matrix-3.txt");
+  const RawProfile row = map_row(map, 0);
+  ASSERT_EQ(row.z.size(), 256u);
+  EXPECT_NEAR(row.z[0], 1.8823e-8, 1e-13);  // first value of the file
+  EXPECT_NEAR(row.z[1], 1.8497e-8, 1e-13);
+  EXPECT_NEAR(row.mean_spacing(), 10e-6 / 256, 1e-15);
+  const Profile seg = window_fine(map_column(map, 3), 1e-6, 2e-6, 1e-9, true);
   EXPECT_EQ(seg.z.size(), 2000u);
   EXPECT_NEAR(seg.source_dx, 10e-6 / 256, 1e-15);
+}
+
+TEST(PstdProfiles, CutsLinesOutOfGsfAndNanoscopeMaps) {
+  // example_gsf.gsf: XRes 256, YRes 128, XReal 20 um, YReal 10 um -> rows along x at 78.125 nm, columns along y
+  // at 78.125 nm; the profile holds the reader's heights unchanged.
+  const auto gsf = tribex::mesh::afm::read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/example_gsf.gsf");
+  const RawProfile row = map_row(gsf, 5), column = map_column(gsf, 7);
+  ASSERT_EQ(row.z.size(), 256u);
+  ASSERT_EQ(column.z.size(), 128u);
+  EXPECT_NEAR(row.x[255], 255 * 20e-6 / 256, 1e-15);
+  EXPECT_NEAR(column.x[127], 127 * 10e-6 / 128, 1e-15);
+  EXPECT_EQ(row.z[9], gsf.at(9, 5));
+  EXPECT_EQ(column.z[9], gsf.at(7, 9));
+  EXPECT_NE(row.origin.find("example_gsf.gsf"), std::string::npos) << row.origin;
+  // di-1.di: Nanoscope, 512 x 512 px over 500 nm (pixel 0.9766 nm, mesh/afm/README.md), first height channel.
+  const auto di = tribex::mesh::afm::read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/di-1.di");
+  const RawProfile di_row = map_row(di, 100);
+  ASSERT_EQ(di_row.z.size(), di.nx);
+  EXPECT_NEAR(di_row.mean_spacing(), 500e-9 / 512, 1e-13);
+  EXPECT_EQ(di_row.z[17], di.at(17, 100));
+  EXPECT_NE(di_row.origin.find("di-1.di channel Height row 100"), std::string::npos) << di_row.origin;
 }

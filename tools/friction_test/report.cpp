@@ -1,38 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "tools/friction_test/report.hpp"
 
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "tools/common/json.hpp"
+
 namespace tribex::friction_test {
-namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";  // JSON has no NaN/inf
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
-}  // namespace
+using tools::json_number;
+using tools::json_string;
 
 const Quantity& Report::get(const std::string& name) const {
   for (const auto& q : quantities)
@@ -42,18 +18,18 @@ const Quantity& Report::get(const std::string& name) const {
 
 std::string Report::json() const {
   std::ostringstream o;
-  o << "{\"command\": \"" << escape(command) << "\"";
-  for (const auto& [k, v] : text) o << ", \"" << escape(k) << "\": \"" << escape(v) << "\"";
+  o << "{\"command\": " << json_string(command);
+  for (const auto& [k, v] : text) o << ", " << json_string(k) << ": " << json_string(v);
   for (const auto& q : quantities) {
-    o << ", \"" << escape(q.name) << "\": {\"value\": " << number(q.value);
-    if (q.uncertainty >= 0) o << ", \"uncertainty\": " << number(q.uncertainty);
-    o << ", \"unit\": \"" << escape(q.unit) << "\"}";
+    o << ", " << json_string(q.name) << ": {\"value\": " << json_number(q.value);
+    if (q.uncertainty >= 0) o << ", \"uncertainty\": " << json_number(q.uncertainty);
+    o << ", \"unit\": " << json_string(q.unit) << "}";
   }
   for (const auto& [k, rows] : tables) {
-    o << ", \"" << escape(k) << "\": [";
+    o << ", " << json_string(k) << ": [";
     for (std::size_t r = 0; r < rows.size(); ++r) {
       o << (r ? ", [" : "[");
-      for (std::size_t c = 0; c < rows[r].size(); ++c) o << (c ? ", " : "") << number(rows[r][c]);
+      for (std::size_t c = 0; c < rows[r].size(); ++c) o << (c ? ", " : "") << json_number(rows[r][c]);
       o << "]";
     }
     o << "]";

@@ -2,13 +2,13 @@
 // `tribex gw`: the Greenwood-Williamson library from the command line (CSV output, nondimensional).
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/text_file.hpp"
 #include "tools/gw/gw_integrals.hpp"
 #include "tools/gw/gw_models.hpp"
 
@@ -27,22 +27,6 @@ const char* gw_usage =
     "  figures     the CSV data of Figs. 4.6, 4.7/4.8 and 4.11 into a folder (plot: tools/plot/gw_figures.py)\n"
     "Scales: area / (pi R sigma_s N), load / ((4/3) E* sqrt(R) sigma_s^{3/2} N), heights / sigma_s.\n"
     "tribex gw SUBCOMMAND --help for the options.\n";
-
-void write_output(const std::string& path, const std::string& text) {
-  if (path.empty() || path == "-") {
-    std::fputs(text.c_str(), stdout);
-    return;
-  }
-  // Write to a temporary name and rename, so a failed run leaves nothing half-written.
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw BadInput("cannot write '" + path + "' (check that its folder exists and is writable)");
-    out << text;
-    if (!out.flush()) throw BadInput("writing '" + path + "' failed (disk full?)");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw BadInput("cannot rename '" + tmp + "' to '" + path + "'");
-}
 
 struct Range {
   double lo, hi, step;
@@ -83,7 +67,7 @@ int fn(const std::vector<std::string>& argv) {
                   gw::gw_integral(1, t), gw::gw_integral(1.5, t));
     o << b;
   }
-  write_output(csv, o.str());
+  tools::write_text_output(csv, o.str());
   return tools::exit_ok;
 }
 
@@ -129,7 +113,7 @@ int curve(const std::vector<std::string>& argv) {
     }
     o << "\n";
   }
-  write_output(csv, o.str());
+  tools::write_text_output(csv, o.str());
   return tools::exit_ok;
 }
 
@@ -162,7 +146,7 @@ int tangential(const std::vector<std::string>& argv) {
     }
     o << "\n";
   }
-  write_output(csv, o.str());
+  tools::write_text_output(csv, o.str());
   return tools::exit_ok;
 }
 
@@ -204,7 +188,7 @@ int figures(const std::vector<std::string>& argv) {
       std::snprintf(b, sizeof b, "continuous,inf,%.4f,%.10g,%.10g\n", t, c.area, c.load);
       o << b;
     }
-    write_output(out + "/fig4_6.csv", o.str());
+    tools::write_text_output(out + "/fig4_6.csv", o.str());
   }
   {
     std::ostringstream o;
@@ -215,7 +199,7 @@ int figures(const std::vector<std::string>& argv) {
       std::snprintf(b, sizeof b, "%.4f,%.10g,%.10g,%.10g,%g\n", t, h.area, h.load, gw::dmt_gw(t, beta).load, beta);
       o << b;
     }
-    write_output(out + "/fig4_7_8.csv", o.str());
+    tools::write_text_output(out + "/fig4_7_8.csv", o.str());
   }
   {
     std::ostringstream o;
@@ -231,7 +215,7 @@ int figures(const std::vector<std::string>& argv) {
                     gw::tangential_gw_discrete(pop, t, s) / a_discrete);
       o << b;
     }
-    write_output(out + "/fig4_11.csv", o.str());
+    tools::write_text_output(out + "/fig4_11.csv", o.str());
   }
   std::printf("wrote %s/fig4_6.csv, fig4_7_8.csv, fig4_11.csv\n", out.c_str());
   return tools::exit_ok;

@@ -34,7 +34,4 @@ void write_contacts_csv(const std::string& path, const std::vector<ContactReport
 void write_study_csv(const std::string& path, const std::vector<StudyRow>& rows);
 void write_study_trajectories_csv(const std::string& path, const std::vector<StudyRow>& rows);
 
-/// Minimal JSON string escaping for the summary.
-std::string json_string(const std::string& s);
-
 }  // namespace tribex::pstd

@@ -115,86 +115,31 @@ RawProfile read_profile_file(const std::string& path, std::optional<double> dx) 
   return p;
 }
 
-RawProfile HeightMap::row(std::size_t r) const {
+namespace {
+/// "…/data/afm/di-1.di" with channel "Height" -> "di-1.di channel Height".
+std::string map_name(const mesh::afm::HeightMap& map) {
+  const auto slash = map.source.find_last_of('/');
+  std::string name = slash == std::string::npos ? map.source : map.source.substr(slash + 1);
+  if (!map.channel.empty()) name += " channel " + map.channel;
+  return name;
+}
+
+/// Row iy (along x) or column ix (along y) of the map, positions from 0.
+RawProfile map_line(const mesh::afm::HeightMap& map, bool along_x, std::size_t index) {
   RawProfile p;
-  p.origin = origin + " row " + std::to_string(r);
-  for (std::size_t c = 0; c < nx; ++c) {
-    p.x.push_back(dx * static_cast<double>(c));
-    p.z.push_back(z[r * nx + c]);
+  p.origin = map_name(map) + (along_x ? " row " : " column ") + std::to_string(index);
+  const std::size_t n = along_x ? map.nx : map.ny;
+  for (std::size_t k = 0; k < n; ++k) {
+    p.x.push_back((along_x ? map.dx : map.dy) * static_cast<double>(k));
+    p.z.push_back(along_x ? map.at(k, index) : map.at(index, k));
   }
   return p;
 }
+}  // namespace
 
-RawProfile HeightMap::column(std::size_t c) const {
-  RawProfile p;
-  p.origin = origin + " column " + std::to_string(c);
-  for (std::size_t r = 0; r < ny; ++r) {
-    p.x.push_back(dy * static_cast<double>(r));
-    p.z.push_back(z[r * nx + c]);
-  }
-  return p;
-}
+RawProfile map_row(const mesh::afm::HeightMap& map, std::size_t iy) { return map_line(map, true, iy); }
 
-HeightMap read_height_map(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw tools::BadInput(path + ": cannot open the height map; check the path");
-  HeightMap map;
-  map.origin = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
-  double width = 0.0, height = 0.0, z_unit = 0.0;
-  std::string line;
-  std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const std::string at = where(path, number);
-    if (!line.empty() && line[0] == '#') {
-      const auto colon = line.find(':');
-      if (colon == std::string::npos) continue;
-      std::string key = line.substr(1, colon - 1);
-      while (!key.empty() && key.front() == ' ') key.erase(key.begin());
-      const std::string value = line.substr(colon + 1);
-      std::string error;
-      if (key == "Width" || key == "Height") {
-        auto q = inputs::parse_quantity(value, &error);
-        if (!q || !(q->dimension == inputs::dim::length) || !(q->value > 0))
-          throw tools::BadInput(at + ": '" + key + ":' needs a positive length like '10.00 µm'" +
-                                (error.empty() ? "" : " (" + error + ")"));
-        (key == "Width" ? width : height) = q->value;
-      } else if (key == "Value units") {
-        std::string u = value;
-        while (!u.empty() && u.front() == ' ') u.erase(u.begin());
-        auto q = inputs::parse_unit(u, &error);
-        if (!q || !(q->dimension == inputs::dim::length))
-          throw tools::BadInput(at + ": 'Value units:' must be a length unit (m, nm), got '" + u + "'");
-        z_unit = q->value;
-      }
-      continue;
-    }
-    const auto fields = split_fields(line);
-    if (fields.empty()) continue;
-    if (width <= 0 || height <= 0 || z_unit <= 0)
-      throw tools::BadInput(at + ": not a Gwyddion ASCII matrix (data before the '# Width:', '# Height:' and "
-                            "'# Value units:' header lines); --afm reads only that format for now: export a line "
-                            "as x[nm],z[nm] CSV and use --substrate-file");
-    if (map.nx == 0) map.nx = fields.size();
-    if (fields.size() != map.nx)
-      throw tools::BadInput(at + ": row has " + std::to_string(fields.size()) + " values, the first row had " +
-                            std::to_string(map.nx) + "; the matrix must be rectangular");
-    for (const auto& f : fields) {
-      double v = 0.0;
-      if (!parse_number(f, v)) throw tools::BadInput(at + ": '" + f + "' is not a finite number");
-      map.z.push_back(v * (z_unit > 0 ? z_unit : 1.0));
-    }
-    ++map.ny;
-  }
-  if (width <= 0 || height <= 0 || z_unit <= 0)
-    throw tools::BadInput(path + ": not a Gwyddion ASCII matrix: the header needs '# Width:', '# Height:' and "
-                          "'# Value units:' lines (other AFM formats: export a line as x[nm],z[nm] CSV)");
-  if (map.nx < 3 || map.ny < 3) throw tools::BadInput(path + ": height map smaller than 3 x 3");
-  map.dx = width / static_cast<double>(map.nx);
-  map.dy = height / static_cast<double>(map.ny);
-  return map;
-}
+RawProfile map_column(const mesh::afm::HeightMap& map, std::size_t ix) { return map_line(map, false, ix); }
 
 Profile periodic_fine(const RawProfile& raw, double dx) {
   Profile p;

@@ -3,15 +3,15 @@
 // map gives the substrate as one row (the scan direction) and counterface segments as pieces of columns
 // (orthogonal to the scan direction), as in the report. Positions and heights are SI.
 //
-// The only height-map format read here is Gwyddion's ASCII matrix export (`# Width: 10.00 µm` header lines,
-// then rows of numbers). Other AFM formats plug in by converting their map to HeightMap in read_height_map()
-// once the mesh/afm readers exist (a few lines; see README.md).
+// Height maps are read by mesh/afm (every format it knows: Nanoscope, .gsf, Gwyddion matrix, xyz text); this
+// file only cuts lines out of them.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "mesh/afm/height_map.hpp"
 #include "tools/pstd/profiles.hpp"
 
 namespace tribex::pstd {
@@ -28,17 +28,10 @@ struct RawProfile {
 /// blank separated. Errors are tools::BadInput naming file:line.
 RawProfile read_profile_file(const std::string& path, std::optional<double> dx);
 
-struct HeightMap {
-  std::size_t nx = 0, ny = 0;  // columns (fast scan, x) and rows (y)
-  double dx = 0.0, dy = 0.0;   // pixel sizes, m
-  std::vector<double> z;       // row-major, z[row * nx + col], m
-  std::string origin;
-  RawProfile row(std::size_t r) const;     // along x: the scan direction
-  RawProfile column(std::size_t c) const;  // along y: orthogonal to the scan direction
-};
-
-/// Reads a height map; today Gwyddion ASCII matrix text. Errors are tools::BadInput naming file:line.
-HeightMap read_height_map(const std::string& path);
+/// Row iy of a height map: along x, the fast-scan direction; positions from 0, heights as stored (m).
+RawProfile map_row(const mesh::afm::HeightMap& map, std::size_t iy);
+/// Column ix of a height map: along y, orthogonal to the scan direction.
+RawProfile map_column(const mesh::afm::HeightMap& map, std::size_t ix);
 
 /// The whole source line, oversampled to spacing dx and closed periodically (the substrate).
 Profile periodic_fine(const RawProfile& raw, double dx);

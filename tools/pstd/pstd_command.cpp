@@ -2,9 +2,7 @@
 // `tribex pstd`: the pre-sliding tangential deflection model of the seed report, Section 2.1.9.
 // Builds the substrate and counterface profiles, runs the quasi-static stepping (tools/pstd/stepping.hpp),
 // detects PSTD events (events.hpp), and writes CSV, JSON and PNG plots into the output folder.
-#include <cctype>
 #include <chrono>
-#include <map>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,10 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "mesh/afm/height_map.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/json.hpp"
+#include "tools/common/text_file.hpp"
 #include "tools/pstd/counterface.hpp"
-#include "tools/pstd/deck.hpp"
 #include "tools/pstd/events.hpp"
 #include "tools/pstd/output.hpp"
 #include "tools/pstd/profile_sources.hpp"
@@ -26,17 +26,18 @@ namespace tribex::cli {
 namespace {
 
 const char* usage =
-    "usage: tribex pstd [DECK.i] [options]\n"
+    "usage: tribex pstd [options]\n"
     "\n"
     "Quasi-static 2-D model of pre-sliding tangential deflection (seed report, Section 2.1.9): a rigid\n"
     "counterface of linked line scans is pressed onto a substrate line to a normal force; it advances 1 grid\n"
     "step whenever the restoring force exceeds the shear capacity tau*A, otherwise it is lifted (normal force\n"
     "reduced) until it does. Lengths and forces take units (10nm, 2um, 50uN); plain numbers are SI.\n"
-    "A deck (first argument) holds 'begin pstd' ... 'end pstd' with 'key = value' lines (keys below);\n"
-    "options after it override its values.\n"
+    "Worked example (a real AFM line, the apparent-area study): tools/pstd/README.md.\n"
     "\n"
     "profiles (default: seeded synthetic Gaussian-correlated lines):\n"
-    "  --afm FILE              height map (Gwyddion ASCII matrix .txt): substrate = a row, segments = columns\n"
+    "  --afm FILE              AFM height map (Nanoscope .di/.spm/.000, Gwyddion .gsf or ASCII matrix, x y z\n"
+    "                          text; mesh/afm): substrate = a row (scan direction), segments = columns\n"
+    "  --channel N             image channel of a multi-channel --afm file (default: the first height channel)\n"
     "  --line N                row of --afm used as substrate (default: chosen from --seed)\n"
     "  --substrate-file FILE   substrate profile: 'x[nm],z[nm]' CSV, or one z per line with --dx\n"
     "  --counterface-file FILE counterface profile (same format), cut into --segments pieces\n"
@@ -58,7 +59,7 @@ const char* usage =
     "  --restoring c0,c1,...   restoring force polynomial, uN with x in um\n"
     "                          (0.5796,4.3572,0.1080,0.0435,-0.0001: eq. 2.8)\n"
     "  --travel LEN            sliding distance (default: the substrate length; the substrate is periodic)\n"
-"  --start-displacement LEN  device displacement x0 at the start; each advance reduces x by one grid\n"
+    "  --start-displacement LEN  device displacement x0 at the start; each advance reduces x by one grid\n"
     "                          step toward neutral (default: --travel, so x runs from travel to 0)\n"
     "  --copies N              copies of the counterface moving in unison (1)\n"
     "  --study                 also run 1..N copies (apparent-area study, report Fig. 2.24)\n"
@@ -70,20 +71,6 @@ const char* usage =
     "                          summary.json normal_force.png contacts_area.png [area_study.csv/.png]\n"
     "  --no-plots              skip the PNG plots (they need /usr/bin/python3 with matplotlib)\n"
     "  --quiet                 print nothing on success\n";
-
-/// The option named in a BadInput message ("tribex pstd --copies: ..." or "... --copies must ..."), if any.
-std::string option_in(const std::string& message, const std::map<std::string, std::string>& where) {
-  std::string best;
-  for (const auto& [option, at] : where) {
-    for (auto pos = message.find(option); pos != std::string::npos; pos = message.find(option, pos + 1)) {
-      const std::size_t end = pos + option.size();
-      const bool word_end = end == message.size() || !(std::isalnum(static_cast<unsigned char>(message[end])) ||
-                                                        message[end] == '-');
-      if (word_end && option.size() > best.size()) best = option;
-    }
-  }
-  return best;
-}
 
 using pstd::Profile;
 
@@ -98,6 +85,7 @@ Profiles make_profiles(tools::Args& a, double dx, std::uint64_t seed) {
   const double segment_length = a.quantity("--segment-length", 2e-6, dim::length);
   const auto afm = a.text("--afm");
   const long line = a.integer("--line", -1);
+  const long channel = a.integer("--channel", -1);
   const auto substrate_file = a.text("--substrate-file");
   const auto counterface_file = a.text("--counterface-file");
   const auto file_dx = a.quantity("--dx", dim::length);
@@ -110,6 +98,9 @@ Profiles make_profiles(tools::Args& a, double dx, std::uint64_t seed) {
   if (afm && (substrate_file || counterface_file))
     throw tools::BadInput("tribex pstd: give either --afm or --substrate-file/--counterface-file, not both");
   if (line != -1 && !afm) throw tools::BadInput("tribex pstd: --line selects a row of --afm; add --afm FILE");
+  if (channel != -1 && !afm) throw tools::BadInput("tribex pstd: --channel selects a channel of --afm; add --afm FILE");
+  if (line < -1 || channel < -1 || channel > 1000)
+    throw tools::BadInput("tribex pstd: --line and --channel count from 0 (--channel at most 1000)");
   if (!(rms >= 0) || !(corr > 0) || !(source_dx > 0) || !(substrate_length > 0))
     throw tools::BadInput("tribex pstd: --rms must be >= 0 and --corr, --source-dx, --substrate-length > 0");
   if (source_dx < dx) throw tools::BadInput("tribex pstd: --source-dx must not be finer than --sampling");
@@ -117,12 +108,13 @@ Profiles make_profiles(tools::Args& a, double dx, std::uint64_t seed) {
   Profiles p;
   const auto k_segments = static_cast<std::size_t>(segments);
   if (afm) {
-    const pstd::HeightMap map = pstd::read_height_map(*afm);
+    // Any format mesh/afm reads; its errors are mesh::MeshError naming file:line or byte (exit code 2).
+    const mesh::afm::HeightMap map = mesh::afm::read_height_map(*afm, static_cast<int>(channel));
     if (line >= static_cast<long>(map.ny))
       throw tools::BadInput("tribex pstd: --line " + std::to_string(line) + " is beyond the " +
                             std::to_string(map.ny) + " rows of " + *afm + " (use 0.." + std::to_string(map.ny - 1) + ")");
     const std::size_t row = line >= 0 ? static_cast<std::size_t>(line) : pstd::seeded_index(seed, 0, map.ny);
-    pstd::RawProfile sub = map.row(row);
+    pstd::RawProfile sub = pstd::map_row(map, row);
     pstd::level(sub.z);  // AFM line levelling
     p.substrate = pstd::periodic_fine(sub, dx);
     const double column_length = map.dy * static_cast<double>(map.ny - 1);
@@ -133,7 +125,7 @@ Profiles make_profiles(tools::Args& a, double dx, std::uint64_t seed) {
       const std::size_t col = pstd::seeded_index(seed, 100 + k, map.nx);
       const auto slots = static_cast<std::size_t>((column_length - segment_length) / map.dy) + 1;
       const double start = map.dy * static_cast<double>(pstd::seeded_index(seed, 200 + k, slots));
-      p.segments.push_back(pstd::window_fine(map.column(col), start, segment_length, dx, true));
+      p.segments.push_back(pstd::window_fine(pstd::map_column(map, col), start, segment_length, dx, true));
       p.segments.back().origin += " from " + std::to_string(start * 1e9) + " nm";
     }
     return p;
@@ -168,44 +160,14 @@ Profiles make_profiles(tools::Args& a, double dx, std::uint64_t seed) {
   return p;
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
-int pstd_run(const std::vector<std::string>& args);
 
 }  // namespace
 
-int pstd_command(const std::vector<std::string>& cli_args) {
-  // A deck as first argument expands to options; options after it override the deck's.
-  pstd::DeckArgs deck;
-  std::vector<std::string> args = cli_args;
-  if (!args.empty() && !args[0].empty() && args[0][0] != '-') {
-    deck = pstd::read_deck(args[0]);
-    args.erase(args.begin());
-    for (const auto& option : args) deck.where.erase(option);  // overridden: errors are the command line's
-    args.insert(args.begin(), deck.args.begin(), deck.args.end());
-  }
-  try {
-    return pstd_run(args);
-  } catch (const tools::BadInput& e) {
-    const std::string option = option_in(e.what(), deck.where);
-    if (option.empty()) throw;
-    throw tools::BadInput(deck.where.at(option) + ": " + e.what());
-  }
-}
-
-namespace {
-
-int pstd_run(const std::vector<std::string>& args) {
+int pstd_command(const std::vector<std::string>& args) {
   namespace dim = inputs::dim;
   tools::Args a(args, "tribex pstd", usage, {"--study", "--no-plots", "--quiet"});
   if (a.help_requested()) {
     std::fputs(usage, stdout);
-    std::fputs("\ndeck keys (deck key, option):\n", stdout);
-    std::fputs(pstd::deck_keys_help().c_str(), stdout);
     return tools::exit_ok;
   }
   // 1. Everything is read and checked before anything is computed or written.
@@ -241,6 +203,9 @@ int pstd_run(const std::vector<std::string>& args) {
   const auto seed = static_cast<std::uint64_t>(seed_arg);
   const Profiles profiles = make_profiles(a, dx, seed);
   a.finish();
+  if (a.positional_count() > 0)
+    throw tools::BadInput("tribex pstd: unexpected argument '" + *a.optional_positional(0) +
+                          "'; pstd takes options only (the worked example is in tools/pstd/README.md)");
 
   pstd::Mechanics mech;
   mech.law = law == "2d" ? pstd::ContactLaw::line_2d : pstd::ContactLaw::hertz_3d;
@@ -251,7 +216,7 @@ int pstd_run(const std::vector<std::string>& args) {
   const double travel = travel_arg ? *travel_arg : substrate_length;
   if (!(travel >= 0) || travel > substrate_length * (1 + 1e-12))
     throw tools::BadInput("tribex pstd: --travel must be between 0 and the substrate length (" +
-                          number(substrate_length * 1e6) + " um)");
+                          tools::json_number(substrate_length * 1e6) + " um)");
   pstd::Drive drive;
   drive.restoring_uN_per_um_pow = restoring;
   drive.steps = static_cast<std::size_t>(std::floor(travel / dx + 1e-9));
@@ -296,27 +261,37 @@ int pstd_run(const std::vector<std::string>& args) {
   }
   const double a_ref = pstd::reference_half_width(main.run);
   {
-    std::FILE* f = std::fopen((dir + "summary.json").c_str(), "w");
-    if (!f) throw tools::BadInput(dir + "summary.json: cannot write; check the output folder");
+    using tools::json_number;
+    using tools::json_string;
     std::string segs;
-    for (const auto& s : profiles.segments) segs += (segs.empty() ? "" : ", ") + pstd::json_string(s.origin);
-    std::fprintf(f,
-                 "{\n  \"model\": \"pstd\",\n  \"law\": \"%s\",\n  \"seed\": %lu,\n  \"substrate\": %s,\n"
-                 "  \"counterface_segments\": [%s],\n  \"substrate_length_um\": %s,\n  \"counterface_length_um\": %s,\n"
-                 "  \"sampling_nm\": %s,\n  \"curvature_span_nm\": %s,\n  \"effective_modulus_GPa\": %s,\n"
-                 "  \"depth_um\": %s,\n  \"tau_MPa\": %s,\n  \"copies\": %zu,\n  \"normal_force_uN\": %s,\n"
-                 "  \"travel_um\": %s,\n  \"initial_contacts\": %d,\n  \"initial_true_area_um2\": %s,\n"
-                 "  \"final_normal_force_uN\": %s,\n  \"reference_half_width_nm\": %s,\n  \"pstd_events\": %zu,\n"
-                 "  \"contacts_beyond_2d_law_range\": %zu,\n  \"wall_time_s\": %s\n}\n",
-                 law.c_str(), static_cast<unsigned long>(seed), pstd::json_string(profiles.substrate.origin).c_str(),
-                 segs.c_str(), number(substrate_length * 1e6).c_str(), number(counterface_length * 1e6).c_str(),
-                 number(dx * 1e9).c_str(), number(main_model.curvature_span * dx * 1e9).c_str(),
-                 number(mech.modulus * 1e-9).c_str(), number(depth * 1e6).c_str(), number(tau * 1e-6).c_str(),
-                 main.copies, number(main.normal_force * 1e6).c_str(), number(travel * 1e6).c_str(),
-                 main.run.initial_contacts, number(main.run.initial_area * 1e12).c_str(),
-                 number(main.run.steps.back().normal_force * 1e6).c_str(), number(a_ref * 1e9).c_str(),
-                 main.events.size(), main.run.clamped_contacts, number(main.wall_seconds).c_str());
-    std::fclose(f);
+    for (const auto& s : profiles.segments) segs += (segs.empty() ? "" : ", ") + json_string(s.origin);
+    const std::pair<const char*, std::string> fields[] = {
+        {"model", json_string("pstd")},
+        {"law", json_string(law)},
+        {"seed", std::to_string(seed)},
+        {"substrate", json_string(profiles.substrate.origin)},
+        {"counterface_segments", "[" + segs + "]"},
+        {"substrate_length_um", json_number(substrate_length * 1e6)},
+        {"counterface_length_um", json_number(counterface_length * 1e6)},
+        {"sampling_nm", json_number(dx * 1e9)},
+        {"curvature_span_nm", json_number(static_cast<double>(main_model.curvature_span) * dx * 1e9)},
+        {"effective_modulus_GPa", json_number(mech.modulus * 1e-9)},
+        {"depth_um", json_number(depth * 1e6)},
+        {"tau_MPa", json_number(tau * 1e-6)},
+        {"copies", std::to_string(main.copies)},
+        {"normal_force_uN", json_number(main.normal_force * 1e6)},
+        {"travel_um", json_number(travel * 1e6)},
+        {"initial_contacts", std::to_string(main.run.initial_contacts)},
+        {"initial_true_area_um2", json_number(main.run.initial_area * 1e12)},
+        {"final_normal_force_uN", json_number(main.run.steps.back().normal_force * 1e6)},
+        {"reference_half_width_nm", json_number(a_ref * 1e9)},
+        {"pstd_events", std::to_string(main.events.size())},
+        {"contacts_beyond_2d_law_range", std::to_string(main.run.clamped_contacts)},
+        {"wall_time_s", json_number(main.wall_seconds)},
+    };
+    std::string json = "{";
+    for (const auto& [key, value] : fields) json += std::string(json.size() > 1 ? ",\n  " : "\n  ") + json_string(key) + ": " + value;
+    tools::write_text_file(dir + "summary.json", json + "\n}\n");
   }
   if (plots) {
     const std::string cmd = std::string("/usr/bin/python3 '") + TRIBEX_PSTD_PLOT_SCRIPT + "' '" + out_dir + "'";
@@ -338,7 +313,5 @@ int pstd_run(const std::vector<std::string>& args) {
   }
   return tools::exit_ok;
 }
-
-}  // namespace
 
 }  // namespace tribex::cli

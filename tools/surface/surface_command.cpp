@@ -11,10 +11,10 @@
 #include "mesh/afm/preprocess.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/text_file.hpp"
 #include "tools/surface/mccool.hpp"
 #include "tools/surface/spectral_moments.hpp"
 #include "tools/surface/summit_contact.hpp"
-#include <fstream>
 #include <sstream>
 #include <algorithm>
 
@@ -282,18 +282,7 @@ int contact(const std::vector<std::string>& argv) {
     std::snprintf(b, sizeof b, "%.9g,%zu,%.9g,%.9g,%.9g\n", h, c.contacts, c.area / area, c.load_hertz / area, c.load_dmt / area);
     o << b;
   }
-  if (csv.empty()) {
-    std::fputs(o.str().c_str(), stdout);
-  } else {
-    const std::string tmp = csv + ".tmp";
-    {
-      std::ofstream out(tmp, std::ios::binary);
-      if (!out) throw BadInput("cannot write '" + csv + "' (check that its folder exists and is writable)");
-      out << o.str();
-      if (!out.flush()) throw BadInput("writing '" + csv + "' failed");
-    }
-    if (std::rename(tmp.c_str(), csv.c_str()) != 0) throw BadInput("cannot rename '" + tmp + "' to '" + csv + "'");
-  }
+  tools::write_text_output(csv, o.str());
   return tools::exit_ok;
 }
 
