@@ -36,6 +36,10 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
     x_ = model.mesh.coordinates;
     f_contact_.assign(n3, 0.0);
   }
+  if (!model.silent.node.empty()) {
+    silent_index_.assign(model.mass.size(), -1);
+    for (std::size_t k = 0; k < model.silent.node.size(); ++k) silent_index_[model.silent.node[k]] = static_cast<int>(k);
+  }
   inverse_mass_.resize(model.mass.size());
   for (std::size_t n = 0; n < model.mass.size(); ++n) inverse_mass_[n] = 1.0 / model.mass[n];
 }
@@ -171,8 +175,23 @@ void CentralDifference::apply_constraints() {
     if (c.kind[k] == Kind::displacement)
       v = dt_half_ > 0.0 ? (c.scale[k] * model_.functions[c.function[k]](t_next) - u_[dof]) / dt_half_ : 0.0;
     v_[dof] = v;
-    // R^n = m (v^{n+1/2} - v^{n-1/2}) / dt^n - f^n
-    reaction_[dof] = model_.mass[dof / 3] * (v - v_prev_[dof]) / dt_n_ - f_[dof];
+  }
+  // R^n = m (v^{n+1/2} - v^{n-1/2}) / dt^n - f^n - F_damp^n: the constraint also balances the mass
+  // damping and dashpot forces (-C v^n) acting on the constrained dof, which the dissipation
+  // terms count; leaving them out would put their work in neither ledger.
+  const auto& sb = model_.silent;
+  for (int dof : c.dof) {
+    const int node = dof / 3, i = dof % 3;
+    const double m = model_.mass[node];
+    const double vbar = 0.5 * (v_[dof] + v_prev_[dof]);
+    double damping = -model_.mass_damping * m * vbar;
+    if (const int k = silent_index_.empty() ? -1 : silent_index_[node]; k >= 0) {
+      const double* nv = &sb.normal[3 * k];
+      double vn = 0.0;
+      for (int j = 0; j < 3; ++j) vn += 0.5 * (v_[3 * node + j] + v_prev_[3 * node + j]) * nv[j];
+      damping -= sb.c_normal[k] * vn * nv[i] + sb.c_tangential[k] * (vbar - vn * nv[i]);
+    }
+    reaction_[dof] = m * (v_[dof] - v_prev_[dof]) / dt_n_ - f_[dof] - damping;
   }
 }
 
@@ -183,7 +202,9 @@ void CentralDifference::account_time_n() {
   // energy balance measures the model, not the averaging of v^n. At n = 0, v^{-1/2} = v^0.
   double ke = 0.0;
   const double h = dt_n_;
+  momentum_[0] = momentum_[1] = momentum_[2] = 0.0;
   for (std::size_t d = 0; d < v_.size(); ++d) {
+    momentum_[d % 3] += mass[d / 3] * (step_ == 0 ? v_prev_[d] : 0.5 * (v_prev_[d] + v_[d]));
     v_n_[d] = step_ == 0 ? v_prev_[d] : 0.5 * (v_prev_[d] + v_[d]);  // reported v^n
     a_[d] = (v_[d] - v_prev_[d]) / h;
     ke += 0.5 * mass[d / 3] * v_prev_[d] * v_[d];

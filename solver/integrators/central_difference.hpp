@@ -61,6 +61,7 @@ class CentralDifference {
   const std::vector<double>& reaction() const { return reaction_; }  // R^n at constrained dofs, else 0
   const Energies& energies() const { return energies_; }
   const contact::ContactTotals& contact_totals() const { return contact_totals_; }  // at time n
+  const double* momentum() const { return momentum_; }  // sum m v^n, kg m/s
   const StableStep& stable_step() const { return stable_; }
   double time_step_scale_factor() const { return scale_factor_; }
   /// Set by the driver: does the step that reaches (t, n) write element fields? Element stresses
@@ -83,6 +84,7 @@ class CentralDifference {
   double dt_n_ = 0.0, dt_half_ = 0.0, dt_prev_half_ = 0.0;
   std::vector<double> u_, v_, v_prev_, v_n_, a_, f_, f_ext_, reaction_;
   std::vector<double> inverse_mass_;
+  std::vector<int> silent_index_;  // [node] index into model.silent, -1 if none (empty: no silent nodes)
   Energies energies_;
   StableStep stable_;
   double external_power_right_ = 0.0;  // F_ext^{n-1} . v^{n-1/2}, for the trapezoidal work rule
@@ -91,6 +93,7 @@ class CentralDifference {
   // Contact: current positions of surface nodes, contact forces, totals, lagged contact power.
   std::vector<double> x_, f_contact_;
   contact::ContactTotals contact_totals_;
+  double momentum_[3] = {0, 0, 0};
   double contact_power_right_ = 0.0;
   std::function<bool(double, long)> wants_stress_;
 };
