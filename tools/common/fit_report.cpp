@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "tools/friction_test/report.hpp"
+#include "tools/common/fit_report.hpp"
 
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 namespace {
 
 std::string escape(const std::string& s) {
@@ -34,13 +34,13 @@ std::string number(double v) {
 
 }  // namespace
 
-const Quantity& Report::get(const std::string& name) const {
+const ReportedQuantity& FitReport::get(const std::string& name) const {
   for (const auto& q : quantities)
     if (q.name == name) return q;
   throw std::out_of_range("no quantity " + name);
 }
 
-std::string Report::json() const {
+std::string FitReport::json() const {
   std::ostringstream o;
   o << "{\"command\": \"" << escape(command) << "\"";
   for (const auto& [k, v] : text) o << ", \"" << escape(k) << "\": \"" << escape(v) << "\"";
@@ -62,7 +62,7 @@ std::string Report::json() const {
   return o.str();
 }
 
-void Report::print_table(std::FILE* to) const {
+void FitReport::print_table(std::FILE* to) const {
   for (const auto& [k, v] : text) std::fprintf(to, "%-24s %s\n", k.c_str(), v.c_str());
   for (const auto& q : quantities) {
     if (q.uncertainty >= 0)
@@ -73,4 +73,4 @@ void Report::print_table(std::FILE* to) const {
   }
 }
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools
