@@ -191,6 +191,10 @@ int friction_command(const std::vector<std::string>& argv) {
     r.add("ebar_c_over_ebar", ebar_c / model.plane_strain_modulus(), -1, "");
     r.add("A", law.A, law.A_sigma > 0 ? law.A_sigma : -1, "", setup.area_law ? "given" : "from the coating table");
     r.add("b", law.b, law.b_sigma > 0 ? law.b_sigma : -1, "", setup.area_law ? "given" : "from the coating table");
+    // F ~ tau A where f = A P~^b is not clipped, so A's own uncertainty moves tau by the same fraction;
+    // kept apart from the statistical sigma (it is systematic: one table for all the data).
+    if (law.A_sigma > 0)
+      r.add("tau_systematic_from_A", fit.best.tau * law.A_sigma / law.A, -1, "Pa", "tau A_sigma/A, not in tau's sigma");
     double pt_lo = INFINITY, pt_hi = 0;
     for (double l : load) {
       const double pt = (l + 2 * std::numbers::pi * setup.radius * fit.best.work_of_adhesion) /
@@ -204,7 +208,7 @@ int friction_command(const std::vector<std::string>& argv) {
       const auto c = tau_over_ec_power(fit, 2.0 / 3.0);
       r.add("tau_over_Ec^(2/3)", c.value, c.sigma, "Pa^(1/3)", "report 3.3's combination");
       const auto v = tau_over_ec_valley(fit);
-      r.add("valley_exponent_k", v.exponent, -1, "", "best-determined tau/Ec^k (2/3 + b when f is unclipped)");
+      r.add("valley_exponent_k", v.exponent, -1, "", "best-determined tau/Ec^k (~2/3 + b, less as A, b vary with Ec)");
       r.add("tau_over_Ec^k", v.value, v.sigma, "Pa^(1-k)", "the combination the data determine best");
     }
   }

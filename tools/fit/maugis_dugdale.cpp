@@ -16,6 +16,31 @@ double eq1(double a, double m, double lambda) {
          1.0;
 }
 
+// Root of an increasing f on [lo, hi] with f(lo) < 0 < f(hi): the Illinois variant of regula falsi
+// (superlinear, and it keeps the bracket, so it cannot leave the stable branch).
+template <class F>
+double bracketed_root(F&& f, double lo, double hi, double rel_tol) {
+  double f_lo = f(lo), f_hi = f(hi);
+  int side = 0;
+  for (int it = 0; it < 200 && hi - lo > rel_tol * hi; ++it) {
+    double x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const double fx = f(x);
+    if (fx == 0.0) return x;
+    if (fx < 0) {
+      lo = x, f_lo = fx;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = x, f_hi = fx;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
+    if (std::abs(fx) < 1e-15) break;
+  }
+  return std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
+}
+
 }  // namespace
 
 double MaugisPoint::carried_bar(double lambda) const {
@@ -54,11 +79,7 @@ MaugisPoint MaugisDugdale::at_radius(double a_bar) const {
     hi *= 2.0;
     if (hi > 1e12) throw std::runtime_error("Maugis-Dugdale: no Dugdale-zone size m solves Eq. (1)");
   }
-  for (int it = 0; it < 200 && hi - lo > 1e-14 * hi; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (eq1(a_bar, mid, lambda_) < 0.0 ? lo : hi) = mid;
-  }
-  p.m = 0.5 * (lo + hi);
+  p.m = bracketed_root([&](double m) { return eq1(a_bar, m, lambda_); }, lo, hi, 1e-14);
   const double s = std::sqrt(p.m * p.m - 1.0);
   p.p_bar = a_bar * a_bar * a_bar - lambda_ * a_bar * a_bar * (s + p.m * p.m * std::atan(s));
   return p;
@@ -71,12 +92,9 @@ MaugisPoint MaugisDugdale::at_load(double p_bar) const {
     lo = hi;
     hi *= 2.0;
   }
-  // P_bar rises monotonically on the stable branch: bisection to round-off in a_bar.
-  for (int it = 0; it < 200 && hi - lo > 1e-13 * hi; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (at_radius(mid).p_bar < p_bar ? lo : hi) = mid;
-  }
-  return at_radius(0.5 * (lo + hi));
+  // P_bar rises monotonically on the stable branch.
+  if (p_bar == pull_off_.p_bar) return pull_off_;
+  return at_radius(bracketed_root([&](double a) { return at_radius(a).p_bar - p_bar; }, lo, hi, 1e-13));
 }
 
 }  // namespace tribex::fit

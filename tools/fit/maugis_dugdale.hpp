@@ -6,7 +6,7 @@
 //   (1) (lambda a^2/2)[s + (m^2-2) atan s] + (4 lambda^2 a/3)[s atan s - m + 1] = 1,  s = sqrt(m^2-1)
 //   (2) P_bar = a^3 - lambda a^2 [s + m^2 atan s]
 // For a given a_bar, (1) is strictly increasing in m (dF/dm = lambda a^2 (s/m + m atan s) +
-// (4 lambda^2 a/3)(m atan(s)/s + 1/m - 1) > 0), so m is found by bracketing and bisection.
+// (4 lambda^2 a/3)(m atan(s)/s + 1/m - 1) > 0), so m is found by bracketing and the Illinois method.
 // Under load control the stable branch is a_bar >= a_bar at min P_bar (the pull-off).
 #pragma once
 
@@ -30,7 +30,7 @@ class MaugisDugdale {
   MaugisPoint at_radius(double a_bar) const;
   /// The load-controlled pull-off (minimum of P_bar over a_bar).
   const MaugisPoint& pull_off() const { return pull_off_; }
-  /// The stable-branch solution at load p_bar >= pull_off().p_bar (bisection in a_bar).
+  /// The stable-branch solution at load p_bar >= pull_off().p_bar (Illinois root-finding in a_bar).
   MaugisPoint at_load(double p_bar) const;
 
  private:
