@@ -50,7 +50,7 @@ TEST_P(RingdownRecovery, RecoversFrequencyDecayAndStiffness) {
   s.seed = c.seed;
   s.cycles = 8;
   s.x_eq = 1e-6;
-  const Record r = synth_oscillator(s);
+  const tools::CsvRecord r = synth_oscillator(s);
   const auto& t = r.column("time", inputs::dim::time);
   const auto& x = r.column("position", inputs::dim::length);
   const RingdownFit f = fit_ringdown(t, x, "synthetic");

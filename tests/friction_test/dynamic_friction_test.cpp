@@ -28,7 +28,7 @@ DynamicFit fit_case(const DynamicCase& c, OscillatorSetup& s) {
   s.noise = c.noise;
   s.seed = c.seed;
   s.cycles = 14;
-  const Record r = synth_oscillator(s, c.name);
+  const tools::CsvRecord r = synth_oscillator(s, c.name);
   Calibration cal;
   cal.stiffness = s.stiffness;  // exact calibration: the test checks the fit's own uncertainty
   return fit_dynamic(r.column("time", inputs::dim::time), r.column("position", inputs::dim::length), cal, c.name);
@@ -109,7 +109,7 @@ TEST(DynamicFriction, RecordStartingMidSwingWithMassCalibration) {
   s.x_release = 12e-6;
   s.noise = 10e-9;
   s.seed = 41;
-  const Record r = synth_oscillator(s);
+  const tools::CsvRecord r = synth_oscillator(s);
   const auto& t_all = r.column("time", inputs::dim::time);
   const auto& x_all = r.column("position", inputs::dim::length);
   const std::vector<double> t(t_all.begin() + 7, t_all.end()), x(x_all.begin() + 7, x_all.end());
@@ -143,7 +143,7 @@ TEST(DynamicFriction, ManySeedsAndStickRatiosReachTheNoiseFloor) {
       s.static_force = stick_ratio * s.friction_force;
       s.x_release = 12e-6;
       s.seed = seed;
-      const Record r = synth_oscillator(s);
+      const tools::CsvRecord r = synth_oscillator(s);
       Calibration cal;
       cal.stiffness = s.stiffness;
       const DynamicFit f =

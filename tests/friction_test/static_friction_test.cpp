@@ -41,7 +41,7 @@ TEST_P(StaticRecovery, RecoversMuSAndAdhesionWithinUncertainty) {
   s.adhesion_force = c.adhesion_force;
   s.noise = c.noise;
   s.seed = c.seed;
-  const Record r = synth_static(s);
+  const tools::CsvRecord r = synth_static(s);
   const auto& v = r.voltage("voltage");
   const auto& x = r.column("position", inputs::dim::length);
   std::vector<double> fn;
@@ -96,7 +96,7 @@ namespace {
 TEST(StaticFriction, NormalForceColumnAndStiffnessUncertaintyThroughTheCommand) {
   StaticSetup s;
   s.seed = 17;
-  const Record r = synth_static(s);
+  const tools::CsvRecord r = synth_static(s);
   const auto& v = r.voltage("voltage");
   const auto& x = r.column("position", inputs::dim::length);
   std::vector<double> fn;
@@ -104,7 +104,7 @@ TEST(StaticFriction, NormalForceColumnAndStiffnessUncertaintyThroughTheCommand) 
   const auto dir = std::filesystem::temp_directory_path() / "tribex_friction_test";
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "ramp_fn.csv").string();
-  Record(path, {{"normal_force", {fn, "uN"}}, {"position", {x, "nm"}}}).write(path);
+  tools::CsvRecord(path, {{"normal_force", {fn, "uN"}}, {"position", {x, "nm"}}}).write(path);
   testing::internal::CaptureStdout();
   EXPECT_EQ(cli::friction_test_command({"static", path, "--stiffness", "4.5", "--stiffness-uncertainty", "0.045", "--json"}), 0);
   const std::string out = testing::internal::GetCapturedStdout();

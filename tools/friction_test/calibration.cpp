@@ -94,7 +94,7 @@ RingdownFit fit_ringdown(const std::vector<double>& t, const std::vector<double>
     }
     return r;
   };
-  out.fit = levenberg_marquardt(residuals, start, scale);
+  out.fit = tools::levenberg_marquardt(residuals, start, scale);
   const auto& p = out.fit.parameters;
   const auto& c = out.fit.covariance;
   out.x_eq = p(0);
@@ -149,7 +149,7 @@ ResonanceFit fit_resonance(const std::vector<double>& omega, const std::vector<d
     }
     return r;
   };
-  out.fit = levenberg_marquardt(residuals, start, scale);
+  out.fit = tools::levenberg_marquardt(residuals, start, scale);
   const auto& p = out.fit.parameters;
   out.omega0 = p(1);
   out.sigma = p(2);

@@ -18,7 +18,7 @@
 
 #include <vector>
 
-#include "tools/friction_test/least_squares.hpp"
+#include "tools/common/least_squares.hpp"
 
 namespace tribex::friction_test {
 
@@ -29,7 +29,7 @@ struct RingdownFit {
   double quality = 0.0, quality_sigma = 0.0;      // Q = omega0 / (2 sigma)
   double amplitude = 0.0;                         // m, at the first sample
   double rms_residual = 0.0;                      // m
-  FitResult fit;                                  // parameters (x_eq, a, b, sigma, omega_d)
+  tools::FitResult fit;                                  // parameters (x_eq, a, b, sigma, omega_d)
   double t0 = 0.0;                                // s, time origin of the fit
   /// The fitted curve at `t`.
   double position(double t) const;
@@ -48,7 +48,7 @@ struct ResonanceFit {
   double sigma = 0.0, sigma_sigma = 0.0;    // 1/s
   double quality = 0.0, quality_sigma = 0.0;
   double rms_residual = 0.0;                // m
-  FitResult fit;                            // parameters (F0/m, omega0, sigma)
+  tools::FitResult fit;                            // parameters (F0/m, omega0, sigma)
   double amplitude(double omega) const;
 };
 /// `omega` in rad/s (increasing), `amplitude` in m; at least 10 points around the peak.

@@ -15,9 +15,9 @@
 #include "tools/common/errors.hpp"
 #include "tools/friction_test/calibration.hpp"
 #include "tools/friction_test/dynamic_friction.hpp"
-#include "tools/friction_test/plot.hpp"
-#include "tools/friction_test/record.hpp"
-#include "tools/friction_test/report.hpp"
+#include "tools/common/panel_plot.hpp"
+#include "tools/common/csv_record.hpp"
+#include "tools/common/fit_report.hpp"
 #include "tools/friction_test/static_friction.hpp"
 #include "tools/friction_test/synth.hpp"
 
@@ -72,7 +72,7 @@ const char* synth_usage =
     "          [--area 0.24mm^2] [--start-position 40um] [--volts-start 100] [--volts-step 0.1]\n"
     "Writes a record from the models with known parameters plus Gaussian position noise.\n";
 
-void emit(const Report& r, bool json) {
+void emit(const tools::FitReport& r, bool json) {
   if (json) {
     std::printf("%s\n", r.json().c_str());
   } else {
@@ -96,9 +96,9 @@ void plot_trace(const std::string& png, const std::string& title, const std::vec
                 const std::vector<double>& x, const std::vector<double>& fit) {
   std::vector<double> residual(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) residual[i] = (x[i] - fit[i]) * 1e9;
-  PlotPanel trace{"time (ms)", "position (nm)", "data and fit", {{"t", times_ms(t)}, {"data", to_nm(x)}, {"fit", to_nm(fit)}}};
-  PlotPanel res{"time (ms)", "residual (nm)", "data - fit", {{"t", times_ms(t)}, {"residual", residual}}};
-  if (write_plot(png, title, {trace, res})) std::fprintf(stderr, "plot: %s\n", png.c_str());
+  tools::PlotPanel trace{"time (ms)", "position (nm)", "data and fit", {{"t", times_ms(t)}, {"data", to_nm(x)}, {"fit", to_nm(fit)}}};
+  tools::PlotPanel res{"time (ms)", "residual (nm)", "data - fit", {{"t", times_ms(t)}, {"residual", residual}}};
+  if (tools::write_plot(png, title, {trace, res})) std::fprintf(stderr, "plot: %s\n", png.c_str());
 }
 
 // ---------------------------------------------------------------- calibrate
@@ -128,7 +128,7 @@ int calibrate(const std::vector<std::string>& argv) {
   if (mass <= 0 || mass_sigma < 0) throw BadInput("tribex friction-test calibrate: --mass must be > 0 and its uncertainty >= 0");
   if (folds < 1) throw BadInput("tribex friction-test calibrate: --folds must be >= 1");
 
-  Report r;
+  tools::FitReport r;
   r.command = "calibrate";
   if (geometry) {
     if (*width <= 0 || *length <= 0 || *thickness <= 0 || *youngs <= 0)
@@ -136,8 +136,8 @@ int calibrate(const std::vector<std::string>& argv) {
     r.add("stiffness_geometry", folded_spring_stiffness(*youngs, *thickness, *width, *length, static_cast<int>(folds)),
           -1, "N/m", "(folds/2) E t w^3 / L^3");
   }
-  if (file && Record::read(*file).has("frequency")) {
-    const Record rec = Record::read(*file);
+  if (file && tools::CsvRecord::read(*file).has("frequency")) {
+    const tools::CsvRecord rec = tools::CsvRecord::read(*file);
     const auto& f_hz = rec.column("frequency", dim::rate);
     const auto& amp = rec.column("amplitude", dim::length);
     rec.require_increasing("frequency");
@@ -158,14 +158,14 @@ int calibrate(const std::vector<std::string>& argv) {
     if (!json || plot) {
       std::vector<double> fit(w.size());
       for (std::size_t i = 0; i < w.size(); ++i) fit[i] = f.amplitude(w[i]) * 1e9;
-      PlotPanel curve{"frequency (Hz)", "amplitude (nm)", "resonance curve and fit", {{"f", f_hz}, {"data", to_nm(amp)}, {"fit", fit}}};
-      const std::string png = plot.value_or(default_plot_path(*file));
-      if (write_plot(png, "resonance: " + *file, {curve})) std::fprintf(stderr, "plot: %s\n", png.c_str());
+      tools::PlotPanel curve{"frequency (Hz)", "amplitude (nm)", "resonance curve and fit", {{"f", f_hz}, {"data", to_nm(amp)}, {"fit", fit}}};
+      const std::string png = plot.value_or(tools::default_plot_path(*file));
+      if (tools::write_plot(png, "resonance: " + *file, {curve})) std::fprintf(stderr, "plot: %s\n", png.c_str());
     }
     return tools::exit_ok;
   }
   if (file) {
-    const Record rec = Record::read(*file);
+    const tools::CsvRecord rec = tools::CsvRecord::read(*file);
     const auto& t = rec.column("time", dim::time);
     const auto& x = rec.column("position", dim::length);
     rec.require_increasing("time");
@@ -188,7 +188,7 @@ int calibrate(const std::vector<std::string>& argv) {
       std::vector<double> fit(t.size());
       for (std::size_t i = 0; i < t.size(); ++i) fit[i] = f.position(t[i]);
       emit(r, json);
-      plot_trace(plot.value_or(default_plot_path(*file)), "ringdown: " + *file, t, x, fit);
+      plot_trace(plot.value_or(tools::default_plot_path(*file)), "ringdown: " + *file, t, x, fit);
       return tools::exit_ok;
     }
   }
@@ -222,7 +222,7 @@ int static_friction(const std::vector<std::string>& argv) {
   if (!stiffness || *stiffness <= 0) throw BadInput(cmd + ": --stiffness K (N/m, > 0) is required: the load-spring constant");
   if (min_jump <= 0) throw BadInput(cmd + ": --min-jump must be > 0");
 
-  const Record rec = Record::read(file);
+  const tools::CsvRecord rec = tools::CsvRecord::read(file);
   const auto& x = rec.column("position", dim::length);
   std::vector<double> fn(rec.size());
   if (rec.has("normal_force")) {
@@ -242,7 +242,7 @@ int static_friction(const std::vector<std::string>& argv) {
   StaticFit f = fit_static(detect_slips(x, fn, *stiffness, x_zero, min_jump), file, min_jump);
   // The spring constant scales every F_s: its relative error adds to mu_s (F_adh = intercept/slope is free of it).
   const double mu_sigma = std::hypot(f.mu_s_sigma, f.mu_s * stiffness_sigma / *stiffness);
-  Report r;
+  tools::FitReport r;
   r.command = "static";
   r.text.push_back({"file", file});
   r.add("slip_events", static_cast<double>(f.events.size()), -1, "");
@@ -276,15 +276,15 @@ int static_friction(const std::vector<std::string>& argv) {
     }
     std::vector<double> before(fn.size(), NAN);
     for (const auto& e : f.events) before[e.row] = x[e.row] * 1e9;
-    PlotPanel ramp{"normal force F_N (uN)", "position (nm)", "record; points before each slip",
+    tools::PlotPanel ramp{"normal force F_N (uN)", "position (nm)", "record; points before each slip",
                    {{"F_N", fn_uN}, {"position", to_nm(x)}, {"before slip", before}}};
-    PlotPanel line{"normal force F_N (uN)", "static friction F_s (uN)", "Eq. 2.2 fit",
+    tools::PlotPanel line{"normal force F_N (uN)", "static friction F_s (uN)", "Eq. 2.2 fit",
                    {{"F_N", ev_n}, {"slip events", ev_s}, {"fit mu_s", fit_s}}};
     char title[160];
     std::snprintf(title, sizeof title, "static friction: mu_s = %.4f +- %.4f, F_adh = %.4g +- %.2g N", f.mu_s, mu_sigma,
                   f.adhesion_force, f.adhesion_force_sigma);
-    const std::string png = plot.value_or(default_plot_path(file));
-    if (write_plot(png, title, {ramp, line})) std::fprintf(stderr, "plot: %s\n", png.c_str());
+    const std::string png = plot.value_or(tools::default_plot_path(file));
+    if (tools::write_plot(png, title, {ramp, line})) std::fprintf(stderr, "plot: %s\n", png.c_str());
   }
   return tools::exit_ok;
 }
@@ -323,13 +323,13 @@ int dynamic_friction(const std::vector<std::string>& argv) {
     throw BadInput(cmd + ": --normal-force has " + std::to_string(loads.size()) + " value(s) for " +
                    std::to_string(files.size()) + " file(s); give one load per FILE, in order");
 
-  Report r;
+  tools::FitReport r;
   r.command = "dynamic";
   std::vector<DynamicFit> fits;
   std::vector<std::vector<double>> rows;
-  std::vector<PlotPanel> panels;
+  std::vector<tools::PlotPanel> panels;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    const Record rec = Record::read(files[i]);
+    const tools::CsvRecord rec = tools::CsvRecord::read(files[i]);
     const auto& t = rec.column("time", dim::time);
     const auto& x = rec.column("position", dim::length);
     rec.require_increasing("time");
@@ -385,7 +385,7 @@ int dynamic_friction(const std::vector<std::string>& argv) {
         fd_uN.push_back(fd[i] * 1e9);
         fit_uN.push_back((line.intercept + line.mu_d * loads[i]) * 1e9);
       }
-      panels.insert(panels.begin(), PlotPanel{"applied normal load F_N (nN)", "dynamic friction F_d (nN)",
+      panels.insert(panels.begin(), tools::PlotPanel{"applied normal load F_N (nN)", "dynamic friction F_d (nN)",
                                               "load line (Fig. 2.11)", {{"F_N", fn_uN}, {"records", fd_uN}, {"fit mu_d", fit_uN}}});
     }
   }
@@ -401,8 +401,8 @@ int dynamic_friction(const std::vector<std::string>& argv) {
     }
   }
   if (!json || plot) {
-    const std::string png = plot.value_or(default_plot_path(files.front()));
-    if (write_plot(png, "dynamic friction: Coulomb + viscous oscillator fit", panels))
+    const std::string png = plot.value_or(tools::default_plot_path(files.front()));
+    if (tools::write_plot(png, "dynamic friction: Coulomb + viscous oscillator fit", panels))
       std::fprintf(stderr, "plot: %s\n", png.c_str());
   }
   return tools::exit_ok;

@@ -144,7 +144,7 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
     used = n;
     while (used > 30 && t[used - 1] - t.front() > cycles * period) --used;
     t_used.assign(t.begin(), t.begin() + static_cast<long>(used));
-    out.fit = levenberg_marquardt(residuals, start, scale);
+    out.fit = tools::levenberg_marquardt(residuals, start, scale);
     start = out.fit.parameters;
     if (used == n) break;
   }
@@ -196,7 +196,7 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
 
 LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force,
                        const std::vector<double>& friction_force_sigma) {
-  const FitResult line = fit_line(normal_force, friction_force);
+  const tools::FitResult line = tools::fit_line(normal_force, friction_force);
   LoadLine out;
   const double a = line.parameters(0), b = line.parameters(1);
   Eigen::Matrix2d c = line.covariance;

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/friction_test/least_squares.hpp"
+#include "tools/common/least_squares.hpp"
 #include "tools/friction_test/oscillator.hpp"
 
 namespace tribex::friction_test {
@@ -42,7 +42,7 @@ struct DynamicFit {
   double rms_residual = 0.0;                              // m
   std::size_t samples = 0;
   bool ends_at_rest = false;  // the record ends stuck (static friction held it)
-  FitResult fit;  // parameters (omega0, sigma, delta, x_eq, x0, v0)
+  tools::FitResult fit;  // parameters (omega0, sigma, delta, x_eq, x0, v0)
   std::vector<double> model;  // fitted positions at the record's times
 };
 

@@ -49,7 +49,7 @@ StaticFit fit_static(std::vector<SlipEvent> events, const std::string& what, dou
   }
   StaticFit out;
   out.events = std::move(events);
-  const FitResult line = fit_line(fn, fs);
+  const tools::FitResult line = tools::fit_line(fn, fs);
   const double a = line.parameters(0), b = line.parameters(1);
   const auto& c = line.covariance;
   out.mu_s = b;

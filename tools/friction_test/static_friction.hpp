@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/friction_test/least_squares.hpp"
+#include "tools/common/least_squares.hpp"
 
 namespace tribex::friction_test {
 

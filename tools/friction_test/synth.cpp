@@ -9,7 +9,7 @@
 
 namespace tribex::friction_test {
 
-Record synth_oscillator(const OscillatorSetup& s, const std::string& name) {
+tools::CsvRecord synth_oscillator(const OscillatorSetup& s, const std::string& name) {
   OscillatorParams p;
   p.omega0 = std::sqrt(s.stiffness / s.mass);
   p.sigma = s.damping / (2 * s.mass);
@@ -24,10 +24,10 @@ Record synth_oscillator(const OscillatorSetup& s, const std::string& name) {
   std::mt19937_64 rng(s.seed);
   std::normal_distribution<double> noise(0.0, s.noise);
   for (double& v : x) v += noise(rng);
-  return Record(name, {{"time", {t, "s"}}, {"position", {x, "nm"}}});
+  return tools::CsvRecord(name, {{"time", {t, "s"}}, {"position", {x, "nm"}}});
 }
 
-Record synth_static(const StaticSetup& s, const std::string& name) {
+tools::CsvRecord synth_static(const StaticSetup& s, const std::string& name) {
   std::vector<double> volts, x;
   double pos = s.x_start;
   std::mt19937_64 rng(s.seed);
@@ -50,7 +50,7 @@ Record synth_static(const StaticSetup& s, const std::string& name) {
     volts.push_back(v);
     x.push_back(pos + noise(rng));
   }
-  return Record(name, {{"voltage", {volts, "V"}}, {"position", {x, "nm"}}});
+  return tools::CsvRecord(name, {{"voltage", {volts, "V"}}, {"position", {x, "nm"}}});
 }
 
 }  // namespace tribex::friction_test

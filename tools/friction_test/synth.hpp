@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "tools/friction_test/record.hpp"
+#include "tools/common/csv_record.hpp"
 #include "tools/friction_test/static_friction.hpp"
 
 namespace tribex::friction_test {
@@ -26,7 +26,7 @@ struct OscillatorSetup {
   std::uint64_t seed = 1;
 };
 /// Columns time[s], position[nm]; the ringdown when friction_force is 0.
-Record synth_oscillator(const OscillatorSetup& s, const std::string& name = "synthetic");
+tools::CsvRecord synth_oscillator(const OscillatorSetup& s, const std::string& name = "synthetic");
 
 struct StaticSetup {
   double stiffness = 4.5;          // N/m (report: Load Spring A, Fig. 2.6)
@@ -42,6 +42,6 @@ struct StaticSetup {
 };
 /// Columns voltage[V], position[nm]: holds while mu_s (F_N + F_adh) >= k |x - x_zero|, else slips
 /// and stops where the Coulomb oscillator (mu_d, damping) comes to rest.
-Record synth_static(const StaticSetup& s, const std::string& name = "synthetic");
+tools::CsvRecord synth_static(const StaticSetup& s, const std::string& name = "synthetic");
 
 }  // namespace tribex::friction_test

@@ -1,22 +1,20 @@
 // SPDX-License-Identifier: MIT
-#include "tools/friction_test/report.hpp"
+#include "tools/common/fit_report.hpp"
 
 #include <sstream>
 #include <stdexcept>
 
 #include "tools/common/json.hpp"
 
-namespace tribex::friction_test {
-using tools::json_number;
-using tools::json_string;
+namespace tribex::tools {
 
-const Quantity& Report::get(const std::string& name) const {
+const ReportedQuantity& FitReport::get(const std::string& name) const {
   for (const auto& q : quantities)
     if (q.name == name) return q;
   throw std::out_of_range("no quantity " + name);
 }
 
-std::string Report::json() const {
+std::string FitReport::json() const {
   std::ostringstream o;
   o << "{\"command\": " << json_string(command);
   for (const auto& [k, v] : text) o << ", " << json_string(k) << ": " << json_string(v);
@@ -38,7 +36,7 @@ std::string Report::json() const {
   return o.str();
 }
 
-void Report::print_table(std::FILE* to) const {
+void FitReport::print_table(std::FILE* to) const {
   for (const auto& [k, v] : text) std::fprintf(to, "%-24s %s\n", k.c_str(), v.c_str());
   for (const auto& q : quantities) {
     if (q.uncertainty >= 0)
@@ -49,4 +47,4 @@ void Report::print_table(std::FILE* to) const {
   }
 }
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Draws the PNG of a `tribex friction-test` command (run with Debian's /usr/bin/python3).
+"""Draws the PNG of a `tribex friction-test` or `tribex fit` command (run with Debian's /usr/bin/python3).
 
-usage: plot_friction_test.py OUT.png TITLE PANEL.csv [PANEL.csv ...]
+usage: plot_panels.py OUT.png TITLE PANEL.csv [PANEL.csv ...]
 
 Each PANEL.csv is one subplot: a first comment line `# xlabel|ylabel|title`, then a CSV with
 header; the first column is x, every other column a series. Series whose name starts with

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "tools/friction_test/least_squares.hpp"
+#include "tools/common/least_squares.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 namespace {
 
 // Covariance from the SVD of J itself, J = U S V^T -> (J^T J)^-1 = V S^-2 V^T: forming J^T J
@@ -143,4 +143,4 @@ FitResult fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   return out;
 }
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

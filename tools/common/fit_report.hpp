@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The fitted quantities of a friction-test command and how they are printed: one JSON object
+// The fitted quantities of a data-reduction command (friction-test, fit) and how they are printed: one JSON object
 // (`--json`: every quantity as {"value", "uncertainty", "unit"}, SI) or a readable table.
 #pragma once
 
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 
-struct Quantity {
+struct ReportedQuantity {
   std::string name;         // JSON key, e.g. "friction_force"
   double value = 0.0;       // SI
   double uncertainty = -1;  // 1 sigma, SI; < 0 when not applicable (exact or input)
@@ -17,18 +17,18 @@ struct Quantity {
   std::string note;         // shown in the table only
 };
 
-struct Report {
+struct FitReport {
   std::string command;  // "calibrate", "static", "dynamic"
   std::vector<std::pair<std::string, std::string>> text;  // string fields (file, ...)
-  std::vector<Quantity> quantities;
+  std::vector<ReportedQuantity> quantities;
   std::vector<std::pair<std::string, std::vector<std::vector<double>>>> tables;  // e.g. slip events, rows
 
   void add(std::string name, double value, double uncertainty, std::string unit, std::string note = "") {
     quantities.push_back({std::move(name), value, uncertainty, std::move(unit), std::move(note)});
   }
-  const Quantity& get(const std::string& name) const;
+  const ReportedQuantity& get(const std::string& name) const;
   std::string json() const;
   void print_table(std::FILE* to) const;
 };
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

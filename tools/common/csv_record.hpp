@@ -11,20 +11,20 @@
 
 #include "inputs/units.hpp"
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 
-struct Column {
+struct CsvColumn {
   std::vector<double> values;  // SI (volts for a voltage column)
   std::string unit;            // as written in the header, "" when none was given
 };
 
-class Record {
+class CsvRecord {
  public:
   /// Reads `path`; throws tools::BadInput on a missing file, missing header, ragged rows or
   /// non-numeric cells (file:line in the message).
-  static Record read(const std::string& path);
+  static CsvRecord read(const std::string& path);
   /// Builds a record in memory (used by the synthetic generators); values are SI.
-  Record(std::string path, std::vector<std::pair<std::string, Column>> columns);
+  CsvRecord(std::string path, std::vector<std::pair<std::string, CsvColumn>> columns);
 
   const std::string& path() const { return path_; }
   std::size_t size() const { return rows_; }
@@ -46,12 +46,12 @@ class Record {
   std::vector<std::string> names() const;
 
  private:
-  Record() = default;
+  CsvRecord() = default;
   std::string path_;
-  std::map<std::string, Column> columns_;
+  std::map<std::string, CsvColumn> columns_;
   std::vector<std::string> order_;  // header order
   std::vector<std::size_t> lines_;  // file line of each row (comment/blank lines skipped)
   std::size_t rows_ = 0;
 };
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

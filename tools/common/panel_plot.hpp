@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-// PNG plots of the friction-test commands: the data go to temporary CSV panels next to the
-// PNG and plot_friction_test.py (Debian's /usr/bin/python3 + matplotlib, Agg) draws them.
+// PNG plots of the data-reduction commands: the data go to temporary CSV panels next to the
+// PNG and tools/plot/plot_panels.py (Debian's /usr/bin/python3 + matplotlib, Agg) draws them.
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 
 struct PlotPanel {
   std::string xlabel, ylabel, title;
@@ -22,4 +22,4 @@ bool write_plot(const std::string& png, const std::string& title, const std::vec
 /// "dir/name.csv" -> "dir/name.png" (the default plot path next to the input).
 std::string default_plot_path(const std::string& input);
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <random>
 
-#include "tools/friction_test/least_squares.hpp"
+#include "tools/common/least_squares.hpp"
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 namespace {
 
 TEST(LeastSquares, LineThroughExactPointsHasZeroResidual) {
@@ -61,4 +61,4 @@ TEST(LeastSquares, RecoversAnExponentialDecayWithScaledParameters) {
 }
 
 }  // namespace
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "tools/friction_test/plot.hpp"
+#include "tools/common/panel_plot.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,11 +9,11 @@
 
 #include "tools/common/errors.hpp"
 
-#ifndef TRIBEX_FRICTION_PLOT_SCRIPT
-#define TRIBEX_FRICTION_PLOT_SCRIPT "tools/friction_test/plot_friction_test.py"
+#ifndef TRIBEX_PANEL_PLOT_SCRIPT
+#define TRIBEX_PANEL_PLOT_SCRIPT "tools/plot/plot_panels.py"
 #endif
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 namespace {
 
 std::string shell_quote(const std::string& s) {
@@ -58,7 +58,7 @@ bool write_plot(const std::string& png, const std::string& title, const std::vec
   }
   // Built with append: GCC 12 warns (-Wrestrict, a known false positive) on `" " + std::string`.
   std::string cmd = "/usr/bin/python3";
-  for (const std::string& part : {std::string(TRIBEX_FRICTION_PLOT_SCRIPT), png, title}) {
+  for (const std::string& part : {std::string(TRIBEX_PANEL_PLOT_SCRIPT), png, title}) {
     cmd += ' ';
     cmd += shell_quote(part);
   }
@@ -76,4 +76,4 @@ bool write_plot(const std::string& png, const std::string& title, const std::vec
   return true;
 }
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "tools/friction_test/record.hpp"
+#include "tools/common/csv_record.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 #include "tools/common/errors.hpp"
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 namespace {
 
-using tools::BadInput;
+
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
@@ -39,7 +39,7 @@ double volt_factor(const std::string& unit) {
   return 0.0;
 }
 
-// Factor to SI of a header unit; voltages are accepted here and checked by Record::voltage().
+// Factor to SI of a header unit; voltages are accepted here and checked by CsvRecord::voltage().
 double unit_factor(const std::string& unit, const std::string& where) {
   if (unit.empty()) return 1.0;
   if (double v = volt_factor(unit); v != 0.0) return v;
@@ -51,7 +51,7 @@ double unit_factor(const std::string& unit, const std::string& where) {
 
 }  // namespace
 
-Record::Record(std::string path, std::vector<std::pair<std::string, Column>> columns) : path_(std::move(path)) {
+CsvRecord::CsvRecord(std::string path, std::vector<std::pair<std::string, CsvColumn>> columns) : path_(std::move(path)) {
   for (auto& [name, c] : columns) {
     order_.push_back(name);
     rows_ = c.values.size();
@@ -60,10 +60,10 @@ Record::Record(std::string path, std::vector<std::pair<std::string, Column>> col
   for (std::size_t i = 0; i < rows_; ++i) lines_.push_back(i + 2);
 }
 
-Record Record::read(const std::string& path) {
+CsvRecord CsvRecord::read(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw BadInput(path + ": cannot open the file (check the path)");
-  Record r;
+  CsvRecord r;
   r.path_ = path;
   std::string line;
   std::size_t line_no = 0;
@@ -116,13 +116,13 @@ Record Record::read(const std::string& path) {
   return r;
 }
 
-std::vector<std::string> Record::names() const { return order_; }
+std::vector<std::string> CsvRecord::names() const { return order_; }
 
-std::string Record::where(std::size_t i) const {
+std::string CsvRecord::where(std::size_t i) const {
   return path_ + ":" + std::to_string(i < lines_.size() ? lines_[i] : 0);
 }
 
-const std::vector<double>& Record::column(const std::string& name, inputs::Dimension d) const {
+const std::vector<double>& CsvRecord::column(const std::string& name, inputs::Dimension d) const {
   auto it = columns_.find(name);
   if (it == columns_.end()) {
     std::string have;
@@ -141,7 +141,7 @@ const std::vector<double>& Record::column(const std::string& name, inputs::Dimen
   return it->second.values;
 }
 
-const std::vector<double>& Record::voltage(const std::string& name) const {
+const std::vector<double>& CsvRecord::voltage(const std::string& name) const {
   auto it = columns_.find(name);
   if (it == columns_.end()) return column(name, inputs::dim::none);  // throws the missing-column error
   if (!it->second.unit.empty() && volt_factor(it->second.unit) == 0.0)
@@ -149,7 +149,7 @@ const std::vector<double>& Record::voltage(const std::string& name) const {
   return it->second.values;
 }
 
-void Record::require_increasing(const std::string& name) const {
+void CsvRecord::require_increasing(const std::string& name) const {
   const auto& v = columns_.at(name).values;
   for (std::size_t i = 1; i < v.size(); ++i)
     if (!(v[i] > v[i - 1]))
@@ -158,13 +158,13 @@ void Record::require_increasing(const std::string& name) const {
                      " and drop repeated samples");
 }
 
-void Record::require_rows(std::size_t n, const std::string& why) const {
+void CsvRecord::require_rows(std::size_t n, const std::string& why) const {
   if (rows_ < n)
     throw BadInput(path_ + ": " + std::to_string(rows_) + " data rows, at least " + std::to_string(n) +
                    " needed " + why);
 }
 
-void Record::write(const std::string& path) const {
+void CsvRecord::write(const std::string& path) const {
   std::ofstream out(path);
   if (!out) throw BadInput(path + ": cannot write the file (check the folder exists and is writable)");
   std::vector<double> factors;
@@ -186,4 +186,4 @@ void Record::write(const std::string& path) const {
   if (!out) throw BadInput(path + ": write failed (disk full?)");
 }
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Small least-squares fitters for the friction-test reductions.
+// Small least-squares fitters shared by the data-reduction tools (friction-test, fit).
 //
 // levenberg_marquardt(): minimises S(p) = sum_i r_i(p)^2 with a forward-difference Jacobian,
 // Marquardt's diagonal scaling (J^T J + lambda diag(J^T J)) dp = -J^T r, and lambda /10 on
@@ -17,7 +17,7 @@
 
 #include <Eigen/Dense>
 
-namespace tribex::friction_test {
+namespace tribex::tools {
 
 struct FitResult {
   Eigen::VectorXd parameters;
@@ -49,4 +49,4 @@ FitResult levenberg_marquardt(const ResidualFunction& residuals, Eigen::VectorXd
 /// y = a + b x by ordinary least squares; parameters (a, b). Needs at least 3 points.
 FitResult fit_line(const std::vector<double>& x, const std::vector<double>& y);
 
-}  // namespace tribex::friction_test
+}  // namespace tribex::tools
