@@ -17,5 +17,7 @@ int surface_command(const std::vector<std::string>& args);  // tools/surface/sur
 int pstd_command(const std::vector<std::string>& args);  // tools/pstd/
 /// tools/friction_test/command.cpp: `tribex friction-test calibrate|static|dynamic|synth`.
 int friction_test_command(const std::vector<std::string>& args);
+/// tools/mesh/mesh_command.cpp: `tribex mesh afm FILE ... -o MESH.msh`.
+int mesh_command(const std::vector<std::string>& args);
 
 }  // namespace tribex::cli

@@ -29,6 +29,7 @@ const std::vector<Command> commands = {
     {"surface", "rough-surface statistics of AFM maps and McCool GW tables", tribex::cli::surface_command},
     {"pstd", "pre-sliding tangential deflection model (report 2.1.9)", tribex::cli::pstd_command},
     {"friction-test", "friction-test data reduction: spring calibration, mu_s, mu_d", tribex::cli::friction_test_command},
+    {"mesh", "mesh generators (.msh): tribex mesh afm FILE --window ... -o MESH.msh", tribex::cli::mesh_command},
 };
 
 void print_usage(std::FILE* to) {
