@@ -28,7 +28,7 @@ const char* mesh_usage =
 
 const char* afm_usage =
     "usage: tribex mesh afm FILE -o MESH.msh [options]\n"
-    "All-hex8 substrate block whose top is the bicubic-spline surface through the AFM map (natural\n"
+    "All-hex8 substrate block whose top is the bicubic-spline surface through the AFM map (not-a-knot\n"
     "cubic splines along each pixel row, then each column), written as gmsh .msh 4.1.\n"
     "FILE: Nanoscope (.di/.spm/.000), Gwyddion .gsf, Gwyddion ASCII matrix, or x y z text; the map is\n"
     "levelled by its least-squares plane first. Coordinates are the map's (pixel centres at (i+1/2) dx).\n"
