@@ -99,6 +99,22 @@ struct GeneratedAsperitySpec {
   SourceLocation where;
 };
 
+/// `begin afm surface` inside a finite element model: an all-hex substrate block whose top follows
+/// an AFM height map (mesh/afm/afm_mesh.hpp; blocks `substrate` and `coating`, side sets and node
+/// sets substrate_top, substrate_track, substrate_bottom, substrate_sides, substrate_xmin ... _ymax).
+struct AfmSurfaceSpec {
+  std::string file;  // height-map file, resolved relative to the deck's folder
+  int channel = -1;  // Nanoscope channel; -1: the first height channel
+  std::optional<std::array<double, 4>> window;  // x0 y0 width height, m; unset: the whole map
+  std::optional<std::array<double, 4>> track;   // x0 y0 width height, m; unset: the window
+  double element_size = 0.5e-9;     // m, > 0
+  double depth = 50e-9;             // m, > 0
+  double coating_thickness = 0.0;   // m, >= 0 (0: no coating block)
+  int coating_layers = 6;           // 1 to 100
+  double grading_ratio = 1.3;       // in [1, 1.3]
+  SourceLocation where;
+};
+
 /// `begin parameters for block NAME` inside a finite element model.
 struct BlockParameters {
   std::string block;     // must exist in the mesh (checked when the mesh is built)
@@ -115,6 +131,7 @@ struct FiniteElementModelSpec {
   std::string database_path;  // gmsh: path resolved relative to the deck's folder
   std::vector<GeneratedBoxSpec> boxes;  // generated: boxes (appended in deck order)
   std::optional<GeneratedAsperitySpec> asperity;  // generated: the asperity problem
+  std::optional<AfmSurfaceSpec> afm_surface;       // generated: a block from an AFM height map
   std::vector<BlockParameters> blocks;
   SourceLocation where;
 };

@@ -170,13 +170,15 @@ class Builder {
     m.where = s.where;
     const auto boxes = s.children_of("generated box");
     const auto asperities = s.children_of("generated asperity");
-    const bool generated = !boxes.empty() || !asperities.empty();
+    const auto afm = s.children_of("afm surface");
+    const bool generated = !boxes.empty() || !asperities.empty() || !afm.empty();
     const KeyLine* db = s.find("database name");
     const std::string type = word(s, "database type");
     if (db && generated) {
       error(db->where, s, "model '" + m.name + "' has both 'database name' and a generated mesh; use one");
     } else if (!db && !generated) {
-      error(s.where, s, "model '" + m.name + "' needs a mesh: 'database name = FILE.msh', 'begin generated box NAME' or 'begin generated asperity'");
+      error(s.where, s, "model '" + m.name + "' needs a mesh: 'database name = FILE.msh', 'begin generated box NAME', "
+                        "'begin generated asperity' or 'begin afm surface'");
     }
     for (const Scope* a : asperities) {
       GeneratedAsperitySpec g;
@@ -218,6 +220,7 @@ class Builder {
       box.grading_ratio = real(*b, "grading ratio", 1.0);
       m.boxes.push_back(box);
     }
+    for (const Scope* a : afm) m.afm_surface = afm_surface(*a);
     for (const Scope* b : s.children_of("parameters for block")) {
       BlockParameters bp;
       bp.block = b->name;
@@ -240,6 +243,27 @@ class Builder {
       m.blocks.push_back(bp);
     }
     return m;
+  }
+
+  static AfmSurfaceSpec afm_surface(const Scope& a) {
+    AfmSurfaceSpec spec;
+    spec.where = a.where;
+    std::filesystem::path p(word(a, "file"));
+    if (p.is_relative()) p = std::filesystem::path(where(a, "file").file).parent_path() / p;
+    spec.file = p.lexically_normal().string();
+    if (auto c = optional_real(a, "channel")) spec.channel = static_cast<int>(*c);
+    for (const char* key : {"window", "track"}) {
+      if (auto v = get(a, key); v && v->numbers.size() == 4) {
+        (std::string(key) == "window" ? spec.window : spec.track) =
+            std::array<double, 4>{v->numbers[0], v->numbers[1], v->numbers[2], v->numbers[3]};
+      }
+    }
+    spec.element_size = real(a, "element size", spec.element_size);
+    spec.depth = real(a, "depth", spec.depth);
+    spec.coating_thickness = real(a, "coating thickness", 0.0);
+    spec.coating_layers = static_cast<int>(real(a, "coating layers", 6));
+    spec.grading_ratio = real(a, "grading ratio", 1.3);
+    return spec;
   }
 
   ProcedureSpec procedure(const Scope& s, const Deck& deck) {

@@ -138,7 +138,7 @@ std::vector<BlockSchema> build_table() {
                {text("database name", ValueKind::string, false, "gmsh mesh file, relative to the deck"),
                 choice("database type", ValueKind::enumeration, {"gmsh", "generated"}, false, "",
                        "inferred from database name / generated box")},
-               {{"generated box"}, {"generated asperity", 0, 1}, {"parameters for block", 1}},
+               {{"generated box"}, {"generated asperity", 0, 1}, {"afm surface", 0, 1}, {"parameters for block", 1}},
                false, "the mesh and its element blocks"});
 
   t.push_back({"generated asperity", NameRule::none, {}, {}, true,
@@ -156,6 +156,20 @@ std::vector<BlockSchema> build_table() {
                 integer("coating layers", at_least(1), false, "6", "elements through the coating")},
                {},
                false, "sphere-tipped asperity above a substrate (blocks tip, substrate, coating)"});
+
+  t.push_back({"afm surface", NameRule::none, {}, {}, true,
+               {text("file", ValueKind::string, true, "AFM height map (Nanoscope, .gsf, Gwyddion matrix, xyz), relative to the deck"),
+                integer("channel", {0.0, 64.0, false, false}, false, "", "Nanoscope channel (default: first height channel)"),
+                reals("window", dim::length, 4, Range{}, false, "", "x0 y0 width height of the meshed part (default: whole map)"),
+                reals("track", dim::length, 4, Range{}, false, "", "x0 y0 width height of the contact track (default: window)"),
+                real("element size", dim::length, positive(), false, "5e-10", "largest element edge in the track"),
+                real("depth", dim::length, positive(), true, "", "from the window's mean height to the flat bottom"),
+                real("coating thickness", dim::length, non_negative(), false, "0", "bonded coating block on top (0: none)"),
+                integer("coating layers", {1.0, 100.0, false, false}, false, "6", "elements through the coating"),
+                real("grading ratio", dim::none, {1.0, 1.3, false, false}, false, "1.3",
+                     "size ratio of neighbours away from the track and with depth")},
+               {},
+               false, "an all-hex substrate block (and coating) on an AFM height map"});
 
   t.push_back({"generated box", NameRule::required, {}, {}, true,
                {reals("origin", dim::length, 3, Range{}, false, "0 0 0", "lower corner"),

@@ -10,6 +10,7 @@
 #include "mesh/box.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/mesh_error.hpp"
+#include "solver/afm_surface_mesh.hpp"
 #include "solver/contact_setup.hpp"
 #include "solver/errors.hpp"
 #include "solver/stable_time_step.hpp"
@@ -88,6 +89,7 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
   if (spec.source == inputs::FiniteElementModelSpec::Source::gmsh) {
     m = mesh::read_gmsh(spec.database_path);
   } else {
+    if (spec.afm_surface) m = build_afm_surface_mesh(*spec.afm_surface);
     for (const auto& box : spec.boxes) {
       mesh::BoxSpec b;
       b.name = box.block_name;

@@ -19,5 +19,7 @@ int pstd_command(const std::vector<std::string>& args);  // tools/pstd/
 int friction_test_command(const std::vector<std::string>& args);
 /// tools/fit/fit_command.cpp: `tribex fit friction|synth`.
 int fit_command(const std::vector<std::string>& args);
+/// tools/mesh/mesh_command.cpp: `tribex mesh afm FILE ... -o MESH.msh`.
+int mesh_command(const std::vector<std::string>& args);
 
 }  // namespace tribex::cli
