@@ -57,9 +57,7 @@ case "$cmd" in
     ensure_packages; build build
     out="$ROOT/demo_output"
     build/bin/tribex run inputs/examples/demo.i -o "$out"
-    /usr/bin/python3 tools/plot/plot_history.py "$out/history.csv" "$out/demo.png" \
-      --columns kinetic_energy,internal_energy,silent_boundary_dissipation,external_work \
-      --title "Pulse absorbed by silent boundaries (inputs/examples/demo.i)"
+    /usr/bin/python3 verification/hertz/compare.py "$out" --element-size 0.8 --plot "$out/demo.png" || true
     log "results: $out/results.xdmf (open in ParaView), $out/history.csv, $out/summary.json, $out/log.txt"
     log "plot:    $out/demo.png" ;;
   test)

@@ -116,12 +116,14 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*
     }
     const ContactSurface& slave = surfaces_[p.slave];
     const ContactSurface& master = surfaces_[p.master];
+    p.gap.assign(slave.nodes.size(), NAN);
     for (int k = 0; k < slave.node_count(); ++k) {
       const int count = p.candidate_offset[k + 1] - p.candidate_offset[k];
       if (count == 0) continue;
       const int node = slave.nodes[k];
       const double* xs = x + 3 * node;
       const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, xs);
+      if (best.face >= 0 && best.proj.interior) p.gap[k] = best.proj.gap;
       if (best.face < 0 || !best.proj.interior || best.proj.gap >= 0.0) continue;
       // A node deeper than the search margin is not a contact but the far side of a thin body.
       if (-best.proj.gap > p.margin) continue;
@@ -156,8 +158,38 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*
         totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
       }
     }
+    if (has_axis_ && p.primary) totals.radius_edge = edge_radius(p, x);
   }
   return totals;
+}
+
+// Mean distance from the axis of the points where the gap changes sign along slave-face edges
+// (linear interpolation of g between an edge's two nodes): the contact boundary located between
+// nodes, so the radius does not jump by a node spacing when a ring of nodes enters contact.
+double ContactManager::edge_radius(const Pass& p, const double* x) const {
+  const ContactSurface& slave = surfaces_[p.slave];
+  double sum = 0.0;
+  int count = 0;
+  auto local = [&](int global) {
+    return static_cast<int>(std::lower_bound(slave.nodes.begin(), slave.nodes.end(), global) - slave.nodes.begin());
+  };
+  for (int f = 0; f < slave.face_count(); ++f)
+    for (int e = 0; e < 4; ++e) {
+      const int a = slave.face_nodes[4 * f + e], b = slave.face_nodes[4 * f + (e + 1) % 4];
+      const double ga = p.gap[local(a)], gb = p.gap[local(b)];
+      if (!(ga < 0.0 && gb >= 0.0)) continue;  // each crossing edge once: from inside to outside
+      const double t = ga / (ga - gb);
+      double r[3], along = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        r[i] = x[3 * a + i] + t * (x[3 * b + i] - x[3 * a + i]) - axis_point_[i];
+        along += r[i] * axis_dir_[i];
+      }
+      double r2 = 0.0;
+      for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
+      sum += std::sqrt(r2);
+      ++count;
+    }
+  return count ? sum / count : 0.0;
 }
 
 std::vector<ContactManager::Overlap> ContactManager::initial_overlaps(const double* x, int worst_count) {

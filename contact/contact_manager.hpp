@@ -41,6 +41,7 @@ struct ContactTotals {
   int nodes = 0;                   // slave nodes in contact (first pass of each interaction)
   double max_penetration = 0.0;    // m
   double radius_max = 0.0;         // farthest contacting node from the axis (if one is set), m
+  double radius_edge = 0.0;        // mean axis distance of the gap sign changes on slave-face edges, m
   int searches = 0;                // broad-phase builds this step
 };
 
@@ -82,7 +83,9 @@ class ContactManager {
     std::vector<double> x_at_search;  // [slave node + master node][3] positions at the last search
     bool searched = false;
     bool primary = true;
+    std::vector<double> gap;  // [slave node] signed gap to the closest face over which it projects (NaN: none)
   };
+  double edge_radius(const Pass& p, const double* x) const;
   bool needs_search(const Pass& p, const double* x) const;
   void search(Pass& p, const double* x);
 

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Hertz check of an asperity indentation run (verification/hertz/*.i) against
+a^3 = 3PR/(4E*), delta = a^2/R, E* = E/(2(1 - nu^2)) for two identical silicon bodies.
+
+Measured quantities (history.csv):
+  P      contact_normal_force (the force the contact transmits);
+  a      contact_radius_edge: mean distance from the axis of the points where the gap changes sign
+         along the tip-surface edges (between nodes); sqrt(contact_area/pi), which jumps by about a
+         node spacing as each ring enters, is plotted for reference;
+  delta  -tip_top_displacement_z (the substrate bottom is fixed) minus the penalty overlap at the
+         centre (contact_max_penetration), minus C P: the finite column and block add a linear
+         far-field compliance C that Hertz's half-spaces do not have. C is fitted by least squares
+         over the compared loads; what is checked is the nonlinear P^(2/3) Hertz part.
+Compared rows: loading, a >= 5 element sizes (--min-rings; past the first contacting rings), a/R <= 0.25.
+Quasi-static check: kinetic energy below 2 % of internal energy on those rows.
+"""
+import argparse
+import csv
+import math
+import sys
+
+E, NU, R = 161e9, 0.23, 27e-9
+ESTAR = E / (2 * (1 - NU * NU))
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("output", help="the run's output folder")
+    p.add_argument("--element-size", type=float, required=True, help="element size at the contact, nm")
+    p.add_argument("--tolerance", type=float, default=0.03)
+    p.add_argument("--min-rings", type=float, default=5.0,
+                   help="compare loads with a >= this many element sizes (past the first contacting rings)")
+    p.add_argument("--plot", help="PNG to write")
+    a = p.parse_args()
+    rows = list(csv.DictReader(open(f"{a.output}/history.csv")))
+    f = lambda r, k: float(r[k])  # noqa: E731
+    h = a.element_size * 1e-9
+    used = []
+    peak = 0.0
+    for r in rows:
+        P = f(r, "contact_normal_force")
+        rad = f(r, "contact_radius_edge")
+        if P < peak:  # loading branch only
+            break
+        peak = P
+        if rad >= a.min_rings * h and rad <= 0.25 * R:
+            used.append(r)
+    if len(used) < 5:
+        print(f"FAIL: only {len(used)} usable rows (need the contact radius between {a.min_rings} element sizes and R/4)")
+        return 1
+    P = [f(r, "contact_normal_force") for r in used]
+    aFE = [f(r, "contact_radius_edge") for r in used]
+    aH = [(3 * x * R / (4 * ESTAR)) ** (1 / 3) for x in P]
+    dH = [x * x / R for x in aH]
+    dtot = [-f(r, "tip_top_displacement_z") - f(r, "contact_max_penetration") for r in used]
+    C = sum((dt - dh) * x for dt, dh, x in zip(dtot, dH, P)) / sum(x * x for x in P)
+    dFE = [dt - C * x for dt, x in zip(dtot, P)]
+    ea = [abs(x - y) / y for x, y in zip(aFE, aH)]
+    ed = [abs(x - y) / y for x, y in zip(dFE, dH)]
+    ke = max(f(r, "kinetic_energy") / f(r, "internal_energy") for r in used)
+    ok = max(ea) <= a.tolerance and max(ed) <= a.tolerance and ke < 0.02
+    print(f"E* = {ESTAR / 1e9:.2f} GPa, R = {R * 1e9:.0f} nm; {len(used)} loads from {P[0] * 1e9:.1f} to {P[-1] * 1e9:.1f} nN "
+          f"(a from {aFE[0] * 1e9:.2f} to {aFE[-1] * 1e9:.2f} nm, a/R up to {aFE[-1] / R:.3f})")
+    print(f"contact radius: max error {max(ea):.2%} (mean {sum(ea) / len(ea):.2%}); tolerance {a.tolerance:.1%}")
+    print(f"approach: far-field compliance C = {C * 1e9 * 1e-9:.4g} m/N ({C:.4g}); max error of delta - C P vs a^2/R "
+          f"{max(ed):.2%}; tolerance {a.tolerance:.1%}")
+    print(f"quasi-static: max kinetic/internal energy {ke:.2%} (limit 2 %)")
+    print("PASS" if ok else "FAIL")
+    if a.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        allP = [f(r, "contact_normal_force") * 1e9 for r in rows if f(r, "contact_normal_force") > 0]
+        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+        Ps = [x * 1e9 for x in P]
+        grid = [max(allP) * i / 200 for i in range(1, 201)]
+        ax1.plot(grid, [(3 * x * 1e-9 * R / (4 * ESTAR)) ** (1 / 3) * 1e9 for x in grid], "k-", label="Hertz")
+        ax1.plot(Ps, [x * 1e9 for x in aFE], "o", ms=3, label="FE (gap sign change on edges)")
+        ax1.plot([f(r, "contact_normal_force") * 1e9 for r in used],
+                 [f(r, "contact_radius") * 1e9 for r in used], "x", ms=3, label="FE sqrt(area/pi) (node rings)")
+        ax1.set_xlabel("contact force P (nN)")
+        ax1.set_ylabel("contact radius a (nm)")
+        ax1.legend(fontsize=8)
+        ax2.plot(grid, [((3 * x * 1e-9 * R / (4 * ESTAR)) ** (2 / 3) / R) * 1e9 for x in grid], "k-", label="Hertz a^2/R")
+        ax2.plot(Ps, [x * 1e9 for x in dFE], "o", ms=3, label="FE approach - C P")
+        ax2.set_xlabel("contact force P (nN)")
+        ax2.set_ylabel("approach (nm)")
+        ax2.legend(fontsize=8)
+        fig.suptitle(f"Hertz, Si on Si, R = 27 nm, element {a.element_size} nm: max errors a {max(ea):.1%}, delta {max(ed):.1%}")
+        fig.tight_layout()
+        fig.savefig(a.plot, dpi=120)
+        print(f"plot: {a.plot}")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
