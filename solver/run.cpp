@@ -248,6 +248,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   if (results) results->flush();
 
   summary.steps = integrator.step_index();
+  summary.contact_seconds = integrator.contact_seconds();
   summary.final_time = integrator.time();
   summary.energy_error = integrator.energies().relative_error();
   summary.ns_per_element_step =
@@ -259,6 +260,10 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                  summary.ns_per_element_step, summary.energy_error));
   log.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out.string().c_str(),
                  results ? ",results.h5,results.xdmf" : ""));
+  if (model.contact)
+    log.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", summary.contact_seconds,
+                   summary.loop_seconds > 0 ? 100.0 * summary.contact_seconds / summary.loop_seconds : 0.0,
+                   model.contact->total_searches()));
   log.say(summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status);
   return summary;
 }

@@ -24,6 +24,7 @@ struct RunSummary {
   double wall_seconds = 0.0;
   double loop_seconds = 0.0;
   double ns_per_element_step = 0.0;  // loop time / (elements * steps)
+  double contact_seconds = 0.0;      // part of the loop spent in contact search and enforcement
   int elements = 0;
   int nodes = 0;
 };

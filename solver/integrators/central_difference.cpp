@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "solver/integrators/central_difference.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -119,6 +120,7 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
   energies_.hourglass = hourglass;
 
   if (model_.contact) {
+    const auto contact_start = std::chrono::steady_clock::now();
     const auto& X = model_.mesh.coordinates;
     for (int node : model_.contact->surface_nodes())
       for (int i = 0; i < 3; ++i) {
@@ -128,6 +130,7 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
     contact_totals_ = model_.contact->compute_forces(x_.data(), v_.data(), f_contact_.data());
     for (int node : model_.contact->surface_nodes())
       for (int i = 0; i < 3; ++i) f_[3 * node + i] += f_contact_[3 * node + i];
+    contact_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
   }
 }
 

@@ -62,6 +62,7 @@ class CentralDifference {
   const Energies& energies() const { return energies_; }
   const contact::ContactTotals& contact_totals() const { return contact_totals_; }  // at time n
   const double* momentum() const { return momentum_; }  // sum m v^n, kg m/s
+  double contact_seconds() const { return contact_seconds_; }  // wall time spent in contact so far
   const StableStep& stable_step() const { return stable_; }
   double time_step_scale_factor() const { return scale_factor_; }
   /// Set by the driver: does the step that reaches (t, n) write element fields? Element stresses
@@ -94,6 +95,7 @@ class CentralDifference {
   std::vector<double> x_, f_contact_;
   contact::ContactTotals contact_totals_;
   double momentum_[3] = {0, 0, 0};
+  double contact_seconds_ = 0.0;
   double contact_power_right_ = 0.0;
   std::function<bool(double, long)> wants_stress_;
 };

@@ -15,9 +15,15 @@
 #include "tools/common/errors.hpp"
 
 namespace tribex::cli {
+
+int contact_bench(const std::vector<std::string>& argv);      // contact_bench.cpp
+int broad_phase_bench(const std::vector<std::string>& argv);  // broad_phase_bench.cpp
+
 namespace {
 
 const char* usage =
+    "tribex bench contact [--faces N] [--steps S]   (search + enforcement cost, see --help)\n"
+    "tribex bench broad-phase [--faces N]           (bucket grid against CGAL box_intersection_d)\n"
     "tribex bench block [--n N] [--element mean_quadrature|fully_integrated]\n"
     "                   [--material elastic|neohookean] [--steps S]\n"
     "  Times the explicit loop on a unit cube of N^3 hex8 elements (default N 20, 200 steps).\n"
@@ -65,6 +71,10 @@ inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::M
 int bench_command(const std::vector<std::string>& argv) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
+  if (!argv.empty() && argv[0] == "contact")
+    return contact_bench(std::vector<std::string>(argv.begin() + 1, argv.end()));
+  if (!argv.empty() && argv[0] == "broad-phase")
+    return broad_phase_bench(std::vector<std::string>(argv.begin() + 1, argv.end()));
   tools::Args args(argv, "tribex bench", usage);
   if (args.help_requested()) {
     std::fputs(usage, stdout);
@@ -76,7 +86,7 @@ int bench_command(const std::vector<std::string>& argv) {
   const std::string element = args.text("--element", "mean_quadrature");
   const std::string material = args.text("--material", "elastic");
   args.finish();
-  if (what != "block") throw tools::BadInput("tribex bench: unknown benchmark '" + what + "' (known: block)");
+  if (what != "block") throw tools::BadInput("tribex bench: unknown benchmark '" + what + "' (known: block, contact, broad-phase)");
   if (n < 1 || n > 400) throw tools::BadInput("tribex bench: --n must be in 1..400");
   if (steps < 1) throw tools::BadInput("tribex bench: --steps must be >= 1");
   inputs::ElementFormulation formulation;
