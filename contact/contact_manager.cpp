@@ -16,7 +16,18 @@ struct BestFace {
 
 // 2. narrow phase: among the candidates, prefer faces over which the node projects (interior),
 // then the smallest |gap|; fall back to the nearest edge/vertex point.
-BestFace closest_face(const double* x, const ContactSurface& master, const int* faces, int count, const double* p) {
+// `hint` (the node's face of the previous step, or -1) is tried first and kept when the node still
+// projects over it: between broad-phase searches a node usually stays over the same face, and this
+// skips the projections onto the other candidates (physics.md 5.1: track the current face).
+BestFace closest_face(const double* x, const ContactSurface& master, const int* faces, int count, const double* p,
+                      int hint = -1) {
+  if (hint >= 0) {
+    double X[12];
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * master.face_nodes[4 * hint + a] + i];
+    const Projection pr = project_onto_quad(X, p);
+    if (pr.interior) return {hint, pr};
+  }
   BestFace best;
   double best_key = INFINITY;
   bool best_interior = false;
@@ -93,6 +104,7 @@ bool ContactManager::needs_search(const Pass& p, const double* x) const {
 
 void ContactManager::search(Pass& p, const double* x) {
   bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.margin, p.candidate_offset, p.candidates);
+  p.last_face.assign(surfaces_[p.slave].nodes.size(), -1);
   std::size_t k = 0;
   for (int s : {p.slave, p.master})
     for (int node : surfaces_[s].nodes) {
@@ -122,7 +134,8 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*
       if (count == 0) continue;
       const int node = slave.nodes[k];
       const double* xs = x + 3 * node;
-      const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, xs);
+      const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, xs, p.last_face[k]);
+      p.last_face[k] = best.face >= 0 && best.proj.interior ? best.face : -1;
       if (best.face >= 0 && best.proj.interior) p.gap[k] = best.proj.gap;
       if (best.face < 0 || !best.proj.interior || best.proj.gap >= 0.0) continue;
       // A node deeper than the search margin is not a contact but the far side of a thin body.

@@ -84,6 +84,7 @@ class ContactManager {
     bool searched = false;
     bool primary = true;
     std::vector<double> gap;  // [slave node] signed gap to the closest face over which it projects (NaN: none)
+    std::vector<int> last_face;  // [slave node] face of the previous step (-1: none), tried first
   };
   double edge_radius(const Pass& p, const double* x) const;
   bool needs_search(const Pass& p, const double* x) const;

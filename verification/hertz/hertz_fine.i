@@ -2,7 +2,7 @@
 # no adhesion: the fine variant (label slow) (verification/hertz/README.md).
 #
 # Run:    build/bin/tribex run verification/hertz/hertz_fine.i -o hertz_fine_output
-# Check:  /usr/bin/python3 verification/hertz/compare.py hertz_fine_output --element-size 0.4 --tolerance 0.015
+# Check:  /usr/bin/python3 verification/hertz/compare.py hertz_fine_output --element-size 0.5 --tolerance 0.015
 #
 #             tip_top: pushed down 1.7 nm; speed 3 m/s at first, then growing as (depth/0.4 nm)^1.25
 #             so kinetic energy stays below 2 % of internal energy; x and y held
@@ -10,7 +10,7 @@
 #          |    tip    |   32 nm square column, spherical bottom face tip_surface (R = 27 nm)
 #           \_________/
 #   +---------------------------+ substrate_top (master surface)
-#   |         substrate         |  120 nm wide, 60 nm deep, graded from 0.4 nm at the contact
+#   |         substrate         |  120 nm wide, 60 nm deep, graded from 0.5 nm at the contact
 #   +---------------------------+ substrate_bottom: fixed
 #
 # What it shows: penalty contact between two deformable bodies (tip_surface -> substrate_top),
@@ -82,9 +82,9 @@ begin sierra hertz_fine
       tip height = 26 nm
       substrate width = 120 nm
       substrate depth = 60 nm
-      element size = 0.4 nm
+      element size = 0.5 nm
       fine half width = 7.2 nm
-      fine depth = 2.4 nm
+      fine depth = 2.5 nm
       grading ratio = 1.35
     end generated asperity
     begin parameters for block tip
