@@ -62,6 +62,9 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
       p.margin = it.search_margin > 0 ? it.search_margin : surfaces_[p.master].mean_edge;
       p.research_fraction = it.research_fraction;
       p.penalty_scale = it.penalty_scale;
+      p.model = it.model;
+      p.adhesion = it.adhesion;
+      p.junction = it.junction;
       p.primary = k == 0;
       p.x_at_search.resize(3 * (surfaces_[p.slave].nodes.size() + surfaces_[p.master].nodes.size()));
       passes_.push_back(std::move(p));
@@ -115,8 +118,87 @@ void ContactManager::search(Pass& p, const double* x) {
   ++total_searches_;
 }
 
-ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*/, double* force) {
+// Totals of the interface models over the passes of one step.
+struct ContactManager::Accumulator {
+  ContactTotals& totals;
+  const double* x;
+  double friction[3] = {0.0, 0.0, 0.0};  // vector sum of shear forces on the (first) slave surfaces, N
+};
+
+// Distance of x from the contact axis, for contact_radius_max.
+static double axis_distance(const double* xs, const double* point, const double* dir) {
+  double r[3], along = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    r[i] = xs[i] - point[i];
+    along += r[i] * dir[i];
+  }
+  double r2 = 0.0;
+  for (int i = 0; i < 3; ++i) r2 += (r[i] - along * dir[i]) * (r[i] - along * dir[i]);
+  return std::sqrt(r2);
+}
+
+// 4. interface models on slave surface node k projecting inside master face `face` with gap g:
+// adhesion sigma_s(g + z0) A_I toward the master for g >= 0 (physics.md 6.2), and for the junction
+// model the shear tau A_I on nodes in contact (g <= g_j; physics.md 7.1-7.2). Penalty contact
+// (g < 0) has been applied and counted by the caller; here a node with 0 <= g <= g_j is counted as
+// in contact (area, status, radius) as well.
+void ContactManager::apply_interface(const Pass& p, int k, int face, const double* shape, const double* normal,
+                                     double gap, const double* v, double* force, Accumulator& acc) {
+  const ContactSurface& slave = surfaces_[p.slave];
+  const ContactSurface& master = surfaces_[p.master];
+  const int node = slave.nodes[k];
+  const int* fn = &master.face_nodes[4 * face];
+  const double area = slave.node_area[k];
+  ContactTotals& totals = acc.totals;
+  totals.adhesion_energy += p.factor * area * adhesive_energy(gap, p.adhesion);
+  double f[3] = {0.0, 0.0, 0.0};  // force on the slave node, N
+  if (gap >= 0.0) {
+    // Attraction: toward the master face, i.e. against its outward normal.
+    const double fa = p.factor * adhesive_traction(gap, p.adhesion) * area;
+    for (int i = 0; i < 3; ++i) f[i] -= fa * normal[i];
+    totals.adhesive_force += fa;
+  }
+  const bool in_contact = gap <= p.junction.gap_tolerance;
+  if (in_contact && gap >= 0.0) {  // g < 0 was counted by the penalty branch
+    status_[node] = 1.0;
+    totals.area += p.factor * area;
+    if (p.primary) ++totals.nodes;
+    if (has_axis_) totals.radius_max = std::max(totals.radius_max, axis_distance(acc.x + 3 * node, axis_point_, axis_dir_));
+  }
+  if (p.model == InterfaceModel::junction && in_contact) {
+    // v_t: tangential part of v_slave - sum_a N_a v_a (relative to the master point).
+    double vr[3] = {0.0, 0.0, 0.0};
+    if (v) {
+      for (int i = 0; i < 3; ++i) {
+        vr[i] = v[3 * node + i];
+        for (int a = 0; a < 4; ++a) vr[i] -= shape[a] * v[3 * fn[a] + i];
+      }
+    }
+    const double vn = vr[0] * normal[0] + vr[1] * normal[1] + vr[2] * normal[2];
+    double vt[3], tau[3];
+    for (int i = 0; i < 3; ++i) vt[i] = vr[i] - vn * normal[i];
+    junction_traction(vt, p.junction, tau);
+    const double sign = p.primary ? 1.0 : -1.0;
+    double power = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double ft = p.factor * tau[i] * area;
+      f[i] += ft;
+      acc.friction[i] += sign * ft;
+      power += ft * vt[i];
+    }
+    totals.friction_power += std::abs(power);
+    totals.junction_capacity += p.factor * p.junction.strength * area;
+  }
+  for (int i = 0; i < 3; ++i) {
+    force[3 * node + i] += f[i];
+    for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= shape[a] * f[i];
+    traction_[3 * node + i] += f[i] / area;
+  }
+}
+
+ContactTotals ContactManager::compute_forces(const double* x, const double* v, double* force) {
   ContactTotals totals;
+  Accumulator acc{totals, x};
   for (int node : all_nodes_) {
     status_[node] = 0.0;
     traction_[3 * node] = traction_[3 * node + 1] = traction_[3 * node + 2] = 0.0;
@@ -137,6 +219,10 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*
       const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, xs, p.last_face[k]);
       p.last_face[k] = best.face >= 0 && best.proj.interior ? best.face : -1;
       if (best.face >= 0 && best.proj.interior) p.gap[k] = best.proj.gap;
+      if (p.model != InterfaceModel::frictionless && best.face >= 0 && best.proj.interior && best.proj.gap >= 0.0) {
+        apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, v, force, acc);
+        continue;
+      }
       if (best.face < 0 || !best.proj.interior || best.proj.gap >= 0.0) continue;
       // A node deeper than the search margin is not a contact but the far side of a thin body.
       if (-best.proj.gap > p.margin) continue;
@@ -157,6 +243,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*
       for (int i = 0; i < 3; ++i) traction_[3 * node + i] += fn_mag * n[i] / area;
       status_[node] = 1.0;
       totals.normal_force += fn_mag;
+      totals.compressive_force += fn_mag;
       totals.area += p.factor * area;
       totals.max_penetration = std::max(totals.max_penetration, -best.proj.gap);
       if (p.primary) ++totals.nodes;
@@ -170,9 +257,14 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* /*v*
         for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
         totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
       }
+      if (p.model != InterfaceModel::frictionless)
+        apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, v, force, acc);
     }
     if (has_axis_ && p.primary) totals.radius_edge = edge_radius(p, x);
   }
+  totals.normal_force = totals.compressive_force - totals.adhesive_force;
+  totals.tangential_force =
+      std::sqrt(acc.friction[0] * acc.friction[0] + acc.friction[1] * acc.friction[1] + acc.friction[2] * acc.friction[2]);
   return totals;
 }
 

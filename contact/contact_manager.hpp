@@ -13,16 +13,24 @@
 //  3. enforcement: penalty normal force f = -k_p g n for g < 0 on the slave node and -N_a f on the
 //     master face nodes (momentum conserved exactly), k_p = penalty_scale m_eff / dt_ref^2 with
 //     m_eff = m_s m_M / (m_s + m_M), 1/m_M = sum_a N_a^2 / m_a (physics.md 5.2): with the default
-//     scale 1 the node's frequency stays inside the central-difference limit at the run's time step.
+//     scale 1 the node's frequency stays inside the central-difference limit at the run's time step;
+//  4. interface models (contact/models/): `adhesion` adds the attractive Lennard-Jones traction
+//     sigma_s(g + z0) A_I on slave nodes with 0 <= g <= g_c (nodal tributary areas A_I, shape-function
+//     reactions on the master); `junction` adds to it the shear tau A_I on slave nodes in contact
+//     (g <= g_j, penalty contact included), tau opposing the relative tangential velocity.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "contact/models/adhesion_lj.hpp"
+#include "contact/models/junction_shear.hpp"
 #include "contact/search/bucket_search.hpp"
 #include "contact/surface.hpp"
 
 namespace tribex::contact {
+
+enum class InterfaceModel { frictionless, adhesion, junction };
 
 struct InteractionSettings {
   std::string name;
@@ -32,11 +40,21 @@ struct InteractionSettings {
   double penalty_scale = 1.0;      // k_p dt^2 / m_eff
   double search_margin = 0.0;      // m; 0: the mean face edge of the master surface
   double research_fraction = 0.25; // re-search when a node moved this fraction of the margin
+  InterfaceModel model = InterfaceModel::frictionless;
+  AdhesionLaw adhesion;            // adhesion and junction models; the margin must be >= g_c
+  JunctionLaw junction;            // junction model
 };
 
+// Forces are those acting on the slave surfaces (for a symmetric interaction the second pass's
+// forces enter with the sign of the reaction on the first slave).
 struct ContactTotals {
-  double normal_force = 0.0;       // sum of normal contact forces on slave nodes, N
-  double tangential_force = 0.0;   // N (junction model, later)
+  double normal_force = 0.0;       // net normal force on slave nodes, compressive - adhesive, N
+  double tangential_force = 0.0;   // magnitude of the vector sum of junction shear forces, N
+  double compressive_force = 0.0;  // sum of penalty (repulsive) normal forces, N
+  double adhesive_force = 0.0;     // sum of attractive adhesion forces (positive), N
+  double adhesion_energy = 0.0;    // adhesive potential sum_I A_I U(g_I) (<= 0), J
+  double junction_capacity = 0.0;  // tau* x contact area (junction model), N
+  double friction_power = 0.0;     // sum_I |F_t,I . v_t,I| dissipated by the junction shear, W
   double area = 0.0;               // sum of tributary areas of slave nodes in contact, m^2
   int nodes = 0;                   // slave nodes in contact (first pass of each interaction)
   double max_penetration = 0.0;    // m
@@ -79,6 +97,9 @@ class ContactManager {
     double margin;
     double research_fraction;
     double penalty_scale;
+    InterfaceModel model;
+    AdhesionLaw adhesion;
+    JunctionLaw junction;
     std::vector<int> candidate_offset, candidates;
     std::vector<double> x_at_search;  // [slave node + master node][3] positions at the last search
     bool searched = false;
@@ -89,6 +110,9 @@ class ContactManager {
   double edge_radius(const Pass& p, const double* x) const;
   bool needs_search(const Pass& p, const double* x) const;
   void search(Pass& p, const double* x);
+  struct Accumulator;
+  void apply_interface(const Pass& p, int k, int face, const double* shape, const double* normal, double gap,
+                       const double* v, double* force, Accumulator& acc);
 
   std::vector<ContactSurface> surfaces_;
   std::vector<Pass> passes_;

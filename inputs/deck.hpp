@@ -197,16 +197,24 @@ struct ContactSurfaceSpec {
   SourceLocation where;
 };
 
-enum class InteractionModel { frictionless };
+enum class InteractionModel { frictionless, adhesion, junction };
 
 /// `begin interaction NAME` inside a contact definition: `surfaces = SLAVE MASTER` (the slave
-/// should be the finer surface), `model = frictionless`, `symmetric = on|off` (two-pass).
+/// should be the finer surface), `model = frictionless | adhesion | junction`, `symmetric = on|off`
+/// (two-pass). Adhesion (physics.md 6) needs `work of adhesion` and `equilibrium separation`;
+/// junction (physics.md 7) needs those and `junction strength`.
 struct InteractionSpec {
   std::string name;
   std::string slave;   // surface names, checked by the parser
   std::string master;
   InteractionModel model = InteractionModel::frictionless;
   bool symmetric = false;
+  double work_of_adhesion = 0.0;               // W, J/m^2
+  double equilibrium_separation = 0.0;         // z0, m
+  std::optional<double> adhesion_cutoff;       // h_c (separation, > z0), m; default 5 z0
+  double junction_strength = 0.0;              // tau*, Pa
+  std::optional<double> junction_reference_speed;  // v_ref, m/s; default 0.1 m/s (raised to stability)
+  std::optional<double> junction_gap_tolerance;    // g_j, m; default 0.05 z0
   SourceLocation where;
 };
 

@@ -445,9 +445,44 @@ class Builder {
       }
       i.model = InteractionModel::frictionless;
       if (auto v = get(*it, "symmetric")) i.symmetric = v->flag;
+      interface_model(*it, i);
       spec.interactions.push_back(i);
     }
     return spec;
+  }
+
+  // `model = adhesion | junction` and their parameters (physics.md 6, 7): each parameter belongs to
+  // a model, each model needs its parameters; the cutoff is a separation and must exceed z0.
+  void interface_model(const Scope& it, InteractionSpec& i) {
+    const std::string m = word(it, "model");
+    i.model = m == "adhesion" ? InteractionModel::adhesion
+              : m == "junction" ? InteractionModel::junction
+                                : InteractionModel::frictionless;
+    const bool adhesive = i.model != InteractionModel::frictionless;
+    const bool junction = i.model == InteractionModel::junction;
+    const char* adhesion_keys[] = {"work of adhesion", "equilibrium separation", "adhesion cutoff"};
+    const char* junction_keys[] = {"junction strength", "junction reference speed", "junction gap tolerance"};
+    for (const char* k : adhesion_keys)
+      if (!adhesive && it.find(k))
+        error(where(it, k), it, std::string("'") + k + "' applies to 'model = adhesion' or 'model = junction'; set the model or remove the key");
+    for (const char* k : junction_keys)
+      if (!junction && it.find(k))
+        error(where(it, k), it, std::string("'") + k + "' applies to 'model = junction'; set 'model = junction' or remove the key");
+    if (!adhesive) return;
+    for (const char* k : {"work of adhesion", "equilibrium separation"})
+      if (!it.find(k))
+        error(where(it, "model"), it, "'model = " + m + "' needs '" + k + "' (the Lennard-Jones adhesion law, physics.md 6); add it to the interaction");
+    if (junction && !it.find("junction strength"))
+      error(where(it, "model"), it, "'model = junction' needs 'junction strength' (tau*, Pa); add it to the interaction");
+    i.work_of_adhesion = real(it, "work of adhesion");
+    i.equilibrium_separation = real(it, "equilibrium separation");
+    i.adhesion_cutoff = optional_real(it, "adhesion cutoff");
+    if (i.adhesion_cutoff && it.find("equilibrium separation") && !(*i.adhesion_cutoff > i.equilibrium_separation))
+      error(where(it, "adhesion cutoff"), it,
+            "'adhesion cutoff' is the cut-off separation h_c (measured like h = gap + z0) and must exceed 'equilibrium separation' z0; use e.g. 5 z0");
+    i.junction_strength = real(it, "junction strength");
+    i.junction_reference_speed = optional_real(it, "junction reference speed");
+    i.junction_gap_tolerance = optional_real(it, "junction gap tolerance");
   }
 
   template <class Output>

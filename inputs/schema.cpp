@@ -236,8 +236,20 @@ std::vector<BlockSchema> build_table() {
   }
   t.push_back({"interaction", NameRule::required, {}, {}, true,
                {text("surfaces", ValueKind::strings, true, "SLAVE MASTER (the slave is the finer surface)"),
-                choice("model", ValueKind::enumeration, {"frictionless"}, false, "frictionless", "interaction model"),
-                boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved")},
+                choice("model", ValueKind::enumeration, {"frictionless", "adhesion", "junction"}, false, "frictionless",
+                       "interaction model (adhesion: + Lennard-Jones attraction; junction: + shear tau*)"),
+                boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved"),
+                real("work of adhesion", dim::energy_per_area, positive(), false, "",
+                     "W of the adhesion law (models adhesion, junction)"),
+                real("equilibrium separation", dim::length, positive(), false, "",
+                     "z0 of the adhesion law (models adhesion, junction)"),
+                real("adhesion cutoff", dim::length, positive(), false, "",
+                     "cut-off separation h_c, measured like h = gap + z0, > z0 (default 5 z0)"),
+                real("junction strength", dim::pressure, positive(), false, "", "tau* (model junction)"),
+                real("junction reference speed", dim::velocity, positive(), false, "",
+                     "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s, raised to the stability bound)"),
+                real("junction gap tolerance", dim::length, non_negative(), false, "",
+                     "a node is in contact when gap <= this (default 0.05 z0)")},
                {},
                false, "one pair of contact surfaces and its model"});
 

@@ -10,6 +10,67 @@
 #include "solver/output/run_log.hpp"
 
 namespace tribex::solver {
+namespace {
+
+// Adhesion / junction parameters (physics.md 6, 7) with their defaults, the capture distance of the
+// search raised to the adhesion cut-off gap, and v_ref raised to the explicit stability bound of the
+// tanh damper (physics.md 7.3); each choice goes to the run log.
+void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
+                     const contact::ContactSurface& slave, const contact::ContactSurface& master,
+                     const std::vector<double>& mass, double dt, contact::InteractionSettings& s,
+                     std::vector<std::string>* report) {
+  auto log = [&](const std::string& line) {
+    if (report) report->push_back("  interaction " + it.name + ": " + line);
+  };
+  const bool junction = it.model == inputs::InteractionModel::junction;
+  s.model = junction ? contact::InterfaceModel::junction : contact::InterfaceModel::adhesion;
+  s.adhesion.work = it.work_of_adhesion;
+  s.adhesion.z0 = it.equilibrium_separation;
+  s.adhesion.cutoff = it.adhesion_cutoff.value_or(5.0 * it.equilibrium_separation);
+  s.junction.gap_tolerance = it.junction_gap_tolerance.value_or(0.05 * it.equilibrium_separation);
+  log(format("adhesion W = %.4g J/m^2, z0 = %.4g m, cutoff h_c = %.4g m (%.3g z0%s), captured work %.4g J/m^2 "
+             "(%.2f %% of W), in contact when gap <= %.4g m",
+             s.adhesion.work, s.adhesion.z0, s.adhesion.cutoff, s.adhesion.cutoff / s.adhesion.z0,
+             it.adhesion_cutoff ? "" : ", default 5 z0", contact::captured_work(s.adhesion),
+             100.0 * contact::captured_work(s.adhesion) / s.adhesion.work, s.junction.gap_tolerance));
+  // The search must capture every pair within the cut-off gap g_c, not only penetrating ones.
+  const double g_c = s.adhesion.capture_gap();
+  const double margin = s.search_margin > 0 ? s.search_margin : master.mean_edge;
+  if (margin < g_c) {
+    if (spec.search_margin)
+      throw SetupError(spec.where.str() + ": error: 'search margin' " + format("%.4g m", margin) +
+                       " is below the adhesion cut-off gap h_c - z0 = " + format("%.4g m", g_c) + " of interaction '" +
+                       it.name + "'; raise 'search margin' to at least that or lower 'adhesion cutoff'");
+    s.search_margin = g_c;
+    log(format("search margin raised from the mean face edge %.4g m to the cut-off gap %.4g m", margin, g_c));
+  }
+  if (!junction) return;
+  s.junction.strength = it.junction_strength;
+  // Stability of the damper c = tau* A_I / v_ref (physics.md 7.3): c dt / m_eff < 2. m_eff is not
+  // known before pairing: estimate it with the median master node mass, m_eff = m_I m_M / (m_I + m_M),
+  // and keep a factor 2 of margin because several slave nodes can load one master node.
+  std::vector<double> master_mass;
+  for (int node : master.nodes) master_mass.push_back(mass[node]);
+  std::nth_element(master_mass.begin(), master_mass.begin() + master_mass.size() / 2, master_mass.end());
+  const double m_master = master_mass[master_mass.size() / 2];
+  double v_min = 0.0;
+  for (int k = 0; k < slave.node_count(); ++k) {
+    const double ms = mass[slave.nodes[k]];
+    const double m_eff = ms * m_master / (ms + m_master);
+    v_min = std::max(v_min, 2.0 * s.junction.strength * slave.node_area[k] * dt / (2.0 * m_eff));
+  }
+  const double v_ref = it.junction_reference_speed.value_or(0.1);
+  s.junction.reference_speed = v_ref;
+  if (v_ref < v_min) {
+    s.junction.reference_speed = v_min;
+    log(format("junction reference speed raised from %.4g m/s to twice the stability bound tau* A_I dt / (2 m_eff) = %.4g m/s",
+               v_ref, v_min));
+  }
+  log(format("junction strength tau* = %.4g Pa, reference speed %.4g m/s (tanh law)", s.junction.strength,
+             s.junction.reference_speed));
+}
+
+}  // namespace
 
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
                                                        std::vector<std::string>* report) {
@@ -43,6 +104,9 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     s.symmetric = it.symmetric;
     s.penalty_scale = spec.penalty_scale_factor;
     s.search_margin = spec.search_margin.value_or(0.0);
+    if (it.model != inputs::InteractionModel::frictionless)
+      interface_model(it, spec, surfaces[static_cast<std::size_t>(s.slave)], surfaces[static_cast<std::size_t>(s.master)],
+                      model.mass, dt, s, report);
     interactions.push_back(s);
   }
   auto manager = std::make_unique<contact::ContactManager>(std::move(surfaces), std::move(interactions), model.mass, dt,

@@ -173,7 +173,9 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                              E.silent_boundary_dissipation, E.contact_work, E.relative_error(), C.normal_force,
                              C.tangential_force, C.area, double(C.nodes), E.damping_dissipation, E.viscous_dissipation,
                              std::sqrt(C.area / M_PI), C.radius_max, C.max_penetration, integrator.momentum()[0],
-                             integrator.momentum()[1], integrator.momentum()[2], C.radius_edge});
+                             integrator.momentum()[1], integrator.momentum()[2], C.radius_edge, C.adhesive_force,
+                             C.compressive_force, C.tangential_force, C.junction_capacity, C.adhesion_energy,
+                             C.friction_power});
       for (const auto* set : reaction_sets) {
         double r[3] = {0, 0, 0};
         for (int node : *set)

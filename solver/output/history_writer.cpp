@@ -14,7 +14,11 @@ const std::vector<std::string>& HistoryWriter::standard_columns() {
       "silent_boundary_dissipation", "contact_work", "energy_error", "contact_normal_force",
       "contact_tangential_force", "contact_area", "contact_nodes", "damping_dissipation", "viscous_dissipation",
       "contact_radius", "contact_radius_max", "contact_max_penetration", "momentum_x", "momentum_y", "momentum_z",
-      "contact_radius_edge"};
+      "contact_radius_edge",
+      // interface models (contact/models/): forces on the slave surfaces, N; tau* x contact area, N;
+      // adhesive potential, J; junction dissipation rate, W
+      "adhesive_force", "compressive_force", "friction_force", "tau_star_times_area", "adhesion_energy",
+      "friction_power"};
   return columns;
 }
 
