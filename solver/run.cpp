@@ -93,6 +93,20 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     log.say(format("  block %-16s %8d elements  %s  %s", b.name.c_str(), b.count,
                    std::holds_alternative<materials::LinearElastic>(b.material) ? "elastic" : "neo_hookean",
                    b.formulation == inputs::ElementFormulation::mean_quadrature ? "mean_quadrature" : "fully_integrated"));
+  {
+    double worst = 1.0, sum = 0.0;
+    int worst_element = 0;
+    for (int e = 0; e < elements; ++e) {
+      const double q = mesh::scaled_jacobian(mesh, e);
+      sum += q;
+      if (q < worst) {
+        worst = q;
+        worst_element = e;
+      }
+    }
+    log.say(format("element quality: scaled Jacobian min %.3f (element %d), mean %.3f", worst, worst_element + 1,
+                   elements ? sum / elements : 0.0));
+  }
   const StableStep stable0 = compute_stable_time_step(model, nullptr);
   log.say(format("stable time step %.6g s (element %d controls it); scale factor %.3g => dt = %.6g s", stable0.dt,
                  stable0.controlling_element + 1, tc.time_step_scale_factor,

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""DMT check of an adhesive asperity indentation (verification/dmt/*.i).
+
+Reference (physics.md 8.2): a^3 = 3R(P + 2 pi W R)/(4E*), pull-off P_c = -2 pi W R, with
+E* = E/(2(1 - nu^2)) = 85.0 GPa, R = 27 nm, W = 0.05 J/m^2 (Tabor mu_T = 0.070 for z0 = 0.3 nm,
+so the Maugis-Dugdale pull-off is 1.95 pi W R, between DMT's 2 and the JKR 1.5).
+Measured: P = contact_normal_force (compressive minus adhesive: the load the tip applies);
+a = contact_radius_edge (gap sign change along the tip-surface edges, see verification/hertz).
+Compared: loading branch with a >= 5 element sizes and a/R <= 0.25: a within the tolerance of
+DMT at the effective load P + 2 pi W R; pull-off = the most negative P during withdrawal, within
+the tolerance of 2 pi W R. With W = 0 the same comparison is the Hertz one (--work-of-adhesion 0).
+"""
+import argparse
+import csv
+import math
+import sys
+
+E, NU, R = 161e9, 0.23, 27e-9
+ESTAR = E / (2 * (1 - NU * NU))
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("output")
+    p.add_argument("--element-size", type=float, required=True, help="nm")
+    p.add_argument("--work-of-adhesion", type=float, default=0.05, help="J/m^2")
+    p.add_argument("--tolerance", type=float, default=0.05)
+    p.add_argument("--plot")
+    a = p.parse_args()
+    W = a.work_of_adhesion
+    rows = list(csv.DictReader(open(f"{a.output}/history.csv")))
+    f = lambda r, k: float(r[k])  # noqa: E731
+    h = a.element_size * 1e-9
+    # Loading branch: up to the deepest tip position.
+    z = [f(r, "tip_top_displacement_z") for r in rows]
+    deepest = min(range(len(z)), key=lambda i: z[i])
+    used = [r for r in rows[: deepest + 1]
+            if 5 * h <= f(r, "contact_radius_edge") <= 0.25 * R]
+    P = [f(r, "contact_normal_force") for r in used]
+    aFE = [f(r, "contact_radius_edge") for r in used]
+    aD = [(3 * R * (x + 2 * math.pi * W * R) / (4 * ESTAR)) ** (1 / 3) for x in P]
+    ea = [abs(x - y) / y for x, y in zip(aFE, aD)]
+    pull_off = min(f(r, "contact_normal_force") for r in rows[deepest:])
+    Pc = -2 * math.pi * W * R
+    ep = abs(pull_off - Pc) / abs(Pc) if W > 0 else 0.0
+    ok = len(used) >= 5 and max(ea) <= a.tolerance and ep <= a.tolerance
+    print(f"W = {W} J/m^2, 2 pi W R = {-Pc * 1e9:.3f} nN; {len(used)} loads from {P[0] * 1e9:.1f} to {P[-1] * 1e9:.1f} nN")
+    print(f"contact radius vs DMT at P + 2 pi W R: max error {max(ea):.2%} (mean {sum(ea) / len(ea):.2%}); "
+          f"tolerance {a.tolerance:.0%}")
+    if W > 0:
+        print(f"pull-off {pull_off * 1e9:.3f} nN vs -2 pi W R = {Pc * 1e9:.3f} nN: error {ep:.2%}; tolerance {a.tolerance:.0%}")
+    print("PASS" if ok else "FAIL")
+    if a.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(6, 4.5))
+        grid = [Pc + (max(P) - Pc) * i / 300 for i in range(301)]
+        ax.plot([x * 1e9 for x in grid], [(3 * R * max(x - Pc, 0) / (4 * ESTAR)) ** (1 / 3) * 1e9 for x in grid],
+                "k-", label="DMT, W = %.2f J/m$^2$" % W)
+        gh = [x for x in grid if x >= 0]
+        ax.plot([x * 1e9 for x in gh], [(3 * R * x / (4 * ESTAR)) ** (1 / 3) * 1e9 for x in gh], "k--", label="Hertz (W = 0)")
+        ax.plot([x * 1e9 for x in P], [x * 1e9 for x in aFE], "o", ms=3, label="FE, loading")
+        ax.axvline(pull_off * 1e9, color="r", lw=0.8, label=f"FE pull-off {pull_off * 1e9:.2f} nN")
+        ax.set_xlabel("applied load P (nN)")
+        ax.set_ylabel("contact radius a (nm)")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(a.plot, dpi=120)
+        print(f"plot: {a.plot}")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
