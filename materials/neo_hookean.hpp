@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+#include "materials/small_matrix.hpp"
+
 namespace tribex::materials {
 
 struct NeoHookean {
@@ -21,16 +23,7 @@ struct NeoHookean {
     const double F[9] = {1.0 + H[0], H[1], H[2], H[3], 1.0 + H[4], H[5], H[6], H[7], 1.0 + H[8]};
     // cof(F) = J F^{-T}
     double C[9];
-    C[0] = F[4] * F[8] - F[5] * F[7];
-    C[1] = F[5] * F[6] - F[3] * F[8];
-    C[2] = F[3] * F[7] - F[4] * F[6];
-    C[3] = F[2] * F[7] - F[1] * F[8];
-    C[4] = F[0] * F[8] - F[2] * F[6];
-    C[5] = F[1] * F[6] - F[0] * F[7];
-    C[6] = F[1] * F[5] - F[2] * F[4];
-    C[7] = F[2] * F[3] - F[0] * F[5];
-    C[8] = F[0] * F[4] - F[1] * F[3];
-    const double J = F[0] * C[0] + F[1] * C[1] + F[2] * C[2];
+    const double J = cofactor3(F, C);
     if (!(J > 0.0)) return std::nan("");
     const double lnJ = std::log(J);
     const double a = (lambda * lnJ - mu) / J;  // coefficient of F^{-T} = cof/J

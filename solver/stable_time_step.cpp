@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "materials/small_matrix.hpp"
 #include "solver/hex8/geometry.hpp"
 
 namespace tribex::solver {
@@ -32,10 +33,8 @@ StableStep compute_stable_time_step(const Model& model, const double* u) {
         }
         for (double& h : H) h /= blk.volume0[e];
         const double F[9] = {1 + H[0], H[1], H[2], H[3], 1 + H[4], H[5], H[6], H[7], 1 + H[8]};
-        const double C[9] = {F[4] * F[8] - F[5] * F[7], F[5] * F[6] - F[3] * F[8], F[3] * F[7] - F[4] * F[6],
-                             F[2] * F[7] - F[1] * F[8], F[0] * F[8] - F[2] * F[6], F[1] * F[6] - F[0] * F[7],
-                             F[1] * F[5] - F[2] * F[4], F[2] * F[3] - F[0] * F[5], F[0] * F[4] - F[1] * F[3]};
-        J = F[0] * C[0] + F[1] * C[1] + F[2] * C[2];
+        double C[9];
+        J = materials::cofactor3(F, C);
         if (!(J > 0.0)) {
           if (out.inverted_element < 0) out.inverted_element = global;
           continue;

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "materials/small_matrix.hpp"
+
 namespace tribex::solver::hex8 {
 namespace {
 
@@ -32,16 +34,12 @@ double jacobian(const double X[24], const double dN[24], double adj[9]) {
   for (int I = 0; I < 8; ++I)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) J[3 * i + j] += X[3 * I + i] * dN[8 * j + I];
-  adj[0] = J[4] * J[8] - J[5] * J[7];
-  adj[1] = J[2] * J[7] - J[1] * J[8];
-  adj[2] = J[1] * J[5] - J[2] * J[4];
-  adj[3] = J[5] * J[6] - J[3] * J[8];
-  adj[4] = J[0] * J[8] - J[2] * J[6];
-  adj[5] = J[2] * J[3] - J[0] * J[5];
-  adj[6] = J[3] * J[7] - J[4] * J[6];
-  adj[7] = J[1] * J[6] - J[0] * J[7];
-  adj[8] = J[0] * J[4] - J[1] * J[3];
-  return J[0] * adj[0] + J[1] * adj[3] + J[2] * adj[6];
+  // adj(J) = cof(J)^T
+  double C[9];
+  const double det = materials::cofactor3(J, C);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) adj[3 * i + j] = C[3 * j + i];
+  return det;
 }
 
 constexpr double g = 0.57735026918962576451;  // 1/sqrt(3)
