@@ -48,9 +48,10 @@ ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk
         break;
       }
       energy += w * W;
+      for (double& x : S) x *= w;  // fold the weight into the 9 stresses, not the 24 forces
       for (int i = 0; i < 3; ++i)
         for (int I = 0; I < 8; ++I)
-          fe[8 * i + I] += w * (S[3 * i] * D[I] + S[3 * i + 1] * D[8 + I] + S[3 * i + 2] * D[16 + I]);
+          fe[8 * i + I] += S[3 * i] * D[I] + S[3 * i + 1] * D[8 + I] + S[3 * i + 2] * D[16 + I];
       if (want_stress) {
         double sv[6];
         mat.cauchy_stress(H, sv);
