@@ -161,6 +161,7 @@ class TreeBuilder {
                     "NAME' ... 'end sierra'");
         outside_reported_ = true;
       } else if (!known.empty()) {
+        stack_.front().rejected_blocks.emplace_back(known, join(line.words, 1 + known_n, line.words.size()));
         sink_.error(line.where(), parent.path,
                     "block 'begin " + known + "' cannot stand inside " + where_text + "; allowed here: " +
                         allowed_children(ps) + "; move it to its proper enclosing block");
@@ -168,6 +169,10 @@ class TreeBuilder {
         std::vector<std::string> candidates;
         for (const auto& c : ps.children) candidates.push_back(c.type);
         const std::string hint = closest_phrase(lowered, 1, candidates);
+        if (!hint.empty()) {
+          const std::size_t n = split_words(hint).size();
+          stack_.front().rejected_blocks.emplace_back(hint, join(line.words, 1 + n, line.words.size()));
+        }
         sink_.error(line.where(), parent.path,
                     "unknown block 'begin " + join(line.words, 1, line.words.size()) + "'" +
                         (hint.empty() ? "" : "; did you mean 'begin " + hint + "'?") + " allowed in " + where_text +
