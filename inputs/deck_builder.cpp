@@ -25,7 +25,8 @@ struct FunctionUnits {
 
 class Builder {
  public:
-  Builder(const std::string& file_name, DiagnosticSink& sink) : file_name_(file_name), sink_(sink) {}
+  Builder(const Scope& root, const std::string& file_name, DiagnosticSink& sink)
+      : root_(root), file_name_(file_name), sink_(sink) {}
 
   Deck build(const Scope& root) {
     Deck deck;
@@ -82,6 +83,9 @@ class Builder {
     for (const auto& k : known) {
       if (k.name == name) return true;
       if (!k.name.empty()) names.push_back(k.name);
+    }
+    for (const auto& [type, rejected] : root_.rejected_blocks) {
+      if (type == what && rejected == name) return false;  // its block was already reported
     }
     const std::string hint = closest_match(name, names);
     error(where(s, key), s,
@@ -499,6 +503,7 @@ class Builder {
     }
   }
 
+  const Scope& root_;
   std::string file_name_;
   DiagnosticSink& sink_;
   std::map<std::string, FunctionUnits> function_units_;
@@ -507,7 +512,7 @@ class Builder {
 }  // namespace
 
 Deck build_deck(const Scope& root, const std::string& file_name, DiagnosticSink& sink) {
-  return Builder(file_name, sink).build(root);
+  return Builder(root, file_name, sink).build(root);
 }
 
 }  // namespace tribex::inputs

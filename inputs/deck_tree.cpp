@@ -30,13 +30,18 @@ std::vector<std::string> split_words(const std::string& s) {
 }
 
 // Number of leading words of `words` (from `from`) that spell `phrase`, or 0 if they do not.
+// (Walks the phrase in place: this runs for every key of a scope on every line.)
 std::size_t prefix_match(const std::vector<std::string>& lowered, std::size_t from, const std::string& phrase) {
-  const auto parts = split_words(phrase);
-  if (lowered.size() - from < parts.size()) return 0;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    if (lowered[from + k] != parts[k]) return 0;
+  const std::string_view p(phrase);
+  std::size_t n = 0, start = 0;
+  while (start < p.size()) {
+    std::size_t stop = p.find(' ', start);
+    if (stop == std::string_view::npos) stop = p.size();
+    if (from + n >= lowered.size() || lowered[from + n] != p.substr(start, stop - start)) return 0;
+    ++n;
+    start = stop + 1;
   }
-  return parts.size();
+  return n;
 }
 
 std::string join(const std::vector<Word>& words, std::size_t from, std::size_t to) {
@@ -161,6 +166,7 @@ class TreeBuilder {
                     "NAME' ... 'end sierra'");
         outside_reported_ = true;
       } else if (!known.empty()) {
+        stack_.front().rejected_blocks.emplace_back(known, join(line.words, 1 + known_n, line.words.size()));
         sink_.error(line.where(), parent.path,
                     "block 'begin " + known + "' cannot stand inside " + where_text + "; allowed here: " +
                         allowed_children(ps) + "; move it to its proper enclosing block");
@@ -168,6 +174,10 @@ class TreeBuilder {
         std::vector<std::string> candidates;
         for (const auto& c : ps.children) candidates.push_back(c.type);
         const std::string hint = closest_phrase(lowered, 1, candidates);
+        if (!hint.empty()) {
+          const std::size_t n = split_words(hint).size();
+          stack_.front().rejected_blocks.emplace_back(hint, join(line.words, 1 + n, line.words.size()));
+        }
         sink_.error(line.where(), parent.path,
                     "unknown block 'begin " + join(line.words, 1, line.words.size()) + "'" +
                         (hint.empty() ? "" : "; did you mean 'begin " + hint + "'?") + " allowed in " + where_text +

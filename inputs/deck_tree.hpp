@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "inputs/diagnostic_sink.hpp"
@@ -38,6 +39,9 @@ struct Scope {
   std::vector<Scope> children;
   std::vector<Row> rows;  // `begin values` tables
   std::vector<const KeySchema*> misspelt;  // keys a did-you-mean hint pointed to
+  /// Root only: (TYPE, NAME) of blocks rejected as misplaced or misspelt (with a hint), so that
+  /// references to them are not reported a second time as undefined.
+  std::vector<std::pair<std::string, std::string>> rejected_blocks;
 
   const std::string& type() const { return schema->type; }
   const KeyLine* find(const std::string& key) const;

@@ -21,6 +21,13 @@ class Lexer {
   Lexer(DiagnosticSink& sink, const LexerLimits& limits) : sink_(sink), limits_(limits) {}
 
   void lex_text(std::string_view text, const std::string& file_name) {
+    total_bytes_ += text.size();
+    if (text.size() > limits_.max_file_bytes || total_bytes_ > limits_.max_total_bytes) {
+      sink_.error(at(file_name, 1, 1), "",
+                  "the deck and its includes exceed " + std::to_string(limits_.max_total_bytes >> 20) +
+                      " MiB (this file: " + std::to_string(text.size()) + " bytes); a deck is a short text file");
+      return;
+    }
     if (const auto bad = first_invalid_byte(text); bad != std::string_view::npos) {
       int line = 1;
       std::size_t line_start = 0;
@@ -168,6 +175,7 @@ class Lexer {
   LexerLimits limits_;
   std::vector<std::string> stack_;  // canonical paths of the files being read (cycle check)
   std::vector<LogicalLine> lines_;
+  std::size_t total_bytes_ = 0;
 };
 
 }  // namespace

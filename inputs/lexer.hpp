@@ -32,7 +32,8 @@ struct LogicalLine {
 
 /// Limits that keep memory bounded on hostile input.
 struct LexerLimits {
-  std::size_t max_file_bytes = 64u << 20;  // per file
+  std::size_t max_file_bytes = 8u << 20;    // per file: a deck is a short text file
+  std::size_t max_total_bytes = 16u << 20;  // all files of one deck (one file may be included often)
   int max_include_depth = 32;
 };
 

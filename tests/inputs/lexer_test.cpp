@@ -127,3 +127,16 @@ TEST_F(IncludeFiles, DirectoriesAndDevicesAreNotDecks) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Lexer, InputSizeIsBounded) {
+  LexerLimits small;
+  small.max_file_bytes = 100;
+  small.max_total_bytes = 100;
+  DiagnosticSink sink;
+  EXPECT_TRUE(lex_deck_text(std::string(101, 'a'), "big.i", sink, small).empty());
+  EXPECT_EQ(sink.size(), 1u);
+}
+
+}  // namespace

@@ -304,6 +304,14 @@ TEST(Parser, MisplacedAndUnknownBlocksSkipTheirContents) {
   EXPECT_EQ(ds[0].where.line, 34);
 }
 
+TEST(Parser, AMisspeltBlockIsReportedOnceNotAgainWhereItIsUsed) {
+  std::string text = deck_with_region("");
+  text.replace(text.find("begin solid section s\n"), 22, "begin solid sectoin s\n");
+  const auto ds = errors_of(text);
+  ASSERT_EQ(ds.size(), 1u) << all(ds);
+  EXPECT_NE(ds[0].message.find("did you mean 'begin solid section'"), std::string::npos);
+}
+
 TEST(Parser, HostileInputIsBounded) {
   std::string text = "begin sierra s\n";
   for (int i = 0; i < 2000; ++i) text += "  nonsense = " + std::to_string(i) + "\n";
