@@ -39,7 +39,7 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
     b.hg_k.resize(n);
     b.hg_c.resize(n);
   } else {
-    b.jinv.resize(72 * n);
+    b.dNdX.resize(192 * n);
     b.wdetJ.resize(8 * n);
   }
   for (int e = 0; e < b.count; ++e) {
@@ -64,7 +64,7 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
       // Q^v = nu rho c sqrt(B.B/3) qdot
       b.hg_c[e] = b.hourglass_viscosity * b.rho_c * std::sqrt(bb / 3.0) / 8.0;
     } else {
-      hex8::gauss_point_inverse_jacobians(X, &b.jinv[72 * e], &b.wdetJ[8 * e]);
+      hex8::gauss_point_gradients(X, &b.dNdX[192 * e], &b.wdetJ[8 * e]);
     }
   }
   return b;

@@ -34,7 +34,7 @@ struct ElementBlock {
   std::vector<double> hg_k;      // [e] kappa M (B.B)/(24 V): f = hg_k gamma gamma^T u   (N/m)
   std::vector<double> hg_c;      // [e] nu rho c sqrt(B.B/3)/8: f = hg_c gamma gamma^T v  (N s/m)
   // fully integrated only
-  std::vector<double> jinv;      // [e][8 points][3][3] inverse Jacobians dxi/dX (1/m)
+  std::vector<double> dNdX;      // [e][8 points][3][8] (1/m)
   std::vector<double> wdetJ;     // [e][8] (m^3)
   // output (filled only on steps that write element fields)
   std::vector<double> stress;    // [e][6] Cauchy, Voigt xx yy zz xy yz zx (Pa)
@@ -54,7 +54,7 @@ struct ElementPassTotals {
 };
 
 /// Internal forces of one block, subtracted from `force` [node][3]:
-///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dN_I/dX_j (fully integrated),
+///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dNdX_gjI (fully integrated),
 /// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (physics.md 1.5),
 /// plus Flanagan-Belytschko hourglass forces (mean quadrature, physics.md 2.2).
 /// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "solver/hex8/geometry.hpp"
 
-#include <array>
 #include <cmath>
 
 #include "materials/small_matrix.hpp"
@@ -78,26 +77,19 @@ double characteristic_length(const double B[24], double volume) {
   return volume / std::sqrt(2.0 * bb);
 }
 
-const double* reference_gradient_table() {
-  static const auto table = [] {
-    std::array<double, 192> t{};
-    for (int p = 0; p < 8; ++p) reference_gradients(xi_n[p] * g, eta_n[p] * g, zeta_n[p] * g, &t[24 * p]);
-    return t;
-  }();
-  return table.data();
-}
-
-double gauss_point_inverse_jacobians(const double X[24], double Jinv[72], double wdetJ[8]) {
+double gauss_point_gradients(const double X[24], double dNdX[192], double wdetJ[8]) {
   double volume = 0.0;
   bool inverted = false;
-  const double* dN = reference_gradient_table();
+  double dN[24], adj[9];
   for (int p = 0; p < 8; ++p) {
-    double adj[9];
-    const double detJ = jacobian(X, dN + 24 * p, adj);
+    reference_gradients(xi_n[p] * g, eta_n[p] * g, zeta_n[p] * g, dN);
+    const double detJ = jacobian(X, dN, adj);
     inverted = inverted || !(detJ > 0.0);
     wdetJ[p] = detJ;
     volume += detJ;
-    for (int k = 0; k < 9; ++k) Jinv[9 * p + k] = adj[k] / detJ;
+    for (int i = 0; i < 3; ++i)
+      for (int I = 0; I < 8; ++I)
+        dNdX[24 * p + 8 * i + I] = (adj[i] * dN[I] + adj[3 + i] * dN[8 + I] + adj[6 + i] * dN[16 + I]) / detJ;
   }
   return inverted ? -std::abs(volume) : volume;
 }

@@ -6,7 +6,7 @@
 //   X      [8][3]  nodal coordinates, node I at 3I..3I+2, node order of physics.md 2.1 / mesh.hpp
 //   B      [3][8]  B_iI = int_V dN_I/dx_i dV (m^2); component i at 8i..8i+7
 //   gamma  [4][8]  Flanagan-Belytschko orthogonal hourglass vectors gamma_aI (dimensionless)
-//   Jinv   [8][3][3] per Gauss point g: inverse Jacobian dxi_k/dX_j at 9g + 3k + j (1/m)
+//   dNdX   [8][3][8] per Gauss point g: dN_I/dX_i at 24g + 8i + I (1/m)
 //   wdetJ  [8]     Gauss weight times det J at each point (m^3)
 #pragma once
 
@@ -26,13 +26,9 @@ void hourglass_vectors(const double X[24], const double B[24], double volume, do
 /// a cube of side h); the element's stable step is L_e / c_d (physics.md 1.4).
 double characteristic_length(const double B[24], double volume);
 
-/// Inverse Jacobians (J_ij = dx_i/dxi_j) at the 2x2x2 Gauss points, [8][3][3] row-major, and the
-/// weights det J: dN_I/dX_j = sum_k Jinv_kj dN_I/dxi_k with dN/dxi from reference_gradient_table().
-/// Returns the volume (negative if any det J <= 0).
-double gauss_point_inverse_jacobians(const double X[24], double Jinv[72], double wdetJ[8]);
-
-/// dN_I/dxi_k at the 8 Gauss points, [8][3][8]: the same for every element.
-const double* reference_gradient_table();
+/// Shape-function gradients and weights at the 2x2x2 Gauss points (fully integrated element).
+/// Returns the volume; a non-positive det J at any point returns it as a negative value.
+double gauss_point_gradients(const double X[24], double dNdX[192], double wdetJ[8]);
 
 /// Minimum of det J over the 8 corners divided by det J at the centre (1 for any parallelepiped);
 /// <= 0 means an inverted corner.
