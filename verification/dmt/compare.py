@@ -27,6 +27,7 @@ def main():
     p.add_argument("--work-of-adhesion", type=float, default=0.05, help="J/m^2")
     p.add_argument("--tolerance", type=float, default=0.05)
     p.add_argument("--plot")
+    p.add_argument("--hertz-output", help="output folder of the W = 0 run (verification/hertz) to draw beside")
     a = p.parse_args()
     W = a.work_of_adhesion
     rows = list(csv.DictReader(open(f"{a.output}/history.csv")))
@@ -61,7 +62,12 @@ def main():
                 "k-", label="DMT, W = %.2f J/m$^2$" % W)
         gh = [x for x in grid if x >= 0]
         ax.plot([x * 1e9 for x in gh], [(3 * R * x / (4 * ESTAR)) ** (1 / 3) * 1e9 for x in gh], "k--", label="Hertz (W = 0)")
-        ax.plot([x * 1e9 for x in P], [x * 1e9 for x in aFE], "o", ms=3, label="FE, loading")
+        ax.plot([x * 1e9 for x in P], [x * 1e9 for x in aFE], "o", ms=3, label=f"FE, W = {W:.2f} J/m$^2$")
+        if a.hertz_output:
+            hr = list(csv.DictReader(open(f"{a.hertz_output}/history.csv")))
+            pts = [(f(r, "contact_normal_force"), f(r, "contact_radius_edge")) for r in hr
+                   if 5 * h <= f(r, "contact_radius_edge") <= 0.25 * R and f(r, "contact_normal_force") <= max(P)]
+            ax.plot([x * 1e9 for x, _ in pts], [y * 1e9 for _, y in pts], "s", ms=3, mfc="none", label="FE, W = 0")
         ax.axvline(pull_off * 1e9, color="r", lw=0.8, label=f"FE pull-off {pull_off * 1e9:.2f} nN")
         ax.set_xlabel("applied load P (nN)")
         ax.set_ylabel("contact radius a (nm)")
