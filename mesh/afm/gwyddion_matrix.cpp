@@ -17,15 +17,11 @@ HeightMap read_gwyddion_matrix(const std::string& path) {
   m.source = path;
   m.channel = "matrix";
   double width = -1.0, height = -1.0, zunit = 1.0;
-  std::size_t pos = 0;
-  int line_no = 0;
   std::size_t row_len = 0;
-  while (pos < text.size()) {
-    std::size_t eol = text.find('\n', pos);
-    if (eol == std::string::npos) eol = text.size();
-    const std::string line = trim(text.substr(pos, eol - pos));
-    pos = eol + 1;
-    ++line_no;
+  LineReader lines(text);
+  std::string line;
+  int line_no = 0;
+  while (lines.next(line, line_no)) {
     const std::string where = path + ":" + std::to_string(line_no);
     if (line.empty()) continue;
     if (line[0] == '#') {

@@ -45,6 +45,28 @@ inline std::vector<std::string> split_fields(const std::string& line, bool comma
   return out;
 }
 
+/// The lines of a text file, trimmed, with their 1-based numbers (LF or CRLF endings):
+///   LineReader lines(text); std::string line; int n;
+///   while (lines.next(line, n)) { ... }
+class LineReader {
+ public:
+  explicit LineReader(const std::string& text) : text_(text) {}
+  bool next(std::string& line, int& line_no) {
+    if (pos_ >= text_.size()) return false;
+    std::size_t eol = text_.find('\n', pos_);
+    if (eol == std::string::npos) eol = text_.size();
+    line = trim(text_.substr(pos_, eol - pos_));
+    pos_ = eol + 1;
+    line_no = ++line_no_;
+    return true;
+  }
+
+ private:
+  const std::string& text_;
+  std::size_t pos_ = 0;
+  int line_no_ = 0;
+};
+
 /// Metres per unit for the SI-prefixed length units text exports use ("m", "nm", "um", "µm", "pm", "mm").
 inline std::optional<double> metres_per(const std::string& unit_text) {
   const std::string u = trim(unit_text);

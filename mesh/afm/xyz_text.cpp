@@ -18,14 +18,10 @@ HeightMap read_xyz_text(const std::string& path) {
   struct P { double x, y, z; int line; };
   std::vector<P> pts;
   double unit = 1.0;
-  std::size_t pos = 0;
+  LineReader lines(text);
+  std::string line;
   int line_no = 0;
-  while (pos < text.size()) {
-    std::size_t eol = text.find('\n', pos);
-    if (eol == std::string::npos) eol = text.size();
-    const std::string line = trim(text.substr(pos, eol - pos));
-    pos = eol + 1;
-    ++line_no;
+  while (lines.next(line, line_no)) {
     const std::string where = path + ":" + std::to_string(line_no);
     if (line.empty()) continue;
     if (line[0] == '#') {
