@@ -275,13 +275,10 @@ double ContactManager::edge_radius(const Pass& p, const double* x) const {
   const ContactSurface& slave = surfaces_[p.slave];
   double sum = 0.0;
   int count = 0;
-  auto local = [&](int global) {
-    return static_cast<int>(std::lower_bound(slave.nodes.begin(), slave.nodes.end(), global) - slave.nodes.begin());
-  };
   for (int f = 0; f < slave.face_count(); ++f)
     for (int e = 0; e < 4; ++e) {
       const int a = slave.face_nodes[4 * f + e], b = slave.face_nodes[4 * f + (e + 1) % 4];
-      const double ga = p.gap[local(a)], gb = p.gap[local(b)];
+      const double ga = p.gap[slave.face_local[4 * f + e]], gb = p.gap[slave.face_local[4 * f + (e + 1) % 4]];
       if (!(ga < 0.0 && gb >= 0.0)) continue;  // each crossing edge once: from inside to outside
       const double t = ga / (ga - gb);
       double r[3], along = 0.0;

@@ -20,6 +20,8 @@ ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, con
   auto local = [&](int global) {
     return static_cast<int>(std::lower_bound(s.nodes.begin(), s.nodes.end(), global) - s.nodes.begin());
   };
+  s.face_local.resize(s.face_nodes.size());
+  for (std::size_t k = 0; k < s.face_nodes.size(); ++k) s.face_local[k] = local(s.face_nodes[k]);
   s.node_area.assign(s.nodes.size(), 0.0);
   std::vector<int> count(s.nodes.size() + 1, 0);
   const double* X = mesh.coordinates.data();

@@ -17,6 +17,7 @@ namespace tribex::contact {
 struct ContactSurface {
   std::string name;
   std::vector<int> face_nodes;
+  std::vector<int> face_local;  // [face][4] the same nodes as indices into `nodes`
   std::vector<int> nodes;
   std::vector<double> node_area;
   std::vector<int> node_faces_offset;

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "contact/contact_manager.hpp"
+#include "tools/bench/allocation_counter.hpp"
 #include "mesh/box.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
@@ -51,7 +52,9 @@ int contact_bench(const std::vector<std::string>& argv) {
   using Clock = std::chrono::steady_clock;
   double total = 0.0;
   long contact_nodes = 0;
+  std::uint64_t allocations_before = 0;
   for (long s = 0; s < steps; ++s) {
+    if (s == 1) allocations_before = bench::allocation_count();  // the first call sizes the buffers
     for (int node : slave_nodes) x[3 * node] += 0.02 * h;  // slide
     const auto t0 = Clock::now();
     const auto totals = manager.compute_forces(x.data(), v.data(), f.data());
@@ -62,6 +65,8 @@ int contact_bench(const std::vector<std::string>& argv) {
   std::printf("master faces %d, slave faces %d, slave nodes %zu (in contact at the end: %ld)\n",
               manager.surfaces()[1].face_count(), manager.surfaces()[0].face_count(), slave_nodes.size(), contact_nodes);
   std::printf("broad-phase searches: %ld in %ld steps\n", manager.total_searches(), steps);
+  std::printf("heap_allocations_after_first_step=%llu\n",
+              static_cast<unsigned long long>(bench::allocation_count() - allocations_before));
   std::printf("contact_us_per_step=%.2f\n", 1e6 * per_step);
   std::printf("contact_ns_per_slave_node_step=%.2f\n", 1e9 * per_step / double(slave_nodes.size()));
   return 0;
