@@ -67,10 +67,20 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
       p.junction = it.junction;
       p.primary = k == 0;
       p.x_at_search.resize(3 * (surfaces_[p.slave].nodes.size() + surfaces_[p.master].nodes.size()));
+      if (p.model == InterfaceModel::junction) {
+        const std::size_t n = surfaces_[p.slave].nodes.size();
+        p.junction_slave.resize(n);
+        p.junction_face.resize(n);
+        p.junction_shape.resize(4 * n);
+        p.junction_normal.resize(3 * n);
+        p.junction_vt.resize(3 * n);
+        p.junction_vpred.resize(3 * n);
+      }
       passes_.push_back(std::move(p));
     }
   }
   traction_.assign(3 * static_cast<std::size_t>(node_count), 0.0);
+  master_share_.assign(static_cast<std::size_t>(node_count), 0.0);
   status_.assign(static_cast<std::size_t>(node_count), 0.0);
   for (const auto& s : surfaces_) all_nodes_.insert(all_nodes_.end(), s.nodes.begin(), s.nodes.end());
   std::sort(all_nodes_.begin(), all_nodes_.end());
@@ -139,11 +149,11 @@ static double axis_distance(const double* xs, const double* point, const double*
 
 // 4. interface models on slave surface node k projecting inside master face `face` with gap g:
 // adhesion sigma_s(g + z0) A_I toward the master for g >= 0 (physics.md 6.2), and for the junction
-// model the shear tau A_I on nodes in contact (g <= g_j; physics.md 7.1-7.2). Penalty contact
-// (g < 0) has been applied and counted by the caller; here a node with 0 <= g <= g_j is counted as
-// in contact (area, status, radius) as well.
-void ContactManager::apply_interface(const Pass& p, int k, int face, const double* shape, const double* normal,
-                                     double gap, const double* v, double* force, Accumulator& acc) {
+// model the pair is recorded for the shear of step 5 when in contact (g <= g_j; physics.md 7.1-7.2).
+// Penalty contact (g < 0) has been applied and counted by the caller; here a node with
+// 0 <= g <= g_j is counted as in contact (area, status, radius) as well.
+void ContactManager::apply_interface(Pass& p, int k, int face, const double* shape, const double* normal, double gap,
+                                     double* force, Accumulator& acc) {
   const ContactSurface& slave = surfaces_[p.slave];
   const ContactSurface& master = surfaces_[p.master];
   const int node = slave.nodes[k];
@@ -151,13 +161,6 @@ void ContactManager::apply_interface(const Pass& p, int k, int face, const doubl
   const double area = slave.node_area[k];
   ContactTotals& totals = acc.totals;
   totals.adhesion_energy += p.factor * area * adhesive_energy(gap, p.adhesion);
-  double f[3] = {0.0, 0.0, 0.0};  // force on the slave node, N
-  if (gap >= 0.0) {
-    // Attraction: toward the master face, i.e. against its outward normal.
-    const double fa = p.factor * adhesive_traction(gap, p.adhesion) * area;
-    for (int i = 0; i < 3; ++i) f[i] -= fa * normal[i];
-    totals.adhesive_force += fa;
-  }
   const bool in_contact = gap <= p.junction.gap_tolerance;
   if (in_contact && gap >= 0.0) {  // g < 0 was counted by the penalty branch
     status_[node] = 1.0;
@@ -166,37 +169,105 @@ void ContactManager::apply_interface(const Pass& p, int k, int face, const doubl
     if (has_axis_) totals.radius_max = std::max(totals.radius_max, axis_distance(acc.x + 3 * node, axis_point_, axis_dir_));
   }
   if (p.model == InterfaceModel::junction && in_contact) {
-    // v_t: tangential part of v_slave - sum_a N_a v_a (relative to the master point).
-    double vr[3] = {0.0, 0.0, 0.0};
-    if (v) {
-      for (int i = 0; i < 3; ++i) {
-        vr[i] = v[3 * node + i];
-        for (int a = 0; a < 4; ++a) vr[i] -= shape[a] * v[3 * fn[a] + i];
-      }
-    }
-    const double vn = vr[0] * normal[0] + vr[1] * normal[1] + vr[2] * normal[2];
-    double vt[3], tau[3];
-    for (int i = 0; i < 3; ++i) vt[i] = vr[i] - vn * normal[i];
-    junction_traction(vt, p.junction, tau);
-    const double sign = p.primary ? 1.0 : -1.0;
-    double power = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const double ft = p.factor * tau[i] * area;
-      f[i] += ft;
-      acc.friction[i] += sign * ft;
-      power += ft * vt[i];
-    }
-    totals.friction_power += std::abs(power);
-    totals.junction_capacity += p.factor * p.junction.strength * area;
+    const int j = p.junction_count++;
+    p.junction_slave[j] = k;
+    p.junction_face[j] = face;
+    for (int a = 0; a < 4; ++a) p.junction_shape[4 * j + a] = shape[a];
+    for (int i = 0; i < 3; ++i) p.junction_normal[3 * j + i] = normal[i];
   }
+  if (gap < 0.0) return;
+  // Attraction: toward the master face, i.e. against its outward normal.
+  const double fa = p.factor * adhesive_traction(gap, p.adhesion) * area;
+  totals.adhesive_force += fa;
   for (int i = 0; i < 3; ++i) {
-    force[3 * node + i] += f[i];
-    for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= shape[a] * f[i];
-    traction_[3 * node + i] += f[i] / area;
+    const double f = -fa * normal[i];
+    force[3 * node + i] += f;
+    for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= shape[a] * f;
+    traction_[3 * node + i] += f / area;
   }
 }
 
-ContactTotals ContactManager::compute_forces(const double* x, const double* v, double* force) {
+// 5. junction shear on the pairs recorded in step 4 (physics.md 7.1, 7.3; models/junction_shear.hpp).
+// Per pair, with the relative velocity v_r = v_slave - sum_a N_a v_a and its tangential part v_t:
+//  - predicted v_t at n+3/2 without the shear: v^{n+1/2} + dt (other + contact normal forces) / m,
+//    node by node, then the same relative tangential projection;
+//  - the pair mass: a shear F on the slave and -N_a F on the master nodes changes v_r by
+//    dt F (1/m_s + sum_a N_a^2 / m_a) when the pair is alone; with every pair loaded at once a master
+//    node a takes sum_b N_a(b) F_b, so the row sum 1/m_pair = 1/m_s + sum_a N_a S_a / m_a with
+//    S_a = sum over pairs of N_a bounds the coupled change (Gershgorin): the simultaneous
+//    backward-Euler updates under-relax rather than overshoot. For one pair S_a = N_a.
+//  - F from junction_update, capped at factor tau* A_I and at the stick force m_pair |v_pred| / dt.
+// Nodes with prescribed velocities are treated as free here (their velocity is overwritten after
+// the update): the pair mass is then too small and the update under-relaxes, which stays stable.
+void ContactManager::apply_junction(Pass& p, const double* v, const double* other_force, double dt, double* force,
+                                    Accumulator& acc) {
+  const ContactSurface& slave = surfaces_[p.slave];
+  const ContactSurface& master = surfaces_[p.master];
+  ContactTotals& totals = acc.totals;
+  const int count = p.junction_count;
+  auto predicted = [&](int node, int i) {
+    const double f = force[3 * node + i] + (other_force ? other_force[3 * node + i] : 0.0);
+    return v[3 * node + i] + dt * f / mass_[node];
+  };
+  for (int j = 0; j < count; ++j) {
+    const int* fn = &master.face_nodes[4 * p.junction_face[j]];
+    for (int a = 0; a < 4; ++a) master_share_[fn[a]] += p.junction_shape[4 * j + a];
+  }
+  // Trial velocities of all pairs first (Jacobi: the forces of one pair do not enter another's trial).
+  for (int j = 0; j < count; ++j) {
+    const int node = slave.nodes[p.junction_slave[j]];
+    const int* fn = &master.face_nodes[4 * p.junction_face[j]];
+    const double* N = &p.junction_shape[4 * j];
+    const double* n = &p.junction_normal[3 * j];
+    double vr[3], vp[3];
+    for (int i = 0; i < 3; ++i) {
+      vr[i] = v[3 * node + i];
+      vp[i] = predicted(node, i);
+      for (int a = 0; a < 4; ++a) {
+        vr[i] -= N[a] * v[3 * fn[a] + i];
+        vp[i] -= N[a] * predicted(fn[a], i);
+      }
+    }
+    const double vrn = vr[0] * n[0] + vr[1] * n[1] + vr[2] * n[2];
+    const double vpn = vp[0] * n[0] + vp[1] * n[1] + vp[2] * n[2];
+    for (int i = 0; i < 3; ++i) {
+      p.junction_vt[3 * j + i] = vr[i] - vrn * n[i];
+      p.junction_vpred[3 * j + i] = vp[i] - vpn * n[i];
+    }
+  }
+  const double sign = p.primary ? 1.0 : -1.0;
+  for (int j = 0; j < count; ++j) {
+    const int k = p.junction_slave[j];
+    const int node = slave.nodes[k];
+    const int* fn = &master.face_nodes[4 * p.junction_face[j]];
+    const double* N = &p.junction_shape[4 * j];
+    double inv_m = 1.0 / mass_[node];
+    for (int a = 0; a < 4; ++a) inv_m += N[a] * master_share_[fn[a]] / mass_[fn[a]];
+    // A symmetric interaction updates the pair in both passes, each with half the capacity and
+    // half the stick force (pair mass times the pass factor).
+    const double m_pair = p.factor / inv_m;
+    const double area = slave.node_area[k];
+    const JunctionUpdate up = junction_update(&p.junction_vt[3 * j], &p.junction_vpred[3 * j],
+                                              p.factor * p.junction.strength * area, m_pair, dt, p.junction);
+    for (int i = 0; i < 3; ++i) {
+      force[3 * node + i] += up.force[i];
+      for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= N[a] * up.force[i];
+      traction_[3 * node + i] += up.force[i] / area;
+      acc.friction[i] += sign * up.force[i];
+    }
+    totals.friction_power += up.power;
+    totals.junction_capacity += p.factor * p.junction.strength * area;
+  }
+  for (int j = 0; j < count; ++j) {
+    const int* fn = &master.face_nodes[4 * p.junction_face[j]];
+    for (int a = 0; a < 4; ++a) master_share_[fn[a]] = 0.0;
+  }
+  p.junction_count = 0;
+}
+
+ContactTotals ContactManager::compute_forces(const double* x, const double* v, double* force, const double* other_force,
+                                             double dt) {
+  if (!(dt > 0.0)) dt = dt_ref_;
   ContactTotals totals;
   Accumulator acc{totals, x};
   for (int node : all_nodes_) {
@@ -220,7 +291,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       p.last_face[k] = best.face >= 0 && best.proj.interior ? best.face : -1;
       if (best.face >= 0 && best.proj.interior) p.gap[k] = best.proj.gap;
       if (p.model != InterfaceModel::frictionless && best.face >= 0 && best.proj.interior && best.proj.gap >= 0.0) {
-        apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, v, force, acc);
+        apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, force, acc);
         continue;
       }
       if (best.face < 0 || !best.proj.interior || best.proj.gap >= 0.0) continue;
@@ -258,8 +329,10 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
         totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
       }
       if (p.model != InterfaceModel::frictionless)
-        apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, v, force, acc);
+        apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, force, acc);
     }
+    if (p.model == InterfaceModel::junction && v) apply_junction(p, v, other_force, dt, force, acc);
+    p.junction_count = 0;
     if (has_axis_ && p.primary) totals.radius_edge = edge_radius(p, x);
   }
   totals.normal_force = totals.compressive_force - totals.adhesive_force;

@@ -17,7 +17,12 @@
 //  4. interface models (contact/models/): `adhesion` adds the attractive Lennard-Jones traction
 //     sigma_s(g + z0) A_I on slave nodes with 0 <= g <= g_c (nodal tributary areas A_I, shape-function
 //     reactions on the master); `junction` adds to it the shear tau A_I on slave nodes in contact
-//     (g <= g_j, penalty contact included), tau opposing the relative tangential velocity.
+//     (g <= g_j, penalty contact included), tau opposing the relative tangential velocity;
+//  5. junction shear, after the normal forces of the pass: backward Euler in the relative tangential
+//     velocity of each pair (models/junction_shear.hpp, physics.md 7.3), with the velocity the pair
+//     would reach without the shear predicted from the other forces, and a pair mass that counts every
+//     slave sharing a master node (row sums of the pairs' coupling, so the simultaneous updates of
+//     all pairs cannot overshoot: Gershgorin).
 #pragma once
 
 #include <string>
@@ -71,7 +76,11 @@ class ContactManager {
 
   /// Adds contact forces at positions x [node][3] to `force` [node][3] (touching only surface
   /// nodes) and fills traction [node][3] (force / tributary area, Pa) and status [node] (1 in contact).
-  ContactTotals compute_forces(const double* x, const double* v, double* force);
+  /// `v` [node][3] the velocities the positions moved with (v^{n+1/2}); `other_force` [node][3] the
+  /// non-contact forces of the coming velocity update and `dt` its step (0: dt_ref), used by the
+  /// junction model to predict the slip the next step would have without the shear (nullptr: none).
+  ContactTotals compute_forces(const double* x, const double* v, double* force, const double* other_force = nullptr,
+                               double dt = 0.0);
 
   /// Contact axis for contact_radius_max: a point and a unit direction.
   void set_axis(const double point[3], const double direction[3]);
@@ -106,13 +115,19 @@ class ContactManager {
     bool primary = true;
     std::vector<double> gap;  // [slave node] signed gap to the closest face over which it projects (NaN: none)
     std::vector<int> last_face;  // [slave node] face of the previous step (-1: none), tried first
+    // Junction pairs of this step (sized once; junction_count of them used): slave index k, face,
+    // shape functions [4], normal [3], then v_t^{n+1/2} [3] and the predicted v_t [3].
+    int junction_count = 0;
+    std::vector<int> junction_slave, junction_face;
+    std::vector<double> junction_shape, junction_normal, junction_vt, junction_vpred;
   };
   double edge_radius(const Pass& p, const double* x) const;
   bool needs_search(const Pass& p, const double* x) const;
   void search(Pass& p, const double* x);
   struct Accumulator;
-  void apply_interface(const Pass& p, int k, int face, const double* shape, const double* normal, double gap,
-                       const double* v, double* force, Accumulator& acc);
+  void apply_interface(Pass& p, int k, int face, const double* shape, const double* normal, double gap,
+                       double* force, Accumulator& acc);
+  void apply_junction(Pass& p, const double* v, const double* other_force, double dt, double* force, Accumulator& acc);
 
   std::vector<ContactSurface> surfaces_;
   std::vector<Pass> passes_;
@@ -120,6 +135,7 @@ class ContactManager {
   double dt_ref_;
   BucketSearch bucket_;
   std::vector<double> traction_, status_;
+  std::vector<double> master_share_;  // [node] sum of N_a over the junction pairs on a master node (zero between uses)
   std::vector<int> all_nodes_;
   bool has_axis_ = false;
   double axis_point_[3] = {0, 0, 0}, axis_dir_[3] = {0, 0, 1};

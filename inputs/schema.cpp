@@ -247,7 +247,7 @@ std::vector<BlockSchema> build_table() {
                      "cut-off separation h_c, measured like h = gap + z0, > z0 (default 5 z0)"),
                 real("junction strength", dim::pressure, positive(), false, "", "tau* (model junction)"),
                 real("junction reference speed", dim::velocity, positive(), false, "",
-                     "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s, raised to the stability bound)"),
+                     "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s; no stability floor: backward Euler)"),
                 real("junction gap tolerance", dim::length, non_negative(), false, "",
                      "a node is in contact when gap <= this (default 0.05 z0)")},
                {},

@@ -13,8 +13,7 @@ namespace tribex::solver {
 namespace {
 
 // Adhesion / junction parameters (physics.md 6, 7) with their defaults, the capture distance of the
-// search raised to the adhesion cut-off gap, and v_ref raised to the explicit stability bound of the
-// tanh damper (physics.md 7.3); each choice goes to the run log.
+// search raised to the adhesion cut-off gap; each choice goes to the run log.
 void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
                      const contact::ContactSurface& slave, const contact::ContactSurface& master,
                      const std::vector<double>& mass, double dt, contact::InteractionSettings& s,
@@ -46,28 +45,23 @@ void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpe
   }
   if (!junction) return;
   s.junction.strength = it.junction_strength;
-  // Stability of the damper c = tau* A_I / v_ref (physics.md 7.3): c dt / m_eff < 2. m_eff is not
-  // known before pairing: estimate it with the median master node mass, m_eff = m_I m_M / (m_I + m_M),
-  // and keep a factor 2 of margin because several slave nodes can load one master node.
+  s.junction.reference_speed = it.junction_reference_speed.value_or(0.1);
+  // The shear is taken backward-Euler per pair (contact/models/junction_shear.hpp, physics.md 7.3),
+  // so v_ref has no stability floor. For the record, the floor an explicit tanh damper
+  // c = tau* A_I / v_ref would need, c dt / m_eff < 2, estimated with the median master node mass.
   std::vector<double> master_mass;
   for (int node : master.nodes) master_mass.push_back(mass[node]);
   std::nth_element(master_mass.begin(), master_mass.begin() + master_mass.size() / 2, master_mass.end());
   const double m_master = master_mass[master_mass.size() / 2];
-  double v_min = 0.0;
+  double v_explicit = 0.0;
   for (int k = 0; k < slave.node_count(); ++k) {
     const double ms = mass[slave.nodes[k]];
     const double m_eff = ms * m_master / (ms + m_master);
-    v_min = std::max(v_min, 2.0 * s.junction.strength * slave.node_area[k] * dt / (2.0 * m_eff));
+    v_explicit = std::max(v_explicit, s.junction.strength * slave.node_area[k] * dt / (2.0 * m_eff));
   }
-  const double v_ref = it.junction_reference_speed.value_or(0.1);
-  s.junction.reference_speed = v_ref;
-  if (v_ref < v_min) {
-    s.junction.reference_speed = v_min;
-    log(format("junction reference speed raised from %.4g m/s to twice the stability bound tau* A_I dt / (2 m_eff) = %.4g m/s",
-               v_ref, v_min));
-  }
-  log(format("junction strength tau* = %.4g Pa, reference speed %.4g m/s (tanh law)", s.junction.strength,
-             s.junction.reference_speed));
+  log(format("junction strength tau* = %.4g Pa, reference speed %.4g m/s (tanh law, backward Euler per pair: no "
+             "stability floor; an explicit update would need v_ref > %.4g m/s)",
+             s.junction.strength, s.junction.reference_speed, v_explicit));
 }
 
 }  // namespace

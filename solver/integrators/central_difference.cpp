@@ -127,7 +127,9 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
         x_[3 * node + i] = X[3 * node + i] + u_[3 * node + i];
         f_contact_[3 * node + i] = 0.0;
       }
-    contact_totals_ = model_.contact->compute_forces(x_.data(), v_.data(), f_contact_.data());
+    // f_ (internal + applied, no contact yet) and the last step size let the junction shear predict
+    // the slip of the coming velocity update (contact/contact_manager.hpp, step 5).
+    contact_totals_ = model_.contact->compute_forces(x_.data(), v_.data(), f_contact_.data(), f_.data(), dt_half_);
     for (int node : model_.contact->surface_nodes())
       for (int i = 0; i < 3; ++i) f_[3 * node + i] += f_contact_[3 * node + i];
     contact_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
