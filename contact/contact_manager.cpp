@@ -75,6 +75,7 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
         p.junction_normal.resize(3 * n);
         p.junction_vt.resize(3 * n);
         p.junction_vpred.resize(3 * n);
+        p.contact_share.resize(n);
       }
       passes_.push_back(std::move(p));
     }
@@ -164,11 +165,14 @@ void ContactManager::apply_interface(Pass& p, int k, int face, const double* sha
   const bool in_contact = gap <= p.junction.gap_tolerance;
   if (in_contact && gap >= 0.0) {  // g < 0 was counted by the penalty branch
     status_[node] = 1.0;
-    totals.area += p.factor * area;
+    if (p.model != InterfaceModel::junction) totals.area += p.factor * area;  // junction: from the shares (step 5)
     if (p.primary) ++totals.nodes;
     if (has_axis_) totals.radius_max = std::max(totals.radius_max, axis_distance(acc.x + 3 * node, axis_point_, axis_dir_));
   }
-  if (p.model == InterfaceModel::junction && in_contact) {
+  // Junction: every node near the master is a candidate pair; its share of the contact area
+  // (step 5) decides whether it carries shear (a node just outside g_j can own part of a face
+  // that is in contact).
+  if (p.model == InterfaceModel::junction) {
     const int j = p.junction_count++;
     p.junction_slave[j] = k;
     p.junction_face[j] = face;
@@ -184,6 +188,45 @@ void ContactManager::apply_interface(Pass& p, int k, int face, const double* sha
     force[3 * node + i] += f;
     for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= shape[a] * f;
     traction_[3 * node + i] += f / area;
+  }
+}
+
+// In-contact part of each slave node's tributary area, int over {g <= g_j} of N_I dA: the nodal
+// gaps interpolated bilinearly over each slave face (nodes without a projection count as far) and
+// the contact indicator sampled at 8 x 8 midpoints; faces with all four nodes in contact give
+// A_f / 4 per node (exact for parallelograms) without sampling. Reference face areas, like A_I.
+void ContactManager::contact_shares(Pass& p) {
+  const ContactSurface& slave = surfaces_[p.slave];
+  std::fill(p.contact_share.begin(), p.contact_share.end(), 0.0);
+  const double gj = p.junction.gap_tolerance;
+  constexpr int n = 8;
+  for (int f = 0; f < slave.face_count(); ++f) {
+    const int* loc = &slave.face_local[4 * f];
+    double g[4];
+    int inside = 0;
+    for (int a = 0; a < 4; ++a) {
+      const double ga = p.gap[loc[a]];
+      g[a] = std::isnan(ga) ? INFINITY : ga;
+      inside += g[a] <= gj;
+    }
+    const double Af = slave.face_area[f];
+    if (inside == 0) continue;
+    if (inside == 4) {
+      for (int a = 0; a < 4; ++a) p.contact_share[loc[a]] += 0.25 * Af;
+      continue;
+    }
+    const double far = p.margin;  // a finite stand-in for "no projection" in the interpolation
+    for (double& ga : g) ga = std::min(ga, far);
+    const double dA = Af / (n * n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double xi = -1.0 + (2.0 * i + 1.0) / n, eta = -1.0 + (2.0 * j + 1.0) / n;
+        const double N[4] = {0.25 * (1 - xi) * (1 - eta), 0.25 * (1 + xi) * (1 - eta), 0.25 * (1 + xi) * (1 + eta),
+                             0.25 * (1 - xi) * (1 + eta)};
+        const double gs = N[0] * g[0] + N[1] * g[1] + N[2] * g[2] + N[3] * g[3];
+        if (gs > gj) continue;
+        for (int a = 0; a < 4; ++a) p.contact_share[loc[a]] += N[a] * dA;
+      }
   }
 }
 
@@ -204,7 +247,19 @@ void ContactManager::apply_junction(Pass& p, const double* v, const double* othe
   const ContactSurface& slave = surfaces_[p.slave];
   const ContactSurface& master = surfaces_[p.master];
   ContactTotals& totals = acc.totals;
-  const int count = p.junction_count;
+  contact_shares(p);
+  // Keep the pairs that own contact area.
+  int count = 0;
+  for (int j = 0; j < p.junction_count; ++j) {
+    const double share = p.contact_share[p.junction_slave[j]];
+    totals.area += p.factor * share;
+    if (!(share > 0.0)) continue;
+    p.junction_slave[count] = p.junction_slave[j];
+    p.junction_face[count] = p.junction_face[j];
+    for (int a = 0; a < 4; ++a) p.junction_shape[4 * count + a] = p.junction_shape[4 * j + a];
+    for (int i = 0; i < 3; ++i) p.junction_normal[3 * count + i] = p.junction_normal[3 * j + i];
+    ++count;
+  }
   auto predicted = [&](int node, int i) {
     const double f = force[3 * node + i] + (other_force ? other_force[3 * node + i] : 0.0);
     return v[3 * node + i] + dt * f / mass_[node];
@@ -246,13 +301,13 @@ void ContactManager::apply_junction(Pass& p, const double* v, const double* othe
     // A symmetric interaction updates the pair in both passes, each with half the capacity and
     // half the stick force (pair mass times the pass factor).
     const double m_pair = p.factor / inv_m;
-    const double area = slave.node_area[k];
+    const double area = p.contact_share[k];
     const JunctionUpdate up = junction_update(&p.junction_vt[3 * j], &p.junction_vpred[3 * j],
                                               p.factor * p.junction.strength * area, m_pair, dt, p.junction);
     for (int i = 0; i < 3; ++i) {
       force[3 * node + i] += up.force[i];
       for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= N[a] * up.force[i];
-      traction_[3 * node + i] += up.force[i] / area;
+      traction_[3 * node + i] += up.force[i] / slave.node_area[k];
       acc.friction[i] += sign * up.force[i];
     }
     totals.friction_power += up.power;
@@ -315,7 +370,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       status_[node] = 1.0;
       totals.normal_force += fn_mag;
       totals.compressive_force += fn_mag;
-      totals.area += p.factor * area;
+      if (p.model != InterfaceModel::junction) totals.area += p.factor * area;  // junction: from the shares
       totals.max_penetration = std::max(totals.max_penetration, -best.proj.gap);
       if (p.primary) ++totals.nodes;
       if (has_axis_) {

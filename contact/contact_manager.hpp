@@ -18,7 +18,10 @@
 //     sigma_s(g + z0) A_I on slave nodes with 0 <= g <= g_c (nodal tributary areas A_I, shape-function
 //     reactions on the master); `junction` adds to it the shear tau A_I on slave nodes in contact
 //     (g <= g_j, penalty contact included), tau opposing the relative tangential velocity;
-//  5. junction shear, after the normal forces of the pass: backward Euler in the relative tangential
+//  5. junction shear, after the normal forces of the pass, on the in-contact part of each slave
+//     node's tributary area (the gap interpolated bilinearly over each slave face and sampled 8 x 8:
+//     int over {g <= g_j} of N_I dA, so the area does not jump by a ring of nodes as rings enter
+//     contact); it is also the reported contact area of a junction interaction. Backward Euler in the relative tangential
 //     velocity of each pair (models/junction_shear.hpp, physics.md 7.3), with the velocity the pair
 //     would reach without the shear predicted from the other forces, and a pair mass that counts every
 //     slave sharing a master node (row sums of the pairs' coupling, so the simultaneous updates of
@@ -120,7 +123,9 @@ class ContactManager {
     int junction_count = 0;
     std::vector<int> junction_slave, junction_face;
     std::vector<double> junction_shape, junction_normal, junction_vt, junction_vpred;
+    std::vector<double> contact_share;  // [slave node] in-contact part of its tributary area (junction), m^2
   };
+  void contact_shares(Pass& p);
   double edge_radius(const Pass& p, const double* x) const;
   bool needs_search(const Pass& p, const double* x) const;
   void search(Pass& p, const double* x);

@@ -23,6 +23,7 @@ ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, con
   s.face_local.resize(s.face_nodes.size());
   for (std::size_t k = 0; k < s.face_nodes.size(); ++k) s.face_local[k] = local(s.face_nodes[k]);
   s.node_area.assign(s.nodes.size(), 0.0);
+  s.face_area.assign(static_cast<std::size_t>(s.face_count()), 0.0);
   std::vector<int> count(s.nodes.size() + 1, 0);
   const double* X = mesh.coordinates.data();
   double edge_sum = 0.0;
@@ -42,6 +43,7 @@ ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, con
       const double c[3] = {xs[1] * xe[2] - xs[2] * xe[1], xs[2] * xe[0] - xs[0] * xe[2], xs[0] * xe[1] - xs[1] * xe[0]};
       const double dA = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
       for (int a = 0; a < 4; ++a) s.node_area[local(n[a])] += 0.25 * (1 + sa[a] * xi) * (1 + ta[a] * eta) * dA;
+      s.face_area[static_cast<std::size_t>(f)] += dA;
     }
     for (int a = 0; a < 4; ++a) {
       ++count[local(n[a]) + 1];

@@ -4,7 +4,7 @@
 // Layouts: face_nodes [face][4] global node indices, counter-clockwise seen from outside the body
 // (outward normal); nodes [k] the surface's unique global nodes, sorted; node_area [k] the row sum
 // of int N_I dA over the surface (A_f / 4 per node for a parallelogram face), m^2;
-// node_faces_offset/node_faces: faces touching surface node k (CSR).
+// face_area [face] its reference area; node_faces_offset/node_faces: faces touching surface node k (CSR).
 #pragma once
 
 #include <string>
@@ -20,6 +20,7 @@ struct ContactSurface {
   std::vector<int> face_local;  // [face][4] the same nodes as indices into `nodes`
   std::vector<int> nodes;
   std::vector<double> node_area;
+  std::vector<double> face_area;  // [face] reference area, m^2
   std::vector<int> node_faces_offset;
   std::vector<int> node_faces;
   double mean_edge = 0.0;  // mean face edge length, m

@@ -225,5 +225,49 @@ TEST(JunctionManagerCoupling, SharedMasterNodesStayStable) {
   EXPECT_LT(worst, 0.1);
 }
 
+// The junction's contact area is the in-contact part of the slave faces, not a count of whole
+// nodal areas: a slave slab tilted about y (gap g = slope (x - x_c)) on a flat is in contact for
+// x <= x_c, so the area is (x_c + 5 nm) x 10 nm for any x_c, and the shear on it (sliding in y,
+// heavy nodes) is tau* times that area. Whole nodal areas would move in steps of 0.5 nm x 10 nm.
+TEST(JunctionManagerArea, ContactAreaFollowsTheGapBetweenNodes) {
+  const double nm = 1e-9, z0 = 0.2e-9, slope = 0.02, tau = 100e6, V = 10.0;
+  for (double xc : {-2.1 * nm, -0.05 * nm, 0.2 * nm, 1.37 * nm, 3.5 * nm}) {
+    mesh::BoxSpec lower;
+    lower.name = "lower";
+    lower.origin = {-6 * nm, -6 * nm, -2 * nm};
+    lower.size = {12 * nm, 12 * nm, 2 * nm};
+    lower.intervals = {7, 7, 1};
+    mesh::BoxSpec upper;
+    upper.name = "upper";
+    upper.origin = {-5 * nm, -5 * nm, 0.0};
+    upper.size = {10 * nm, 10 * nm, 2 * nm};
+    upper.intervals = {20, 20, 1};
+    mesh::Mesh m = mesh::generate_box(lower);
+    mesh::append(m, mesh::generate_box(upper));
+    for (int node : m.node_sets.at("upper_all")) m.coordinates[3 * node + 2] += slope * (m.coordinates[3 * node] - xc);
+    std::vector<double> node_mass(m.node_count(), 1e-20);
+    InteractionSettings s;
+    s.model = InterfaceModel::junction;
+    s.adhesion = {0.05, z0, 5 * z0};
+    s.junction = {tau, 0.1, 0.0};  // in contact where g <= 0
+    s.search_margin = 2 * nm;
+    s.slave = 0;
+    s.master = 1;
+    std::vector<ContactSurface> surfaces = {make_surface(m, "slave", {"upper_zmin"}), make_surface(m, "master", {"lower_zmax"})};
+    ContactManager manager(std::move(surfaces), {s}, node_mass, 1e-15, m.node_count());
+    std::vector<double> v(m.coordinates.size(), 0.0), force(m.coordinates.size(), 0.0);
+    for (int node : m.node_sets.at("upper_all")) v[3 * node + 1] = V;
+    const ContactTotals t = manager.compute_forces(m.coordinates.data(), v.data(), force.data());
+    // The tilted face's true area is larger by sqrt(1 + slope^2) (the reference areas are used).
+    const double expected = (xc + 5 * nm) * 10 * nm * std::sqrt(1 + slope * slope);
+    std::printf("x_c = %+.2f nm: area %.5g nm^2, expected %.5g nm^2 (%+.3f %%)\n", xc / nm, t.area / (nm * nm),
+                expected / (nm * nm), 100 * (t.area / expected - 1));
+    // 8 x 8 samples per 0.5 nm face: the boundary is resolved to 1/16 of a face (half a sample).
+    EXPECT_NEAR(t.area, expected, 0.5 * (0.5 * nm / 8) * 10 * nm) << xc / nm;
+    EXPECT_NEAR(t.junction_capacity, tau * t.area, 1e-9 * tau * t.area);
+    EXPECT_NEAR(t.tangential_force, tau * t.area, 1e-3 * tau * t.area);  // tanh(V / v_ref) = 1
+  }
+}
+
 }  // namespace
 }  // namespace tribex::contact

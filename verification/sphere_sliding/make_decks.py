@@ -1,0 +1,209 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Writes sphere_sliding_coarse.i (CI) and sphere_sliding_fine.i (label slow) from one template, so
+the two variants differ only in the mesh and the sliding schedule. Run it after editing the template:
+
+    /usr/bin/python3 verification/sphere_sliding/make_decks.py
+
+The tip top follows cycloidal velocity ramps (v = V (1 - cos(pi t / T)) / 2 over T = 40 ps, zero
+acceleration jump at both ends) written as piecewise-linear tables at 5 ps.
+"""
+import math
+import os
+
+PS = 1e-12
+RAMP = 40 * PS
+
+
+def ramped(t, speed, t_start, t_end=None):
+    """Displacement of a move at `speed` from t_start (ramp up over RAMP) to t_end (ramp down over
+    RAMP; None: no stop), zero before t_start."""
+    def up(s):  # displacement after s seconds of the up-ramp
+        return speed / 2 * (s - RAMP / math.pi * math.sin(math.pi * s / RAMP))
+    s = t - t_start
+    if s <= 0:
+        return 0.0
+    if t_end is None or t <= t_end - RAMP:
+        return up(s) if s <= RAMP else speed * RAMP / 2 + speed * (s - RAMP)
+    total = speed * (t_end - t_start - RAMP)
+    return total - up(min(t_end - t, RAMP)) if t < t_end else total
+
+
+def table(func, t_end, step=5 * PS):
+    times = [i * step for i in range(int(t_end / step + 1e-9) + 1)]
+    if t_end - times[-1] > 1e-15:
+        times.append(t_end)
+    return "\n".join(f"      {t / PS:7.1f}  {func(t) * 1e9:.5f}" for t in times)
+
+
+TEMPLATE = """\
+# {name}.i -- written by make_decks.py (edit that, not this file).
+# A silicon sphere (R = 27 nm) indented into a silicon flat, held, then slid tangentially with the
+# junction model (issue 4 acceptance): W = 0.05 J/m^2, z0 = 0.3 nm (as verification/dmt), tau* = 195 MPa.
+#
+# Run:    build/bin/tribex run verification/sphere_sliding/{name}.i -o {name}_output
+# Check:  /usr/bin/python3 verification/sphere_sliding/compare.py {name}_output --window {window}
+#
+# Procedure (one deck, one time line; the two stages are functions of time on the tip top):
+#   0 - {t_indent:.0f} ps   indent: tip top pushed down {depth} nm (cycloidal ramps, {v_indent} m/s)
+#   {t_indent:.0f} - {t_slide:.0f} ps  hold: displacement hold of the tip top (not load control: the tip
+#                     top's z stays prescribed; the normal load is the contact normal force,
+#                     measured, and it drifts by about 1 % while sliding: tau* is 2 % of the
+#                     mean contact pressure)
+#   {t_slide:.0f} - {t_end:.0f} ps  slide in +x at {v_slide} m/s ({distance:.2f} nm), the z hold kept.
+# Expected in steady sliding: friction = tau* pi a^2, a = DMT radius at the contact normal force P,
+#   a^3 = 3 R (P + 2 pi W R) / (4 E*), E* = E / (2 (1 - nu^2)) = 85.0 GPa.
+# In contact: where the gap interpolated over the tip-surface faces is <= 0 (junction gap tolerance
+# = 0: with penalty contact the constraint is active for g < 0; the default g_j = 0.05 z0 would add
+# the annulus where the Hertz gap is below 0.015 nm, about 0.45 nm wide here, +20 % area); the shear
+# acts on each node's share of that area (contact/models/README.md).
+# Quasi-static: mass damping {damping} 1/s (about half critical for the column's axial mode, as in
+# verification/hertz); compare.py checks kinetic / internal energy below 2 % in the steady window. The
+# damping drags the sliding tip (c M V); the driver carries it, the interface shear does not.
+begin sierra {name}
+  begin function push
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+{push}
+{t_end:9.1f}  {depth:.5f}
+    end values
+  end function push
+  begin function slide
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+{slide}
+    end values
+  end function slide
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+
+  # Fully integrated at GPa contact pressures (verification/hertz/README.md: penalty point forces
+  # excite the hourglass modes of one-point elements).
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+
+  begin finite element model asperity
+    begin generated asperity
+      radius = 27 nm
+      tip width = {tip_width} nm
+      tip height = {tip_height} nm
+      substrate width = {substrate_width} nm
+      substrate depth = {substrate_depth} nm
+      element size = {h} nm
+      fine half width = {fine_half_width} nm   # the contact (a ~ 4.5 nm) slides {distance:.1f} nm in +x and stays inside
+      fine depth = {fine_depth} nm
+      grading ratio = {grading}
+    end generated asperity
+    begin parameters for block tip
+      material = silicon
+      section = hex8
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8
+    end parameters for block substrate
+  end finite element model asperity
+
+  begin presto procedure indent_hold_slide
+    begin time control
+      termination time = {t_end:.1f} ps
+    end time control
+    begin presto region main
+      use finite element model asperity
+      mass damping coefficient = {damping} 1/s
+      begin fixed displacement
+        node set = substrate_bottom
+        components = x y z
+      end fixed displacement
+      begin fixed displacement
+        node set = tip_top
+        components = y
+      end fixed displacement
+      begin prescribed displacement
+        node set = tip_top
+        component = z
+        function = push
+        scale factor = -1
+      end prescribed displacement
+      begin prescribed displacement
+        node set = tip_top
+        component = x
+        function = slide
+      end prescribed displacement
+      begin contact definition tip_on_flat
+        contact surface tip contains tip_surface
+        contact surface flat contains substrate_top
+        contact axis = 0 0 0 0 0 1 nm
+        begin interaction sphere_flat
+          surfaces = tip flat
+          model = junction
+          work of adhesion = 0.05 J/m^2
+          equilibrium separation = 0.3 nm
+          adhesion cutoff = 6 nm        # 20 z0: the law keeps 99 % of W (physics.md 6.3)
+          junction strength = 195 MPa
+          junction reference speed = 0.1 m/s   # no stability floor (backward Euler): tanh(V/v_ref) = 1 in sliding
+          junction gap tolerance = 0 nm
+        end interaction sphere_flat
+      end contact definition tip_on_flat
+      begin history output hist
+        time increment = {history} ps
+        reaction force = tip_top substrate_bottom
+        mean displacement = tip_top tip_apex
+      end history output hist
+      begin results output fields
+        time increment = {fields} ps
+        nodal variables = displacement contact_traction contact_status
+      end results output fields
+    end presto region main
+  end presto procedure indent_hold_slide
+end sierra {name}
+"""
+
+VARIANTS = {
+    # CI: small substrate, 0.8 nm elements (as dmt_coarse), 2 nm of sliding at 10 m/s.
+    "sphere_sliding_coarse": dict(h=0.8, tip_width=24, tip_height=13, substrate_width=40, substrate_depth=20,
+                                  fine_half_width=9.6, fine_depth=3.2, grading=1.4, v_indent=8.0, depth=0.72,
+                                  hold=20, v_slide=10.0, distance=2.0, damping="5e11", history=2, fields=50,
+                                  window="0.4 2.0"),
+    # slow: 0.5 nm elements, larger substrate, 2.4 nm of sliding at 10 m/s.
+    "sphere_sliding_fine": dict(h=0.5, tip_width=24, tip_height=13, substrate_width=48, substrate_depth=24,
+                                fine_half_width=9.5, fine_depth=3.0, grading=1.3, v_indent=8.0, depth=0.72,
+                                hold=20, v_slide=10.0, distance=2.4, damping="5e11", history=2, fields=50,
+                                window="0.8 2.4"),
+}
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    for name, v in VARIANTS.items():
+        depth = v["depth"] * 1e-9
+        t_indent = depth / v["v_indent"] + RAMP
+        t_slide = t_indent + v["hold"] * PS
+        # constant speed after the up-ramp; the slide ends at `distance`
+        t_end = t_slide + RAMP + (v["distance"] * 1e-9 - v["v_slide"] * RAMP / 2) / v["v_slide"]
+        t_end = math.ceil(t_end / PS)  * PS
+        push = table(lambda t: ramped(t, v["v_indent"], 0.0, t_indent), t_indent)
+        slide_times = [0.0, t_slide] + [t_slide + i * 5 * PS for i in range(1, int((t_end - t_slide) / (5 * PS)) + 1)]
+        if t_end - slide_times[-1] > 1e-15:
+            slide_times.append(t_end)
+        slide = "\n".join(f"      {t / PS:7.1f}  {ramped(t, v['v_slide'], t_slide) * 1e9:.5f}" for t in slide_times)
+        text = TEMPLATE.format(name=name, push=push, slide=slide, t_indent=t_indent / PS, t_slide=t_slide / PS,
+                               t_end=t_end / PS, **v)
+        with open(os.path.join(here, name + ".i"), "w") as f:
+            f.write(text)
+        print(f"{name}.i: indent to {t_indent / PS:.0f} ps, slide from {t_slide / PS:.0f} ps, end {t_end / PS:.0f} ps")
+
+
+if __name__ == "__main__":
+    main()
