@@ -10,8 +10,8 @@
 #   +---------------------+  block `lower`: 20 x 10 x 5 nm, wider in x so the slid face stays on it
 #            lower_zmin: fixed
 # Expected in steady sliding (40-60 ps, 80-120 ps): friction = tau* A_real tanh(V/v_ref) = tau* x
-# 100 nm^2 = 1 nN (tau* = 10 MPa keeps the stability floor of v_ref near 2 m/s, so V/v_ref ~ 5 and
-# tanh = 0.9998), opposing the sliding: the base reaction lower_zmin x flips sign with V. (The top
+# 100 nm^2 = 1 nN (default v_ref = 0.1 m/s, V/v_ref = 100: the shear is backward Euler per pair, with
+# no stability floor on v_ref; an explicit update would need v_ref > 1.07 m/s here), opposing the sliding: the base reaction lower_zmin x flips sign with V. (The top
 # reaction also carries the mass-damping force of the moving block.) Slow speeds: an abrupt change of
 # the top velocity by dV sends a shear wave of strain dV/c_s, which at 100 m/s rivals the 1 % press.
 begin sierra junction_flats

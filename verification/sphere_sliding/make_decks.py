@@ -180,7 +180,7 @@ VARIANTS = {
     "sphere_sliding_fine": dict(h=0.5, tip_width=24, tip_height=13, substrate_width=48, substrate_depth=24,
                                 fine_half_width=9.5, fine_depth=3.0, grading=1.3, v_indent=8.0, depth=0.72,
                                 hold=20, v_slide=10.0, distance=2.4, damping="5e11", history=2, fields=50,
-                                window="0.8 2.4"),
+                                window="0.4 2.4"),
 }
 
 

@@ -3,7 +3,7 @@
 # junction model (issue 4 acceptance): W = 0.05 J/m^2, z0 = 0.3 nm (as verification/dmt), tau* = 195 MPa.
 #
 # Run:    build/bin/tribex run verification/sphere_sliding/sphere_sliding_fine.i -o sphere_sliding_fine_output
-# Check:  /usr/bin/python3 verification/sphere_sliding/compare.py sphere_sliding_fine_output --window 0.8 2.4
+# Check:  /usr/bin/python3 verification/sphere_sliding/compare.py sphere_sliding_fine_output --window 0.4 2.4
 #
 # Procedure (one deck, one time line; the two stages are functions of time on the tip top):
 #   0 - 130 ps   indent: tip top pushed down 0.72 nm (cycloidal ramps, 8.0 m/s)
