@@ -182,6 +182,17 @@ struct PressureSpec {
   SourceLocation where;
 };
 
+/// `begin prescribed force`: a total force F_c(t) = scale_factor * function(t) along one component
+/// on a node set, shared equally by its nodes (load control, e.g. holding the normal load on a
+/// tip top while another component is driven). The node set's dofs of that component must be free.
+struct PrescribedForceSpec {
+  std::string node_set;
+  Component component = Component::x;
+  std::string function;       // checked by the parser
+  double scale_factor = 1.0;  // N per unit of the function value
+  SourceLocation where;
+};
+
 /// `begin silent boundary`: Lysmer-Kuhlemeyer dashpots on a side set (physics.md section 4).
 struct SilentBoundarySpec {
   std::string side_set;
@@ -260,6 +271,7 @@ struct RegionSpec {
   std::vector<PrescribedMotionSpec> prescribed_motions;
   std::vector<InitialVelocitySpec> initial_velocities;
   std::vector<PressureSpec> pressures;
+  std::vector<PrescribedForceSpec> prescribed_forces;
   std::vector<SilentBoundarySpec> silent_boundaries;
   double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
   std::optional<double> energy_error_limit;  // stop with exit 3 when the relative error exceeds it

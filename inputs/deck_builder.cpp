@@ -374,6 +374,15 @@ class Builder {
         p.where = c.where;
         check_function_use(c, dim::pressure, "'begin pressure'", deck);
         r.pressures.push_back(p);
+      } else if (t == "prescribed force") {
+        PrescribedForceSpec p;
+        p.node_set = word(c, "node set");
+        p.component = component(word(c, "component"));
+        p.function = word(c, "function");
+        p.scale_factor = real(c, "scale factor", 1.0);
+        p.where = c.where;
+        check_function_use(c, dim::force, "'begin prescribed force'", deck);
+        r.prescribed_forces.push_back(p);
       } else if (t == "silent boundary") {
         SilentBoundarySpec b;
         b.side_set = word(c, "side set");

@@ -211,6 +211,7 @@ std::vector<BlockSchema> build_table() {
                 {"prescribed velocity"},
                 {"initial velocity"},
                 {"pressure"},
+                {"prescribed force"},
                 {"silent boundary"},
                 {"contact definition", 0, 1},
                 {"results output", 0, 1},
@@ -282,6 +283,14 @@ std::vector<BlockSchema> build_table() {
                 quantity("scale factor", "1", "Pa per unit of the function")},
                {},
                false, "p(t) on a side set, positive pushing into the body"});
+
+  t.push_back({"prescribed force", NameRule::none, {}, {}, false,
+               {text("node set", ValueKind::string, true, "a node set of the mesh"),
+                choice("component", ValueKind::enumeration, components, true, "", "loaded component"),
+                text("function", ValueKind::string, true, "a function name (ordinate: force)"),
+                quantity("scale factor", "1", "N per unit of the function")},
+               {},
+               false, "total force F(t) on a node set, equal shares per node (load control)"});
 
   t.push_back({"silent boundary", NameRule::none, {}, {}, false,
                {text("side set", ValueKind::string, true, "a side set of the mesh"),

@@ -233,6 +233,23 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     model.pressures.push_back(std::move(load));
   }
 
+  // Prescribed forces: on free dofs only (a constrained dof's force would go into its reaction).
+  for (const auto& p : region.prescribed_forces) {
+    NodalForceLoad load;
+    const auto nodes = node_set(m, p.node_set, p.where);
+    for (int n : nodes) {
+      const int dof = 3 * n + static_cast<int>(p.component);
+      if (auto it = owner.find(dof); it != owner.end())
+        throw SetupError(p.where.str() + ": error: 'begin prescribed force' loads node " + std::to_string(n + 1) +
+                         " component " + "xyz"[dof % 3] + ", which is constrained at " + it->second +
+                         "; load a free component or remove the constraint");
+      load.dof.push_back(dof);
+    }
+    load.function = function_index(model, p.function);
+    load.scale = nodes.empty() ? 0.0 : p.scale_factor / static_cast<double>(nodes.size());
+    model.nodal_forces.push_back(std::move(load));
+  }
+
   // Silent boundaries: accumulate area vectors and coefficients per node over all faces.
   std::map<int, std::array<double, 5>> silent;  // node -> area vector (3), c_n sum, c_t sum
   for (const auto& sb : region.silent_boundaries) {

@@ -34,6 +34,14 @@ struct PressureLoad {
   double scale = 1.0;           // Pa per function unit
 };
 
+/// Prescribed total force on a node set (`begin prescribed force`): each listed dof gets
+/// scale * function(t), the total divided by the node count.
+struct NodalForceLoad {
+  std::vector<int> dof;     // 3 * node + component
+  int function = -1;
+  double scale = 1.0;       // N per function unit, per node
+};
+
 /// Lysmer-Kuhlemeyer dashpots lumped to nodes (physics.md 4.2): per node an area-weighted unit
 /// normal and the coefficients c_n = a rho c_p A_I, c_t = b rho c_s A_I (N s/m).
 struct SilentBoundaryNodes {
@@ -52,6 +60,7 @@ struct Model {
   std::vector<std::string> function_names;
   Constraints constraints;
   std::vector<PressureLoad> pressures;
+  std::vector<NodalForceLoad> nodal_forces;
   SilentBoundaryNodes silent;
   double mass_damping = 0.0;           // 1/s
   double total_mass = 0.0;

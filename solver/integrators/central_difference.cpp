@@ -83,9 +83,13 @@ void CentralDifference::init() {
 
 void CentralDifference::compute_forces(double t, bool want_stress) {
   std::fill(f_.begin(), f_.end(), 0.0);
-  // Applied pressures (follower loads on the current configuration).
-  if (!model_.pressures.empty()) {
+  // Applied pressures (follower loads on the current configuration) and prescribed nodal forces.
+  if (!model_.pressures.empty() || !model_.nodal_forces.empty()) {
     std::fill(f_ext_.begin(), f_ext_.end(), 0.0);
+    for (const auto& load : model_.nodal_forces) {
+      const double f = load.scale * model_.functions[load.function](t);
+      for (int dof : load.dof) f_ext_[dof] += f;
+    }
     const auto& X = model_.mesh.coordinates;
     for (const auto& load : model_.pressures) {
       const double p = load.scale * model_.functions[load.function](t);
@@ -231,7 +235,7 @@ void CentralDifference::account_time_n() {
     power_left += reaction_[dof] * v_prev_[dof];
     power_right += reaction_[dof] * v_[dof];
   }
-  if (!model_.pressures.empty())
+  if (!model_.pressures.empty() || !model_.nodal_forces.empty())
     for (std::size_t d = 0; d < v_.size(); ++d) {
       power_left += f_ext_[d] * v_prev_[d];
       power_right += f_ext_[d] * v_[d];

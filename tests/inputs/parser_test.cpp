@@ -250,6 +250,25 @@ TEST(Parser, ListsNeedTheirCountAndOneTrailingUnit) {
   EXPECT_TRUE(has_error(ds, 36, "unexpected 'm/s'")) << all(ds);
 }
 
+// `begin prescribed force`: the function (plain numbers) times a scale factor with a force unit.
+TEST(Parser, PrescribedForce) {
+  const Deck d = parse_deck_string(deck_with_region("      begin prescribed force\n        node set = b_zmax\n"
+                                                    "        component = z\n        function = f\n"
+                                                    "        scale factor = -500 nN\n      end\n"),
+                                   "pf.i");
+  const auto& r = d.procedure.region;
+  ASSERT_EQ(r.prescribed_forces.size(), 1u);
+  EXPECT_EQ(r.prescribed_forces[0].node_set, "b_zmax");
+  EXPECT_EQ(r.prescribed_forces[0].component, Component::z);
+  EXPECT_EQ(r.prescribed_forces[0].function, "f");
+  expect_close(r.prescribed_forces[0].scale_factor, -500e-9);
+  // A length unit on the scale factor is not a force.
+  auto ds = errors_of(deck_with_region("      begin prescribed force\n        node set = b_zmax\n"
+                                       "        component = z\n        function = f\n"
+                                       "        scale factor = 2 nm\n      end\n"));
+  EXPECT_TRUE(has_error(ds, 38, "needs a force (N)")) << all(ds);  // the scale factor line
+}
+
 TEST(Parser, ResolvedTextRoundTrips) {
   for (const char* name : {"full.i", "minimal.i", "gmsh_included.i"}) {
     const Deck first = parse_deck_file(good_dir + name);
