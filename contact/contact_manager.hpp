@@ -62,8 +62,8 @@ struct ContactTotals {
   double adhesive_force = 0.0;     // sum of attractive adhesion forces (positive), N
   double adhesion_energy = 0.0;    // adhesive potential sum_I A_I U(g_I) (<= 0), J
   double junction_capacity = 0.0;  // tau* x contact area (junction model), N
-  double friction_power = 0.0;     // sum_I |F_t,I . v_t,I| dissipated by the junction shear, W
-  double area = 0.0;               // sum of tributary areas of slave nodes in contact, m^2
+  double friction_power = 0.0;     // sum_I -F_t,I . (v_t^{n+1/2} + v_t^+)/2 dissipated by the junction shear, W
+  double area = 0.0;               // contact area: tributary areas of slave nodes in contact (junction: in-contact face parts), m^2
   int nodes = 0;                   // slave nodes in contact (first pass of each interaction)
   double max_penetration = 0.0;    // m
   double radius_max = 0.0;         // farthest contacting node from the axis (if one is set), m

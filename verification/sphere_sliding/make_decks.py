@@ -171,11 +171,11 @@ end sierra {name}
 """
 
 VARIANTS = {
-    # CI: small substrate, 0.8 nm elements (as dmt_coarse), 2 nm of sliding at 10 m/s.
+    # CI: small substrate, 0.8 nm elements (as dmt_coarse), 1.8 nm of sliding at 10 m/s.
     "sphere_sliding_coarse": dict(h=0.8, tip_width=24, tip_height=13, substrate_width=40, substrate_depth=20,
-                                  fine_half_width=9.6, fine_depth=3.2, grading=1.4, v_indent=8.0, depth=0.72,
-                                  hold=20, v_slide=10.0, distance=2.0, damping="5e11", history=2, fields=50,
-                                  window="0.4 2.0"),
+                                  fine_half_width=9.6, fine_depth=3.2, grading=1.4, v_indent=10.0, depth=0.72,
+                                  hold=10, v_slide=10.0, distance=1.8, damping="5e11", history=2, fields=50,
+                                  window="0.2 1.8"),
     # slow: 0.5 nm elements, larger substrate, 2.4 nm of sliding at 10 m/s.
     "sphere_sliding_fine": dict(h=0.5, tip_width=24, tip_height=13, substrate_width=48, substrate_depth=24,
                                 fine_half_width=9.5, fine_depth=3.0, grading=1.3, v_indent=8.0, depth=0.72,
