@@ -38,8 +38,8 @@ struct NeoHookean {
 
   /// force_stress at N points at once (struct of arrays: H[k][g] is component k at point g), for
   /// the fully integrated element: the same formulas, in loops over the points that the compiler
-  /// vectorises, and the N logarithms two at a time (materials/vector_log.hpp). W[g] is NaN where
-  /// J <= 0.
+  /// vectorises, and the N logarithms two at a time (materials/vector_log.hpp). W[g] is NaN or
+  /// +inf where J <= 0 (not finite: the caller reports the inverted element).
   template <int N>
   void force_stress_points(const double (&H)[9][N], double (&P)[9][N], double (&W)[N]) const {
     static_assert(N % 2 == 0, "log_pairs takes the points two at a time");
@@ -61,8 +61,8 @@ struct NeoHookean {
         P[k][g] = mu * F[k] + a * C[k];
         I1 += F[k] * F[k];
       }
-      const double energy = 0.5 * mu * (I1 - 3.0) - mu * lnJ[g] + 0.5 * lambda * lnJ[g] * lnJ[g];
-      W[g] = J[g] > 0.0 ? energy : std::nan("");
+      // J <= 0: ln J is NaN or -inf, and so is W (no branch: the loop vectorises).
+      W[g] = 0.5 * mu * (I1 - 3.0) - mu * lnJ[g] + 0.5 * lambda * lnJ[g] * lnJ[g];
     }
   }
 
