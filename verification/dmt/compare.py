@@ -43,6 +43,9 @@ def main():
     deepest = min(range(len(z)), key=lambda i: z[i])
     used = [r for r in rows[: deepest + 1]
             if 5 * h <= f(r, "contact_radius_edge") <= 0.25 * R]
+    if len(used) < 5:
+        print(f"FAIL: only {len(used)} usable loading rows (need the contact radius between 5 element sizes and R/4)")
+        return 1
     P = [f(r, "contact_normal_force") for r in used]
     aFE = [f(r, "contact_radius_edge") for r in used]
     aD = [(3 * R * (x + 2 * math.pi * W * R) / (4 * ESTAR)) ** (1 / 3) for x in P]
