@@ -83,6 +83,11 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
   traction_.assign(3 * static_cast<std::size_t>(node_count), 0.0);
   master_share_.assign(static_cast<std::size_t>(node_count), 0.0);
   status_.assign(static_cast<std::size_t>(node_count), 0.0);
+  std::size_t primary_slave_nodes = 0;
+  for (const auto& p : passes_)
+    if (p.primary) primary_slave_nodes += surfaces_[p.slave].nodes.size();
+  fit_r2_.reserve(primary_slave_nodes);
+  fit_p2_.reserve(primary_slave_nodes);
   for (const auto& s : surfaces_) all_nodes_.insert(all_nodes_.end(), s.nodes.begin(), s.nodes.end());
   std::sort(all_nodes_.begin(), all_nodes_.end());
   all_nodes_.erase(std::unique(all_nodes_.begin(), all_nodes_.end()), all_nodes_.end());
@@ -325,6 +330,8 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
   if (!(dt > 0.0)) dt = dt_ref_;
   ContactTotals totals;
   Accumulator acc{totals, x};
+  fit_r2_.clear();
+  fit_p2_.clear();
   for (int node : all_nodes_) {
     status_[node] = 0.0;
     traction_[3 * node] = traction_[3 * node + 1] = traction_[3 * node + 2] = 0.0;
@@ -382,6 +389,11 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
         double r2 = 0.0;
         for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
         totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
+        if (p.primary) {
+          const double pressure = fn_mag / (p.factor * area);
+          fit_r2_.push_back(r2);
+          fit_p2_.push_back(pressure * pressure);
+        }
       }
       if (p.model != InterfaceModel::frictionless)
         apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, force, acc);
@@ -390,6 +402,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
     p.junction_count = 0;
     if (has_axis_ && p.primary) totals.radius_edge = edge_radius(p, x);
   }
+  if (has_axis_) totals.radius_pressure_fit = pressure_fit_radius();
   totals.normal_force = totals.compressive_force - totals.adhesive_force;
   totals.tangential_force =
       std::sqrt(acc.friction[0] * acc.friction[0] + acc.friction[1] * acc.friction[1] + acc.friction[2] * acc.friction[2]);
@@ -420,6 +433,36 @@ double ContactManager::edge_radius(const Pass& p, const double* x) const {
       ++count;
     }
   return count ? sum / count : 0.0;
+}
+
+// Contact radius from the nodal penalty pressures p_I = f_I / A_I of the contacting slave nodes: the
+// least-squares line p^2 = alpha - beta r^2 through the points (r_I^2, p_I^2), and a^2 = alpha / beta,
+// the zero of the fitted p^2. Exact for the elliptic pressure p = p0 sqrt(1 - r^2/a^2) of Hertz (and
+// the compressive part of DMT) contact, whatever the node positions relative to the edge; every
+// contacting node contributes, so the radius does not step as a ring of nodes enters contact. It
+// presumes that shape: for another pressure profile it is a shape-fitted, not a measured, radius.
+// The nodal forces (not the penetrations, whose penalty stiffness varies with the projection point)
+// carry the pressure. 0 with fewer than 3 nodes, all nodes at one radius, or a p^2 that does not fall with r.
+double ContactManager::pressure_fit_radius() const {
+  const std::size_t n = fit_r2_.size();
+  if (n < 3) return 0.0;
+  double mean_r2 = 0.0, mean_p2 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    mean_r2 += fit_r2_[i];
+    mean_p2 += fit_p2_[i];
+  }
+  mean_r2 /= double(n);
+  mean_p2 /= double(n);
+  double srr = 0.0, srp = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    srr += (fit_r2_[i] - mean_r2) * (fit_r2_[i] - mean_r2);
+    srp += (fit_r2_[i] - mean_r2) * (fit_p2_[i] - mean_p2);
+  }
+  // All nodes at one radius (to round-off): nothing to fit.
+  if (!(srr > 1e-12 * double(n) * mean_r2 * mean_r2) || !(srp < 0.0)) return 0.0;
+  const double slope = srp / srr;  // -p0^2 / a^2
+  const double a2 = mean_r2 - mean_p2 / slope;
+  return a2 > 0.0 ? std::sqrt(a2) : 0.0;
 }
 
 std::vector<ContactManager::Overlap> ContactManager::initial_overlaps(const double* x, int worst_count) {

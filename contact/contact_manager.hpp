@@ -68,6 +68,7 @@ struct ContactTotals {
   double max_penetration = 0.0;    // m
   double radius_max = 0.0;         // farthest contacting node from the axis (if one is set), m
   double radius_edge = 0.0;        // mean axis distance of the gap sign changes on slave-face edges, m
+  double radius_pressure_fit = 0.0;  // a of the elliptic pressure p^2 = p0^2 (1 - r^2/a^2) fitted to the nodal pressures, m
   int searches = 0;                // broad-phase builds this step
 };
 
@@ -127,6 +128,7 @@ class ContactManager {
   };
   void contact_shares(Pass& p);
   double edge_radius(const Pass& p, const double* x) const;
+  double pressure_fit_radius() const;
   bool needs_search(const Pass& p, const double* x) const;
   void search(Pass& p, const double* x);
   struct Accumulator;
@@ -145,6 +147,9 @@ class ContactManager {
   bool has_axis_ = false;
   double axis_point_[3] = {0, 0, 0}, axis_dir_[3] = {0, 0, 1};
   long total_searches_ = 0;
+  // (r^2, p^2) of the primary passes' penalty nodes this step, for radius_pressure_fit; reserved for
+  // every slave node at construction, so the hot loop does not allocate.
+  std::vector<double> fit_r2_, fit_p2_;
 };
 
 }  // namespace tribex::contact

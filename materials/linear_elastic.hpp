@@ -31,6 +31,17 @@ struct LinearElastic {
     return 0.5 * (S[0] * H[0] + S[4] * H[4] + S[8] * H[8]) + S[1] * e01 + S[2] * e02 + S[5] * e12;
   }
 
+  /// force_stress at N points (struct of arrays H[k][g], as NeoHookean::force_stress_points).
+  template <int N>
+  void force_stress_points(const double (&H)[9][N], double (&S)[9][N], double (&W)[N]) const {
+    for (int g = 0; g < N; ++g) {
+      double h[9], s[9];
+      for (int k = 0; k < 9; ++k) h[k] = H[k][g];
+      W[g] = force_stress(h, s);
+      for (int k = 0; k < 9; ++k) S[k][g] = s[k];
+    }
+  }
+
   /// Cauchy stress (Voigt xx yy zz xy yz zx) from H, for output.
   void cauchy_stress(const double H[9], double voigt[6]) const {
     double S[9];

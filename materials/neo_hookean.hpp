@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "materials/small_matrix.hpp"
+#include "materials/vector_log.hpp"
 
 namespace tribex::materials {
 
@@ -33,6 +34,36 @@ struct NeoHookean {
       I1 += F[k] * F[k];
     }
     return 0.5 * mu * (I1 - 3.0) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
+  }
+
+  /// force_stress at N points at once (struct of arrays: H[k][g] is component k at point g), for
+  /// the fully integrated element: the same formulas, in loops over the points that the compiler
+  /// vectorises, and the N logarithms two at a time (materials/vector_log.hpp). W[g] is NaN or
+  /// +inf where J <= 0 (not finite: the caller reports the inverted element).
+  template <int N>
+  void force_stress_points(const double (&H)[9][N], double (&P)[9][N], double (&W)[N]) const {
+    static_assert(N % 2 == 0, "log_pairs takes the points two at a time");
+    double J[N], lnJ[N];
+    for (int g = 0; g < N; ++g) {
+      const double F0 = 1.0 + H[0][g], F4 = 1.0 + H[4][g], F8 = 1.0 + H[8][g];
+      J[g] = F0 * (F4 * F8 - H[5][g] * H[7][g]) + H[1][g] * (H[5][g] * H[6][g] - H[3][g] * F8) +
+             H[2][g] * (H[3][g] * H[7][g] - F4 * H[6][g]);
+    }
+    log_pairs(J, lnJ, N);
+    for (int g = 0; g < N; ++g) {
+      const double F[9] = {1.0 + H[0][g], H[1][g], H[2][g], H[3][g], 1.0 + H[4][g], H[5][g], H[6][g], H[7][g],
+                           1.0 + H[8][g]};
+      double C[9];
+      cofactor3(F, C);
+      const double a = (lambda * lnJ[g] - mu) / J[g];  // coefficient of F^{-T} = cof/J
+      double I1 = 0.0;
+      for (int k = 0; k < 9; ++k) {
+        P[k][g] = mu * F[k] + a * C[k];
+        I1 += F[k] * F[k];
+      }
+      // J <= 0: ln J is NaN or -inf, and so is W (no branch: the loop vectorises).
+      W[g] = 0.5 * mu * (I1 - 3.0) - mu * lnJ[g] + 0.5 * lambda * lnJ[g] * lnJ[g];
+    }
   }
 
   /// Cauchy stress (Voigt xx yy zz xy yz zx) from H, for output.

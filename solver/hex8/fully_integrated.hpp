@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Fully integrated hex8: 2x2x2 Gauss quadrature in total-Lagrangian form (physics.md 2.3), no
 // hourglass control needed. At each point g: H = u_iI dNdX_gjI, S = material.force_stress(H),
-// f_iI -= wdetJ_g S_ij dNdX_gjI. Bulk viscosity uses the element-mean operator B0 (as in the
+// f_iI -= wdetJ_g S_ij dNdX_gjI (the material called once for the 8 points: force_stress_points). Bulk viscosity uses the element-mean operator B0 (as in the
 // mean-quadrature element), which is adequate for the damping role it has here. Locks
 // volumetrically as nu -> 0.5 (use mean quadrature there).
 #pragma once
@@ -27,41 +27,47 @@ ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk
         ue[8 * i + I] = u[3 * nodes[I] + i];
         ve[8 * i + I] = v[3 * nodes[I] + i];
       }
-    double fe[24] = {};
-    double energy = 0.0;
-    double stress_mean[6] = {};
-    bool inverted = false;
+    // Three passes over the 8 points, so that the material is evaluated for all of them at once
+    // (force_stress_points: vectorised over the points, the 8 logs of the neo-Hookean model two per
+    // call; tools/bench/README.md): displacement gradients, stresses, then forces.
+    double H[9][8];  // [component][point]
     for (int g = 0; g < 8; ++g) {
       const double* D = &blk.dNdX[192 * e + 24 * g];
-      const double w = blk.wdetJ[8 * e + g];
-      double H[9];
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
           double s = 0.0;
           for (int I = 0; I < 8; ++I) s += ue[8 * i + I] * D[8 * j + I];
-          H[3 * i + j] = s;
+          H[3 * i + j][g] = s;
         }
-      double S[9];
-      const double W = mat.force_stress(H, S);
-      if (!std::isfinite(W)) {
-        inverted = true;
-        break;
-      }
-      energy += w * W;
-      for (double& x : S) x *= w;  // fold the weight into the 9 stresses, not the 24 forces
-      for (int i = 0; i < 3; ++i)
-        for (int I = 0; I < 8; ++I)
-          fe[8 * i + I] += S[3 * i] * D[I] + S[3 * i + 1] * D[8 + I] + S[3 * i + 2] * D[16 + I];
-      if (want_stress) {
-        double sv[6];
-        mat.cauchy_stress(H, sv);
-        for (int k = 0; k < 6; ++k) stress_mean[k] += w * sv[k];
-      }
     }
+    double S[9][8], W[8];
+    mat.force_stress_points(H, S, W);
+    bool inverted = false;
+    for (int g = 0; g < 8; ++g) inverted = inverted || !std::isfinite(W[g]);
     if (inverted) {
       if (totals.first_inverted < 0) totals.first_inverted = blk.first_element + e;
       continue;
     }
+    const double* w = &blk.wdetJ[8 * e];
+    double fe[24] = {};
+    double energy = 0.0;
+    for (int g = 0; g < 8; ++g) {
+      const double* D = &blk.dNdX[192 * e + 24 * g];
+      energy += w[g] * W[g];
+      double Sw[9];
+      for (int k = 0; k < 9; ++k) Sw[k] = w[g] * S[k][g];  // fold the weight into the 9 stresses, not the 24 forces
+      for (int i = 0; i < 3; ++i)
+        for (int I = 0; I < 8; ++I)
+          fe[8 * i + I] += Sw[3 * i] * D[I] + Sw[3 * i + 1] * D[8 + I] + Sw[3 * i + 2] * D[16 + I];
+    }
+    double stress_mean[6] = {};
+    if (want_stress)
+      for (int g = 0; g < 8; ++g) {
+        double Hg[9], sv[6];
+        for (int k = 0; k < 9; ++k) Hg[k] = H[k][g];
+        mat.cauchy_stress(Hg, sv);
+        for (int k = 0; k < 6; ++k) stress_mean[k] += w[g] * sv[k];
+      }
     const double* B = &blk.B0[24 * e];
     double edot = 0.0;
     for (int k = 0; k < 24; ++k) edot += ve[k] * B[k];

@@ -18,7 +18,9 @@ const std::vector<std::string>& HistoryWriter::standard_columns() {
       // interface models (contact/models/): forces on the slave surfaces, N; tau* x contact area, N;
       // adhesive potential, J; junction dissipation rate, W
       "adhesive_force", "compressive_force", "friction_force", "tau_star_times_area", "adhesion_energy",
-      "friction_power"};
+      "friction_power",
+      // elliptic-pressure fit of the contact radius (contact/contact_manager.cpp pressure_fit_radius), m
+      "contact_radius_pressure_fit"};
   return columns;
 }
 

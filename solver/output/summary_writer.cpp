@@ -7,38 +7,13 @@
 #include <cstring>
 
 #include "solver/errors.hpp"
+#include "solver/output/json.hpp"
 
 namespace tribex::solver {
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += static_cast<char>(c);
-        }
-    }
-  }
-  return out + "\"";
-}
-
 namespace {
-// JSON has no NaN/inf: write null for them.
-std::string number(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
+// JSON has no NaN/inf: null for them; 17 digits so that the figures round-trip.
+std::string number(double x) { return json_number(x, 17); }
 }  // namespace
 
 void write_summary_json(const std::string& path, const RunSummary& s, const Energies& e, const StableStep& st) {

@@ -13,7 +13,4 @@ namespace tribex::solver {
 void write_summary_json(const std::string& path, const RunSummary& summary, const Energies& energies,
                         const StableStep& initial_stable_step);
 
-/// A JSON string literal with the escapes JSON needs.
-std::string json_string(const std::string& s);
-
 }  // namespace tribex::solver

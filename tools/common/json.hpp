@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The two pieces every tool's JSON output needs (RFC 8259): a quoted, escaped string and a number that
-// round-trips to 9 significant digits. Tools compose their objects from these; there is no DOM here.
+// The tools' JSON pieces are the solver's (solver/output/json.hpp: one implementation, in the lower
+// layer, shared with summary.json).
 #pragma once
 
-#include <string>
+#include "solver/output/json.hpp"
 
 namespace tribex::tools {
 
-/// `s` as a JSON string literal, quotes included: `"` and `\` escaped, control characters as \u00XX.
-std::string json_string(const std::string& s);
-
-/// `v` with 9 significant digits (%.9g); `null` for NaN and infinities, which JSON cannot represent.
-std::string json_number(double v);
+using solver::json_number;
+using solver::json_string;
 
 }  // namespace tribex::tools

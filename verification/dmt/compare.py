@@ -10,6 +10,10 @@ a = contact_radius_edge (gap sign change along the tip-surface edges, see verifi
 Compared: loading branch with a >= 5 element sizes and a/R <= 0.25: a within the tolerance of
 DMT at the effective load P + 2 pi W R; pull-off = the most negative P during withdrawal, within
 the tolerance of 2 pi W R. With W = 0 the same comparison is the Hertz one (--work-of-adhesion 0).
+Energy balance: the history's energy_error (|kinetic + internal + dissipated + contact work - external
+work| over the largest energy of the run, solver/energy.hpp; the contact work is that of the penalty,
+adhesive and junction forces, so the adhesive energy and any frictional dissipation are in it) must
+stay within --energy-tolerance (1 %) at every recorded time of the run, loading and withdrawal.
 """
 import argparse
 import csv
@@ -26,6 +30,7 @@ def main():
     p.add_argument("--element-size", type=float, required=True, help="nm")
     p.add_argument("--work-of-adhesion", type=float, default=0.05, help="J/m^2")
     p.add_argument("--tolerance", type=float, default=0.05)
+    p.add_argument("--energy-tolerance", type=float, default=0.01, help="largest |energy_error| allowed")
     p.add_argument("--plot")
     p.add_argument("--hertz-output", help="output folder of the W = 0 run (verification/hertz) to draw beside")
     a = p.parse_args()
@@ -38,6 +43,9 @@ def main():
     deepest = min(range(len(z)), key=lambda i: z[i])
     used = [r for r in rows[: deepest + 1]
             if 5 * h <= f(r, "contact_radius_edge") <= 0.25 * R]
+    if len(used) < 5:
+        print(f"FAIL: only {len(used)} usable loading rows (need the contact radius between 5 element sizes and R/4)")
+        return 1
     P = [f(r, "contact_normal_force") for r in used]
     aFE = [f(r, "contact_radius_edge") for r in used]
     aD = [(3 * R * (x + 2 * math.pi * W * R) / (4 * ESTAR)) ** (1 / 3) for x in P]
@@ -45,12 +53,16 @@ def main():
     pull_off = min(f(r, "contact_normal_force") for r in rows[deepest:])
     Pc = -2 * math.pi * W * R
     ep = abs(pull_off - Pc) / abs(Pc) if W > 0 else 0.0
-    ok = len(used) >= 5 and max(ea) <= a.tolerance and ep <= a.tolerance
+    energy_error = max(abs(f(r, "energy_error")) for r in rows)
+    ok = len(used) >= 5 and max(ea) <= a.tolerance and ep <= a.tolerance and energy_error <= a.energy_tolerance
     print(f"W = {W} J/m^2, 2 pi W R = {-Pc * 1e9:.3f} nN; {len(used)} loads from {P[0] * 1e9:.1f} to {P[-1] * 1e9:.1f} nN")
     print(f"contact radius vs DMT at P + 2 pi W R: max error {max(ea):.2%} (mean {sum(ea) / len(ea):.2%}); "
           f"tolerance {a.tolerance:.0%}")
     if W > 0:
         print(f"pull-off {pull_off * 1e9:.3f} nN vs -2 pi W R = {Pc * 1e9:.3f} nN: error {ep:.2%}; tolerance {a.tolerance:.0%}")
+    print(f"energy balance: max |energy_error| {energy_error:.3%} over the run (adhesion energy at the end "
+          f"{f(rows[-1], 'adhesion_energy'):.3g} J, contact work {f(rows[-1], 'contact_work'):.3g} J); "
+          f"tolerance {a.energy_tolerance:.0%}")
     print("PASS" if ok else "FAIL")
     if a.plot:
         import matplotlib

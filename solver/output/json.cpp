@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "tools/common/json.hpp"
+#include "solver/output/json.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-namespace tribex::tools {
+namespace tribex::solver {
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";
@@ -23,11 +23,11 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
-std::string json_number(double v) {
+std::string json_number(double v, int significant_digits) {
   if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", significant_digits, v);
   return buf;
 }
 
-}  // namespace tribex::tools
+}  // namespace tribex::solver
