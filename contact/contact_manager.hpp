@@ -18,19 +18,27 @@
 //     sigma_s(g + z0) A_I on slave nodes with 0 <= g <= g_c (nodal tributary areas A_I, shape-function
 //     reactions on the master); `junction` adds to it the shear tau A_I on slave nodes in contact
 //     (g <= g_j, penalty contact included), tau opposing the relative tangential velocity.
+// With `enforcement = mortar` steps 2-4 are replaced by the segment-to-segment integration of
+// contact/mortar/ (weighted gaps, consistent nodal loads, adhesion at face integration points).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/models/adhesion_lj.hpp"
 #include "contact/models/junction_shear.hpp"
+#include "contact/mortar/mortar_enforcement.hpp"
 #include "contact/search/bucket_search.hpp"
 #include "contact/surface.hpp"
 
 namespace tribex::contact {
 
 enum class InterfaceModel { frictionless, adhesion, junction };
+
+/// node_to_face: penalty on slave nodes projected on master faces (adhesion with nodal tributary
+/// areas); mortar: segment-to-segment integration (contact/mortar/; models frictionless, adhesion).
+enum class Enforcement { node_to_face, mortar };
 
 struct InteractionSettings {
   std::string name;
@@ -43,6 +51,7 @@ struct InteractionSettings {
   InterfaceModel model = InterfaceModel::frictionless;
   AdhesionLaw adhesion;            // adhesion and junction models; the margin must be >= g_c
   JunctionLaw junction;            // junction model
+  Enforcement enforcement = Enforcement::node_to_face;
 };
 
 // Forces are those acting on the slave surfaces (for a symmetric interaction the second pass's
@@ -106,7 +115,11 @@ class ContactManager {
     bool primary = true;
     std::vector<double> gap;  // [slave node] signed gap to the closest face over which it projects (NaN: none)
     std::vector<int> last_face;  // [slave node] face of the previous step (-1: none), tried first
+    std::unique_ptr<MortarEnforcement> mortar;  // enforcement = mortar only
+    double penalty_per_area = 0.0;  // mortar k_A, Pa/m
+    double capture = 0.0;           // mortar search capture: margin + largest slave face diameter, m
   };
+  void apply_mortar(Pass& p, const double* x, double* force, ContactTotals& totals);  // mortar/mortar_pass.cpp
   double edge_radius(const Pass& p, const double* x) const;
   bool needs_search(const Pass& p, const double* x) const;
   void search(Pass& p, const double* x);
