@@ -75,7 +75,7 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
       for (int a = 0; a < 4; ++a)
         for (int i = 0; i < 3; ++i) Y[3 * a + i] = x[3 * mn[a] + i];
       SegmentQuadrature& q = quadrature_;
-      if (!integrate_segment(plane, Y, q)) continue;
+      if (!integrate_segment(plane, Y, q, settings.adhesion)) continue;
       double g_min = INFINITY, g_max = -INFINITY;
       for (int p = 0; p < q.count; ++p) {
         g_min = std::min(g_min, q.gap[p]);
@@ -106,17 +106,23 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
             }
           }
         }
-        if (settings.adhesion && g <= settings.law.capture_gap()) {
-          totals.adhesion_energy += factor * w * adhesive_energy(g, settings.law);
-          const double sigma = adhesive_traction(g, settings.law);  // 0 for g < 0 (penalty side)
-          if (sigma != 0.0) {
-            totals.adhesive_force += factor * sigma * w;
-            for (int a = 0; a < 4; ++a)
-              for (int i = 0; i < 3; ++i) {
-                // -dU/dx: the slave point toward the master (n_s - grad h_m), the master point back.
-                adhesion_slave[3 * a + i] += factor * sigma * w * N[a] * (plane.normal[i] - slope[i]);
-                adhesion_master[3 * a + i] += factor * sigma * w * Phi[a] * (plane.normal[i] - slope[i]);
-              }
+        if (settings.adhesion) {
+          // The law's separation is the distance to the master's tangent plane, g (-n_s . n_m)
+          // (g is measured along n_s), as the node-to-face rule measures it along n_m.
+          const double* nm = q.master_normal[p];
+          const double separation = -g * (plane.normal[0] * nm[0] + plane.normal[1] * nm[1] + plane.normal[2] * nm[2]);
+          if (separation <= settings.law.capture_gap()) {
+            totals.adhesion_energy += factor * w * adhesive_energy(separation, settings.law);
+            const double sigma = adhesive_traction(separation, settings.law);  // 0 for g < 0 (penalty side)
+            if (sigma != 0.0) {
+              totals.adhesive_force += factor * sigma * w;
+              for (int a = 0; a < 4; ++a)
+                for (int i = 0; i < 3; ++i) {
+                  // The slave point pulled toward the master (against n_m), the master point back.
+                  adhesion_slave[3 * a + i] -= factor * sigma * w * N[a] * nm[i];
+                  adhesion_master[3 * a + i] -= factor * sigma * w * Phi[a] * nm[i];
+                }
+            }
           }
         }
       }

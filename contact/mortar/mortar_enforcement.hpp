@@ -13,9 +13,11 @@
 // Pi = (k_A/2) sum_j A_j (g~_j/A_j)^2 at fixed slave normal and integration points. A uniform pressure p
 // gives f_i = p int N_i dA on both sides (the consistent nodal loads, so the contact patch test
 // passes with non-matching meshes), and sum_i M_ij = int N_j dA = sum_k D_kj conserves momentum
-// exactly. Adhesion (physics.md 6.2) is evaluated at the integration points from the gap there:
-// sigma_s(g) pulls the slave point toward the master, f_i += sigma_s w N_i (n_s - grad h_m),
-// f_k -= sigma_s w Phi_k (n_s - grad h_m) (the gradient of the adhesive energy int U(g) dA).
+// exactly. Adhesion (physics.md 6.2) is evaluated at the integration points from the separation
+// there, s = g (-n_s . n_m) (the distance to the master's tangent plane, n_m its outward normal at
+// the point): f_i -= sigma_s(s) w N_i n_m on the slave, f_k += sigma_s(s) w Phi_k n_m on the master,
+// i.e. the node-to-face rule (sigma_s(g_I) A_I along n_m) with the nodal sampling replaced by the
+// face quadrature.
 //
 // Storage (nodal arrays, the segment list) is sized at construction and at each search, so a step
 // between searches allocates nothing.

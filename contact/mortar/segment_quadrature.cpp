@@ -96,7 +96,7 @@ SlaveFacePlane slave_face_plane(const double X[12]) {
   return s;
 }
 
-bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQuadrature& q) {
+bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQuadrature& q, bool master_normals) {
   q.count = 0;
   q.area = 0.0;
   // Master corners in the slave plane. Seen from the slave's outward side a facing master face
@@ -165,6 +165,22 @@ bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQ
         jy_eta += Nt * my[a];
         h_xi += Ns * h;
         h_eta += Nt * h;
+      }
+      if (master_normals) {
+        double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
+        for (int a = 0; a < 4; ++a) {
+          const double Ns = 0.25 * xi_a[a] * (1 + eta_a[a] * em), Nt = 0.25 * eta_a[a] * (1 + xi_a[a] * xm);
+          for (int i = 0; i < 3; ++i) {
+            t1[i] += Ns * Y[3 * a + i];
+            t2[i] += Nt * Y[3 * a + i];
+          }
+        }
+        double* n = q.master_normal[k];
+        n[0] = t1[1] * t2[2] - t1[2] * t2[1];
+        n[1] = t1[2] * t2[0] - t1[0] * t2[2];
+        n[2] = t1[0] * t2[1] - t1[1] * t2[0];
+        const double len = std::sqrt(dot(n, n));
+        for (int i = 0; i < 3; ++i) n[i] /= len;
       }
       // Solve [[jx_xi, jy_xi], [jx_eta, jy_eta]] s = (h_xi, h_eta).
       const double det = jx_xi * jy_eta - jy_xi * jx_eta;

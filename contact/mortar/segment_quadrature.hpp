@@ -41,6 +41,7 @@ struct SegmentQuadrature {
   double master_shape[capacity][4]; // Phi_k at the point
   double gap[capacity];             // m
   double master_slope[capacity][2]; // grad h_m in (e1, e2): slope of the master's height h_m = x_m . n_s over the plane
+  double master_normal[capacity][3];  // unit outward normal of the master face at the point (only if asked for)
 };
 
 /// `X` the slave face nodes [4][3] in the surface's counter-clockwise (outward) order.
@@ -49,7 +50,9 @@ SlaveFacePlane slave_face_plane(const double X[12]);
 /// Integrates the overlap of master face `Y` [4][3] with the slave face. Returns false (count 0)
 /// when the faces do not overlap in the plane or the master face does not face the slave (its
 /// outward normal not opposed to n_s).
-bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQuadrature& q);
+/// `master_normals`: also fill master_normal (the adhesion traction acts along it).
+bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQuadrature& q,
+                       bool master_normals = false);
 
 /// Parametric coordinates (xi, eta) of point (px, py) in the bilinear quad with corners
 /// (x[a], y[a]), a = (--), (+-), (++), (-+): Newton from the centre (exact in one step for a
