@@ -116,7 +116,12 @@ void ContactManager::search(Pass& p, const double* x) {
   if (p.mortar && p.capture == 0.0) p.capture = p.margin + 1.25 * max_face_diameter(surfaces_[p.slave], x);
   bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.mortar ? p.capture : p.margin,
                           p.candidate_offset, p.candidates);
-  if (p.mortar) p.mortar->reserve(surfaces_[p.slave], p.candidate_offset);
+  if (p.mortar) {
+    // Headroom for later searches (the wide mortar capture gives more candidates): no allocation in the loop.
+    if (p.candidates.capacity() < p.candidates.size() + p.candidates.size() / 4)
+      p.candidates.reserve(p.candidates.size() + p.candidates.size() / 2);
+    p.mortar->reserve(surfaces_[p.slave], p.candidate_offset);
+  }
   p.last_face.assign(surfaces_[p.slave].nodes.size(), -1);
   std::size_t k = 0;
   for (int s : {p.slave, p.master})

@@ -43,7 +43,9 @@ void MortarEnforcement::reserve(const ContactSurface& slave, const std::vector<i
     const int k = slave.face_local[4 * f];
     pairs += static_cast<std::size_t>(candidate_offset[k + 1] - candidate_offset[k]);
   }
-  segments_.reserve(pairs);
+  // Headroom: later searches of a sliding or deforming contact find a few more pairs, and the
+  // step loop must not allocate.
+  if (segments_.capacity() < pairs + pairs / 4) segments_.reserve(pairs + pairs / 2 + 16);
 }
 
 MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& slave, const ContactSurface& master,
@@ -86,24 +88,36 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
       Segment s{};
       s.slave_face = f;
       s.master_face = mface;
-      for (int i = 0; i < 3; ++i) s.normal[i] = plane.normal[i];
+      for (int i = 0; i < 3; ++i) {
+        s.normal[i] = plane.normal[i];
+        s.e1[i] = plane.e1[i];
+        s.e2[i] = plane.e2[i];
+      }
       double adhesion_slave[12] = {}, adhesion_master[12] = {};
       for (int p = 0; p < q.count; ++p) {
         const double w = q.weight[p], g = q.gap[p];
         const double* N = q.slave_shape[p];
         const double* Phi = q.master_shape[p];
-        double slope[3];  // grad h_m as a 3-D tangential vector
-        for (int i = 0; i < 3; ++i) slope[i] = q.master_slope[p][0] * plane.e1[i] + q.master_slope[p][1] * plane.e2[i];
+        const double s0 = q.master_slope[p][0], s1 = q.master_slope[p][1];
+        double wN[4];
         for (int a = 0; a < 4; ++a) {
-          weighted_gap_[sl[a]] += w * N[a] * g;
-          overlap_area_[sl[a]] += w * N[a];
+          wN[a] = w * N[a];
+          weighted_gap_[sl[a]] += wN[a] * g;
+          overlap_area_[sl[a]] += wN[a];
+        }
+        for (int a = 0; a < 4; ++a) {
+          const double wPhi = w * Phi[a];
+          for (int b = a; b < 4; ++b) {  // M and G are symmetric in (a, b)
+            const double m = wN[a] * N[b];
+            s.M[a][b] += m;
+            s.G[a][b][0] += m * s0;
+            s.G[a][b][1] += m * s1;
+          }
           for (int b = 0; b < 4; ++b) {
-            s.M[a][b] += w * N[a] * N[b];
-            s.D[a][b] += w * Phi[a] * N[b];
-            for (int i = 0; i < 3; ++i) {
-              s.G[a][b][i] += w * N[a] * N[b] * slope[i];
-              s.H[a][b][i] += w * Phi[a] * N[b] * slope[i];
-            }
+            const double d = wPhi * N[b];
+            s.D[a][b] += d;
+            s.H[a][b][0] += d * s0;
+            s.H[a][b][1] += d * s1;
           }
         }
         if (settings.adhesion) {
@@ -154,20 +168,21 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
     const double p[4] = {pressure_[sl[0]], pressure_[sl[1]], pressure_[sl[2]], pressure_[sl[3]]};
     if (p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0 && p[3] == 0.0) continue;
     for (int a = 0; a < 4; ++a) {
-      double fs = 0.0, fm = 0.0, ts[3] = {0, 0, 0}, tm[3] = {0, 0, 0};
+      double fs = 0.0, fm = 0.0, ts[2] = {0, 0}, tm[2] = {0, 0};
       for (int b = 0; b < 4; ++b) {
-        fs += s.M[a][b] * p[b];
+        const int lo = std::min(a, b), hi = std::max(a, b);  // symmetric M, G: upper triangle
+        fs += s.M[lo][hi] * p[b];
+        ts[0] += s.G[lo][hi][0] * p[b];
+        ts[1] += s.G[lo][hi][1] * p[b];
         fm += s.D[a][b] * p[b];
-        for (int i = 0; i < 3; ++i) {
-          ts[i] += s.G[a][b][i] * p[b];
-          tm[i] += s.H[a][b][i] * p[b];
-        }
+        tm[0] += s.H[a][b][0] * p[b];
+        tm[1] += s.H[a][b][1] * p[b];
       }
       for (int i = 0; i < 3; ++i) {
-        const double f_slave = -fs * s.normal[i] + ts[i];
+        const double f_slave = -fs * s.normal[i] + ts[0] * s.e1[i] + ts[1] * s.e2[i];
         force[3 * sn[a] + i] += f_slave;
         traction[3 * sn[a] + i] += f_slave / slave.node_area[sl[a]];
-        force[3 * mn[a] + i] += fm * s.normal[i] - tm[i];
+        force[3 * mn[a] + i] += fm * s.normal[i] - tm[0] * s.e1[i] - tm[1] * s.e2[i];
       }
     }
   }

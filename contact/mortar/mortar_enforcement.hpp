@@ -81,10 +81,11 @@ class MortarEnforcement {
   struct Segment {
     int slave_face, master_face;
     double normal[3];
-    double M[4][4];  // int N_a N_b dA
+    double M[4][4];  // int N_a N_b dA (upper triangle b >= a filled)
     double D[4][4];  // int Phi_k N_b dA
-    double G[4][4][3];  // int N_a N_b grad h_m dA (3-D tangential vector)
-    double H[4][4][3];  // int Phi_k N_b grad h_m dA
+    double G[4][4][2];  // int N_a N_b grad h_m dA, components along e1, e2 (upper triangle b >= a filled)
+    double H[4][4][2];  // int Phi_k N_b grad h_m dA, along e1, e2
+    double e1[3], e2[3];
   };
   std::vector<double> weighted_gap_, overlap_area_, mean_gap_, pressure_;
   std::vector<Segment> segments_;
