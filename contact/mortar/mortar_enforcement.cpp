@@ -94,6 +94,7 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
         s.e2[i] = plane.e2[i];
       }
       double adhesion_slave[12] = {}, adhesion_master[12] = {};
+      double gap_sum[4] = {0, 0, 0, 0}, area_sum[4] = {0, 0, 0, 0};  // local: no aliasing with s in the loop
       for (int p = 0; p < q.count; ++p) {
         const double w = q.weight[p], g = q.gap[p];
         const double* N = q.slave_shape[p];
@@ -102,8 +103,8 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
         double wN[4];
         for (int a = 0; a < 4; ++a) {
           wN[a] = w * N[a];
-          weighted_gap_[sl[a]] += wN[a] * g;
-          overlap_area_[sl[a]] += wN[a];
+          gap_sum[a] += wN[a] * g;
+          area_sum[a] += wN[a];
         }
         for (int a = 0; a < 4; ++a) {
           const double wPhi = w * Phi[a];
@@ -139,6 +140,10 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
             }
           }
         }
+      }
+      for (int a = 0; a < 4; ++a) {
+        weighted_gap_[sl[a]] += gap_sum[a];
+        overlap_area_[sl[a]] += area_sum[a];
       }
       if (settings.adhesion)
         for (int a = 0; a < 4; ++a)
