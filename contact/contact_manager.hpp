@@ -117,7 +117,7 @@ class ContactManager {
     std::vector<int> last_face;  // [slave node] face of the previous step (-1: none), tried first
     std::unique_ptr<MortarEnforcement> mortar;  // enforcement = mortar only
     double penalty_per_area = 0.0;  // mortar k_A, Pa/m
-    double capture = 0.0;           // mortar search capture: margin + largest slave face diameter, m
+    double capture = 0.0;           // mortar search capture: margin + 1.25 x the largest slave face diameter, m
   };
   void apply_mortar(Pass& p, const double* x, double* force, ContactTotals& totals);  // mortar/mortar_pass.cpp
   double edge_radius(const Pass& p, const double* x) const;
