@@ -143,7 +143,17 @@ bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQ
     master.x[a] = mx[3 - a];
     master.y[a] = my[3 - a];
   }
-  if (signed_area(master) <= 0.0) return false;
+  // Facing faces only; a master face seen edge-on (projected area below 1 % of its own, i.e.
+  // tilted more than 89.4 degrees from the slave plane) has an ill-conditioned projected map.
+  const double projected = signed_area(master);
+  double diag1[3], diag2[3];
+  for (int i = 0; i < 3; ++i) {
+    diag1[i] = Y[6 + i] - Y[i];
+    diag2[i] = Y[9 + i] - Y[3 + i];
+  }
+  const double c[3] = {diag1[1] * diag2[2] - diag1[2] * diag2[1], diag1[2] * diag2[0] - diag1[0] * diag2[2],
+                       diag1[0] * diag2[1] - diag1[1] * diag2[0]};
+  if (projected <= 0.01 * 0.5 * std::sqrt(dot(c, c))) return false;
   const Polygon2 overlap = clip_convex(master, slave.polygon);
   if (overlap.count < 3) return false;
   // The overlap of convex polygons is convex: a fan of count - 2 triangles from its first vertex
