@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "contact/geometry/quad_projection.hpp"
 
@@ -77,6 +78,12 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
         p.junction_vpred.resize(3 * n);
         p.contact_share.resize(n);
       }
+      if (it.enforcement == Enforcement::mortar) {
+        if (it.model == InterfaceModel::junction)
+          throw std::invalid_argument("contact interaction '" + it.name + "': the mortar enforcement supports models frictionless and adhesion");
+        p.mortar = std::make_unique<MortarEnforcement>(surfaces_[p.slave]);
+        p.penalty_per_area = mortar_penalty_per_area(surfaces_[p.slave], surfaces_[p.master], mass, p.penalty_scale, dt_ref);
+      }
       passes_.push_back(std::move(p));
     }
   }
@@ -122,7 +129,15 @@ bool ContactManager::needs_search(const Pass& p, const double* x) const {
 }
 
 void ContactManager::search(Pass& p, const double* x) {
-  bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.margin, p.candidate_offset, p.candidates);
+  if (p.mortar && p.capture == 0.0) p.capture = p.margin + 1.25 * max_face_diameter(surfaces_[p.slave], x);
+  bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.mortar ? p.capture : p.margin,
+                          p.candidate_offset, p.candidates);
+  if (p.mortar) {
+    // Headroom for later searches (the wide mortar capture gives more candidates): no allocation in the loop.
+    if (p.candidates.capacity() < p.candidates.size() + p.candidates.size() / 4)
+      p.candidates.reserve(p.candidates.size() + p.candidates.size() / 2);
+    p.mortar->reserve(surfaces_[p.slave], p.candidate_offset);
+  }
   p.last_face.assign(surfaces_[p.slave].nodes.size(), -1);
   std::size_t k = 0;
   for (int s : {p.slave, p.master})
@@ -344,6 +359,11 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
     const ContactSurface& slave = surfaces_[p.slave];
     const ContactSurface& master = surfaces_[p.master];
     p.gap.assign(slave.nodes.size(), NAN);
+    if (p.mortar) {
+      apply_mortar(p, x, force, totals);
+      if (has_axis_ && p.primary) totals.radius_edge = edge_radius(p, x);
+      continue;
+    }
     for (int k = 0; k < slave.node_count(); ++k) {
       const int count = p.candidate_offset[k + 1] - p.candidate_offset[k];
       if (count == 0) continue;

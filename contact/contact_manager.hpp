@@ -26,19 +26,27 @@
 //     would reach without the shear predicted from the other forces, and a pair mass that counts every
 //     slave sharing a master node (row sums of the pairs' coupling, so the simultaneous updates of
 //     all pairs cannot overshoot: Gershgorin).
+// With `enforcement = mortar` steps 2-4 are replaced by the segment-to-segment integration of
+// contact/mortar/ (weighted gaps, consistent nodal loads, adhesion at face integration points).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/models/adhesion_lj.hpp"
 #include "contact/models/junction_shear.hpp"
+#include "contact/mortar/mortar_enforcement.hpp"
 #include "contact/search/bucket_search.hpp"
 #include "contact/surface.hpp"
 
 namespace tribex::contact {
 
 enum class InterfaceModel { frictionless, adhesion, junction };
+
+/// node_to_face: penalty on slave nodes projected on master faces (adhesion with nodal tributary
+/// areas); mortar: segment-to-segment integration (contact/mortar/; models frictionless, adhesion).
+enum class Enforcement { node_to_face, mortar };
 
 struct InteractionSettings {
   std::string name;
@@ -51,6 +59,7 @@ struct InteractionSettings {
   InterfaceModel model = InterfaceModel::frictionless;
   AdhesionLaw adhesion;            // adhesion and junction models; the margin must be >= g_c
   JunctionLaw junction;            // junction model
+  Enforcement enforcement = Enforcement::node_to_face;
 };
 
 // Forces are those acting on the slave surfaces (for a symmetric interaction the second pass's
@@ -125,8 +134,12 @@ class ContactManager {
     std::vector<int> junction_slave, junction_face;
     std::vector<double> junction_shape, junction_normal, junction_vt, junction_vpred;
     std::vector<double> contact_share;  // [slave node] in-contact part of its tributary area (junction), m^2
+    std::unique_ptr<MortarEnforcement> mortar;  // enforcement = mortar only
+    double penalty_per_area = 0.0;  // mortar k_A, Pa/m
+    double capture = 0.0;           // mortar search capture: margin + 1.25 x the largest slave face diameter, m
   };
   void contact_shares(Pass& p);
+  void apply_mortar(Pass& p, const double* x, double* force, ContactTotals& totals);  // mortar/mortar_pass.cpp
   double edge_radius(const Pass& p, const double* x) const;
   double pressure_fit_radius() const;
   bool needs_search(const Pass& p, const double* x) const;

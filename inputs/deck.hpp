@@ -210,6 +210,9 @@ struct ContactSurfaceSpec {
 
 enum class InteractionModel { frictionless, adhesion, junction };
 
+/// `enforcement = node to face | mortar` (contact/README.md: when each is adequate).
+enum class InteractionEnforcement { node_to_face, mortar };
+
 /// `begin interaction NAME` inside a contact definition: `surfaces = SLAVE MASTER` (the slave
 /// should be the finer surface), `model = frictionless | adhesion | junction`, `symmetric = on|off`
 /// (two-pass). Adhesion (physics.md 6) needs `work of adhesion` and `equilibrium separation`;
@@ -220,6 +223,7 @@ struct InteractionSpec {
   std::string master;
   InteractionModel model = InteractionModel::frictionless;
   bool symmetric = false;
+  InteractionEnforcement enforcement = InteractionEnforcement::node_to_face;
   double work_of_adhesion = 0.0;               // W, J/m^2
   double equilibrium_separation = 0.0;         // z0, m
   std::optional<double> adhesion_cutoff;       // h_c (separation, > z0), m; default 5 z0

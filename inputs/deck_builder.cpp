@@ -459,6 +459,12 @@ class Builder {
       i.model = InteractionModel::frictionless;
       if (auto v = get(*it, "symmetric")) i.symmetric = v->flag;
       interface_model(*it, i);
+      if (word(*it, "enforcement") == "mortar") {
+        i.enforcement = InteractionEnforcement::mortar;
+        if (i.model == InteractionModel::junction)
+          error(where(*it, "enforcement"), *it,
+                "'enforcement = mortar' supports 'model = frictionless' and 'model = adhesion'; use 'enforcement = node to face' for the junction model");
+      }
       spec.interactions.push_back(i);
     }
     return spec;

@@ -240,6 +240,8 @@ std::vector<BlockSchema> build_table() {
                 choice("model", ValueKind::enumeration, {"frictionless", "adhesion", "junction"}, false, "frictionless",
                        "interaction model (adhesion: + Lennard-Jones attraction; junction: + shear tau*)"),
                 boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved"),
+                choice("enforcement", ValueKind::enumeration, {"node to face", "mortar"}, false, "node to face",
+                       "node to face: penalty at slave nodes; mortar: segment-to-segment (patch test, face-quadrature adhesion)"),
                 real("work of adhesion", dim::energy_per_area, positive(), false, "",
                      "W of the adhesion law (models adhesion, junction)"),
                 real("equilibrium separation", dim::length, positive(), false, "",

@@ -96,6 +96,13 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     s.slave = index_of(it.slave);
     s.master = index_of(it.master);
     s.symmetric = it.symmetric;
+    if (it.enforcement == inputs::InteractionEnforcement::mortar) {
+      s.enforcement = contact::Enforcement::mortar;
+      if (report)
+        report->push_back("  interaction " + it.name +
+                          ": mortar (segment-to-segment) enforcement, penalty per area k_A = s m_A / dt^2" +
+                          (it.model == inputs::InteractionModel::adhesion ? ", adhesion at face integration points" : ""));
+    }
     s.penalty_scale = spec.penalty_scale_factor;
     s.search_margin = spec.search_margin.value_or(0.0);
     if (it.model != inputs::InteractionModel::frictionless)

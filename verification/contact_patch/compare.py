@@ -2,15 +2,16 @@
 # SPDX-License-Identifier: MIT
 """Contact patch test (contact_patch.i): two flat blocks, non-matching faces, uniform compression.
 
-Checked (exit 1 on failure):
+The deck uses `enforcement = mortar` (segment-to-segment penalty, contact/mortar/): the nodal loads
+of a uniform contact pressure are the consistent ones on both non-matching faces, so the FE
+solution is the exact uniform uniaxial stress. Checked (exit 1 on failure):
   * force transmission: contact force = load at the top = reaction at the bottom, relative 1e-6;
   * quasi-static end state: kinetic energy below 1e-6 of internal energy;
-  * pressure uniformity as a REGRESSION GUARD: the element stress sigma_zz within 10 % of its mean.
-NOT met: the issue's acceptance asks for uniform pressure to 1e-6. Node-to-face penalty contact
-(even two-pass) does not pass the 3-D patch test with non-matching faces: the master side receives
-the slave nodal forces through the master shape functions evaluated at the slave nodes, which is not
-the consistent integral of a uniform traction. A segment-to-segment (mortar) integration would be
-needed; this script prints the measured non-uniformity so that the gap is visible.
+  * uniform pressure: sigma_zz of ALL elements (both blocks) within 1e-6 of its mean (max - min over
+    |mean|), and the other stress components (uniaxial state) below 1e-6 of |mean sigma_zz|.
+With `enforcement = node to face` the same deck gives a 5.7 % spread in sigma_zz (the master side
+receives the slave nodal forces through its shape functions at the slave nodes, not the consistent
+integral of a uniform traction); see verification/README.md.
 """
 import argparse
 import csv
@@ -34,15 +35,18 @@ def main():
     ke = f("kinetic_energy") / f("internal_energy")
     with h5py.File(f"{a.output}/results.h5", "r") as h:
         step = h["steps"][sorted(h["steps"].keys())[-1]]
-        szz = step["element/stress"][:][:, 8]
+        stress = step["element/stress"][:]  # [element][9], row-major 3 x 3
+    szz = stress[:, 8]
     spread = (szz.max() - szz.min()) / abs(szz.mean())
+    off_axis = np.abs(stress[:, [0, 1, 2, 4, 5]]).max() / abs(szz.mean())
     print(f"contact force {P * 1e9:.4f} nN, top load {top * 1e9:.4f} nN, bottom reaction {bottom * 1e9:.4f} nN: "
           f"balance {balance:.2e} (tolerance 1e-6)")
     print(f"kinetic/internal energy at the end {ke:.2e} (tolerance 1e-6)")
-    print(f"sigma_zz: mean {szz.mean() / 1e6:.2f} MPa, min {szz.min() / 1e6:.2f}, max {szz.max() / 1e6:.2f}: "
-          f"spread {spread:.2%} (regression guard 10 %; the acceptance's 1e-6 is NOT met by node-to-face contact)")
-    ok = balance < 1e-6 and ke < 1e-6 and spread < 0.10
-    print("PASS (force transmission; uniformity only guarded)" if ok else "FAIL")
+    print(f"sigma_zz over all {len(szz)} elements (both blocks): mean {szz.mean() / 1e6:.4f} MPa, "
+          f"spread (max - min)/|mean| {spread:.2e} (tolerance 1e-6)")
+    print(f"largest other stress component / |mean sigma_zz| {off_axis:.2e} (tolerance 1e-6)")
+    ok = balance < 1e-6 and ke < 1e-6 and spread < 1e-6 and off_axis < 1e-6
+    print("PASS" if ok else "FAIL")
     return 0 if ok else 1
 
 

@@ -10,6 +10,7 @@
 #            lower_zmin: fixed in z
 #   Symmetry planes x = 0 (x fixed) and y = 0 (y fixed) for both blocks; x = 10, y = 10 free, so the
 #   exact solution is a uniform uniaxial stress and a uniform contact pressure.
+#   `enforcement = mortar`: segment-to-segment contact, exact for this test (node to face: 5.7 % spread).
 begin sierra contact_patch
   begin function squeeze
     type = piecewise linear
@@ -88,6 +89,7 @@ begin sierra contact_patch
         begin interaction flat_on_flat
           surfaces = upper_face lower_face
           symmetric = on
+          enforcement = mortar
         end interaction flat_on_flat
       end contact definition interface
       begin history output hist

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// ContactManager's mortar pass (enforcement = mortar): the segment integration of
+// MortarEnforcement, then the per-node bookkeeping the node-to-face path does inline (status,
+// contact area, node count, penetration, radius). Kept in its own file so that the node-to-face
+// code in contact_manager.cpp stays as it is.
+#include <algorithm>
+#include <cmath>
+
+#include "contact/contact_manager.hpp"
+
+namespace tribex::contact {
+
+void ContactManager::apply_mortar(Pass& p, const double* x, double* force, ContactTotals& totals) {
+  const ContactSurface& slave = surfaces_[p.slave];
+  MortarSettings settings;
+  settings.factor = p.factor;
+  settings.margin = p.margin;
+  settings.penalty_per_area = p.penalty_per_area;
+  settings.adhesion = p.model == InterfaceModel::adhesion;
+  settings.law = p.adhesion;
+  const MortarTotals t = p.mortar->apply(x, slave, surfaces_[p.master], p.candidate_offset, p.candidates, settings,
+                                         force, traction_.data());
+  totals.compressive_force += t.compressive_force;
+  totals.adhesive_force += t.adhesive_force;
+  totals.adhesion_energy += t.adhesion_energy;
+  const auto& mean_gap = p.mortar->mean_gap();
+  const auto& pressure = p.mortar->pressure();
+  const auto& area = p.mortar->overlap_area();
+  // In contact: a penalty pressure, or (adhesion) a mean gap within the junction gap tolerance.
+  const double tolerance = settings.adhesion ? p.junction.gap_tolerance : -INFINITY;
+  for (int k = 0; k < slave.node_count(); ++k) {
+    p.gap[k] = mean_gap[k];
+    if (!(pressure[k] > 0.0 || mean_gap[k] <= tolerance)) continue;
+    const int node = slave.nodes[k];
+    status_[node] = 1.0;
+    totals.area += p.factor * area[k];
+    if (p.primary) ++totals.nodes;
+    totals.max_penetration = std::max(totals.max_penetration, -mean_gap[k]);
+    if (has_axis_) {
+      double r[3], along = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        r[i] = x[3 * node + i] - axis_point_[i];
+        along += r[i] * axis_dir_[i];
+      }
+      double r2 = 0.0;
+      for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
+      totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
+    }
+  }
+}
+
+}  // namespace tribex::contact
