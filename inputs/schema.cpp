@@ -236,8 +236,10 @@ std::vector<BlockSchema> build_table() {
   }
   t.push_back({"interaction", NameRule::required, {}, {}, true,
                {text("surfaces", ValueKind::strings, true, "SLAVE MASTER (the slave is the finer surface)"),
-                choice("model", ValueKind::enumeration, {"frictionless", "adhesion", "junction"}, false, "frictionless",
-                       "interaction model (adhesion: + Lennard-Jones attraction; junction: + shear tau*)"),
+                choice("model", ValueKind::enumeration, {"frictionless", "adhesion", "junction", "rough surface"}, false,
+                       "frictionless",
+                       "interaction model (adhesion: + Lennard-Jones attraction; junction: + shear tau*; rough surface: "
+                       "homogenized Greenwood-Williamson law, contact/models/rough_surface.hpp)"),
                 boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved"),
                 real("work of adhesion", dim::energy_per_area, positive(), false, "",
                      "W of the adhesion law (models adhesion, junction)"),
@@ -249,7 +251,19 @@ std::vector<BlockSchema> build_table() {
                 real("junction reference speed", dim::velocity, positive(), false, "",
                      "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s, raised to the stability bound)"),
                 real("junction gap tolerance", dim::length, non_negative(), false, "",
-                     "a node is in contact when gap <= this (default 0.05 z0)")},
+                     "a node is in contact when gap <= this (default 0.05 z0)"),
+                // model = rough surface (physics.md 10.3-10.5): continuous Gaussian summits, or a discrete file
+                real("summit density", dim::per_area, positive(), false, "", "eta, summits per nominal area (rough surface)"),
+                real("summit radius", dim::length, positive(), false, "", "R_s, mean summit radius (rough surface)"),
+                real("summit height deviation", dim::length, positive(), false, "",
+                     "sigma_s, standard deviation of the summit heights (rough surface)"),
+                real("composite modulus", dim::pressure, positive(), false, "",
+                     "E* = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) of the asperity contacts (rough surface)"),
+                text("summit file", ValueKind::string, false,
+                     "discrete population: CSV height_m,radius_m per summit, relative to the deck (rough surface)"),
+                real("summit map area", dim::area, positive(), false, "", "area of the map the summit file came from"),
+                real("mean plane offset", dim::length, Range{}, false, "0",
+                     "d = gap + offset: mean-plane separation when the surfaces touch (rough surface)")},
                {},
                false, "one pair of contact surfaces and its model"});
 

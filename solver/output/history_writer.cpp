@@ -18,7 +18,10 @@ const std::vector<std::string>& HistoryWriter::standard_columns() {
       // interface models (contact/models/): forces on the slave surfaces, N; tau* x contact area, N;
       // adhesive potential, J; junction dissipation rate, W
       "adhesive_force", "compressive_force", "friction_force", "tau_star_times_area", "adhesion_energy",
-      "friction_power"};
+      "friction_power",
+      // rough-surface (GW) model: real contact area A_c, m^2; asperities in contact; normal force over
+      // the nominal area within reach of the law, Pa
+      "real_contact_area", "asperity_contacts", "apparent_pressure"};
   return columns;
 }
 
