@@ -204,7 +204,7 @@ void ContactManager::apply_shear(const Pass& p, const JunctionLaw& law, int node
 
 // Rough-surface (GW) law on slave node k over master face `face` at gap g (models/rough_surface.hpp):
 // d = g + offset; normal force p(d) A_I along the master's outward normal (p > 0 pushes apart), the
-// junction shear with tau* (A_c/A_0)(d), and the node's critical step 2 sqrt(m_eff / (A_I dp/dd)).
+// junction shear with tau* (A_c/A_0)(d), and the node's critical step (normal spring, shear damper).
 void ContactManager::apply_rough_surface(Pass& p, int k, int face, const double* shape, const double* normal,
                                          double gap, const double* v, double* force, Accumulator& acc) {
   const RoughSurfaceLaw& law = *p.rough;
@@ -240,13 +240,17 @@ void ContactManager::apply_rough_surface(Pass& p, int k, int face, const double*
     for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= shape[a] * f[i];
     traction_[3 * node + i] += f[i] / area;
   }
-  // Explicit stability of the normal spring k_I = A_I dp/dd between the node and the face point.
+  // Explicit stability between the node and the face point (m_eff as for the penalty): the normal
+  // spring k_I = A_I dp/dd needs dt < 2 sqrt(m_eff / k_I), the shear damper c_I = tau* (A_c/A_0) A_I / v_ref
+  // (its slope at zero slip, physics.md 7.3) needs dt < 2 m_eff / c_I.
   const double k_spring = p.factor * s.stiffness * area;
-  if (k_spring > 0.0) {
+  const double c_damper = p.factor * p.junction.strength * s.area_fraction * area / p.junction.reference_speed;
+  if (k_spring > 0.0 || c_damper > 0.0) {
     double inv_mM = 0.0;
     for (int a = 0; a < 4; ++a) inv_mM += shape[a] * shape[a] / mass_[fn[a]];
-    const double ms = mass_[node], mM = 1.0 / inv_mM;
-    p.stable_dt = std::min(p.stable_dt, 2.0 * std::sqrt(ms * mM / (ms + mM) / k_spring));
+    const double ms = mass_[node], mM = 1.0 / inv_mM, m_eff = ms * mM / (ms + mM);
+    if (k_spring > 0.0) p.stable_dt = std::min(p.stable_dt, 2.0 * std::sqrt(m_eff / k_spring));
+    if (c_damper > 0.0) p.stable_dt = std::min(p.stable_dt, 2.0 * m_eff / c_damper);
   }
 }
 

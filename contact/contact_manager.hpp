@@ -20,7 +20,8 @@
 //     (g <= g_j, penalty contact included), tau opposing the relative tangential velocity;
 //     `rough_surface` replaces the penalty by the homogenized GW law (models/rough_surface.hpp) at the
 //     mean-plane separation d = g + mean_plane_offset: normal traction p(d) A_I, shear tau* (A_c/A_0) A_I
-//     by the junction law, and a stable-time-step bound 2 sqrt(m_eff / (A_I dp/dd)) per node.
+//     by the junction law, and stable-time-step bounds per node: 2 sqrt(m_eff / (A_I dp/dd)) for the
+//     normal spring, 2 m_eff v_ref / (tau* (A_c/A_0) A_I) for the shear damper.
 #pragma once
 
 #include <cmath>
@@ -94,8 +95,8 @@ class ContactManager {
   const std::vector<int>& surface_nodes() const { return all_nodes_; }
   const std::vector<ContactSurface>& surfaces() const { return surfaces_; }
   long total_searches() const { return total_searches_; }
-  /// Critical time step of the rough-surface contact springs A_I dp/dd at the last compute_forces,
-  /// min over nodes of 2 sqrt(m_eff / k_I) (INFINITY without a rough_surface interaction).
+  /// Critical time step of the rough-surface contact at the last compute_forces: min over nodes of
+  /// 2 sqrt(m_eff / k_I) (normal spring A_I dp/dd) and 2 m_eff / c_I (shear damper); INFINITY without one.
   double stable_time_step() const;
 
   /// Initial gaps (pre-flight report): per interaction pass, the most penetrating slave nodes.

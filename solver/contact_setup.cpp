@@ -46,7 +46,19 @@ void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpe
   }
   if (!junction) return;
   s.junction.strength = it.junction_strength;
-  const double v_min = junction_speed_floor(slave, master, mass, dt, s.junction.strength);
+  // Stability of the damper c = tau* A_I / v_ref (physics.md 7.3): c dt / m_eff < 2. m_eff is not
+  // known before pairing: estimate it with the median master node mass, m_eff = m_I m_M / (m_I + m_M),
+  // and keep a factor 2 of margin because several slave nodes can load one master node.
+  std::vector<double> master_mass;
+  for (int node : master.nodes) master_mass.push_back(mass[node]);
+  std::nth_element(master_mass.begin(), master_mass.begin() + master_mass.size() / 2, master_mass.end());
+  const double m_master = master_mass[master_mass.size() / 2];
+  double v_min = 0.0;
+  for (int k = 0; k < slave.node_count(); ++k) {
+    const double ms = mass[slave.nodes[k]];
+    const double m_eff = ms * m_master / (ms + m_master);
+    v_min = std::max(v_min, 2.0 * s.junction.strength * slave.node_area[k] * dt / (2.0 * m_eff));
+  }
   const double v_ref = it.junction_reference_speed.value_or(0.1);
   s.junction.reference_speed = v_ref;
   if (v_ref < v_min) {
@@ -59,24 +71,6 @@ void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpe
 }
 
 }  // namespace
-
-double junction_speed_floor(const contact::ContactSurface& slave, const contact::ContactSurface& master,
-                            const std::vector<double>& mass, double dt, double strength) {
-  // Stability of the damper c = tau* A_I / v_ref (physics.md 7.3): c dt / m_eff < 2. m_eff is not
-  // known before pairing: estimate it with the median master node mass, m_eff = m_I m_M / (m_I + m_M),
-  // and keep a factor 2 of margin because several slave nodes can load one master node.
-  std::vector<double> master_mass;
-  for (int node : master.nodes) master_mass.push_back(mass[node]);
-  std::nth_element(master_mass.begin(), master_mass.begin() + master_mass.size() / 2, master_mass.end());
-  const double m_master = master_mass[master_mass.size() / 2];
-  double v_min = 0.0;
-  for (int k = 0; k < slave.node_count(); ++k) {
-    const double ms = mass[slave.nodes[k]];
-    const double m_eff = ms * m_master / (ms + m_master);
-    v_min = std::max(v_min, 2.0 * strength * slave.node_area[k] * dt / (2.0 * m_eff));
-  }
-  return v_min;
-}
 
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
                                                        std::vector<std::string>* report) {
@@ -111,8 +105,7 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     s.penalty_scale = spec.penalty_scale_factor;
     s.search_margin = spec.search_margin.value_or(0.0);
     if (it.model == inputs::InteractionModel::rough_surface)
-      rough_surface_model(it, spec, surfaces[static_cast<std::size_t>(s.slave)], surfaces[static_cast<std::size_t>(s.master)],
-                          model.mass, dt, s, report);
+      rough_surface_model(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
     else if (it.model != inputs::InteractionModel::frictionless)
       interface_model(it, spec, surfaces[static_cast<std::size_t>(s.slave)], surfaces[static_cast<std::size_t>(s.master)],
                       model.mass, dt, s, report);

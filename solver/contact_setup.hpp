@@ -20,17 +20,10 @@ struct Model;
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
                                                        std::vector<std::string>* report);
 
-/// Floor of the junction reference speed for explicit stability of the tanh damper c = tau* A_I / v_ref
-/// (physics.md 7.3): twice max_I tau* A_I dt / (2 m_eff), m_eff from the slave node and the median
-/// master node mass (used by the junction and rough-surface models).
-double junction_speed_floor(const contact::ContactSurface& slave, const contact::ContactSurface& master,
-                            const std::vector<double>& mass, double dt, double strength);
-
 /// `model = rough surface` (solver/rough_surface_setup.cpp): builds the GW law (reading a summit
 /// file), the shear law and the search margin; each choice goes to the run log.
 void rough_surface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
-                         const contact::ContactSurface& slave, const contact::ContactSurface& master,
-                         const std::vector<double>& mass, double dt, contact::InteractionSettings& s,
+                         const contact::ContactSurface& master, contact::InteractionSettings& s,
                          std::vector<std::string>* report);
 
 }  // namespace tribex::solver
