@@ -219,7 +219,10 @@ void ContactManager::apply_rough_surface(Pass& p, int k, int face, const double*
   const double fn_mag = p.factor * s.pressure * area;
   double f[3];
   for (int i = 0; i < 3; ++i) f[i] = fn_mag * normal[i];
-  if (fn_mag >= 0.0) totals.compressive_force += fn_mag; else totals.adhesive_force -= fn_mag;
+  // Totals split like the other models: the Hertz (repulsive) part and the DMT pull.
+  const double pull = p.factor * s.adhesion * area;
+  totals.compressive_force += fn_mag + pull;
+  totals.adhesive_force += pull;
   totals.nominal_area += p.factor * area;
   totals.real_area += p.factor * area * s.area_fraction;
   totals.asperity_contacts += p.factor * area * s.contact_density;

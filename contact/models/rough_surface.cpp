@@ -28,7 +28,8 @@ RoughSurfaceState continuous_state(const RoughSurfaceParameters& q, double f0, d
   RoughSurfaceState s;
   s.contact_density = q.summit_density * f0;
   s.area_fraction = M_PI * q.summit_density * q.summit_radius * q.sigma_s * f1;
-  s.pressure = q.summit_density * (hertz_scale * f32 - 2.0 * M_PI * q.work_of_adhesion * q.summit_radius * f0);
+  s.adhesion = q.summit_density * 2.0 * M_PI * q.work_of_adhesion * q.summit_radius * f0;
+  s.pressure = q.summit_density * hertz_scale * f32 - s.adhesion;
   s.stiffness = -q.summit_density * hertz_scale * df32 / q.sigma_s;  // dt/dd = 1/sigma_s
   return s;
 }
@@ -105,13 +106,14 @@ RoughSurfaceState RoughSurfaceLaw::evaluate_direct(double d) const {
     const double w = heights_[i] - d, r = radii_[i];
     count += 1.0;
     s.area_fraction += M_PI * r * w;                                        // a_i = pi R_i w_i
-    s.pressure += (4.0 / 3.0) * q.composite_modulus * std::sqrt(r) * w * std::sqrt(w)  // Hertz, Eq. 4.4
-                  - 2.0 * M_PI * q.work_of_adhesion * r;                     // DMT pull, Eq. 4.10
+    s.pressure += (4.0 / 3.0) * q.composite_modulus * std::sqrt(r) * w * std::sqrt(w);  // Hertz, Eq. 4.4
+    s.adhesion += 2.0 * M_PI * q.work_of_adhesion * r;                                   // DMT pull, Eq. 4.10
     s.stiffness += 2.0 * q.composite_modulus * std::sqrt(r * w);           // dP_i/dw = 2 E* a_i
   }
   s.contact_density = count / q.map_area;
   s.area_fraction /= q.map_area;
-  s.pressure /= q.map_area;
+  s.adhesion /= q.map_area;
+  s.pressure = s.pressure / q.map_area - s.adhesion;
   s.stiffness /= q.map_area;
   return s;
 }

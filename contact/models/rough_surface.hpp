@@ -41,7 +41,8 @@ struct RoughSurfaceParameters {
 
 /// The law at one separation, per unit nominal area.
 struct RoughSurfaceState {
-  double pressure = 0.0;           // apparent pressure p (Pa, > 0 compressive)
+  double pressure = 0.0;           // apparent pressure p (Pa, > 0 compressive) = Hertz part - adhesion
+  double adhesion = 0.0;           // the DMT pull 2 pi W R per contacting asperity, per nominal area (Pa, >= 0)
   double area_fraction = 0.0;      // A_c / A_0
   double contact_density = 0.0;    // asperity contacts per nominal area N/A_0, 1/m^2
   double stiffness = 0.0;          // -dp/dd, Pa/m (Hertz part; >= 0), for the stable time step

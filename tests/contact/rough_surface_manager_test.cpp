@@ -98,6 +98,9 @@ TEST(RoughSurfaceManager, FlatsCarryTheDirectGwIntegralsTimesTheNominalArea) {
     worst_a = std::max(worst_a, err_a);
     worst_f = std::max(worst_f, err_f);
     EXPECT_NEAR(r.totals.nominal_area, A0, 1e-9 * A0);
+    const double pull = q.summit_density * 2 * M_PI * q.work_of_adhesion * q.summit_radius * gw::gw_integral(0.0, t) * A0;
+    EXPECT_NEAR(r.totals.adhesive_force, pull, 1e-5 * pull);  // the DMT part (Eq. 4.10) alone
+    EXPECT_NEAR(r.totals.compressive_force - r.totals.adhesive_force, r.totals.normal_force, 1e-12 * std::abs(r.totals.normal_force));
     EXPECT_NEAR(r.totals.asperity_contacts, q.summit_density * A0 * gw::gw_integral(0.0, t), 1e-5 * q.summit_density * A0);
     // Newton's third law and the sign: p > 0 pushes the slave up (+z) and the master down.
     EXPECT_NEAR(r.force_z_slave, p * A0, 0.005 * std::abs(p) * A0);
