@@ -5,7 +5,9 @@
 //   contact_tangential_force,contact_area,contact_nodes,
 // then the other energy terms (damping_dissipation, viscous_dissipation), contact_radius
 // (sqrt(area/pi)), contact_radius_max, contact_max_penetration, momentum_{x,y,z},
-// contact_radius_edge (where the gap changes sign along slave-face edges), then the requested
+// contact_radius_edge (where the gap changes sign along slave-face edges), the interface-model totals
+// (adhesive_force ... friction_power) and the rough-surface ones (real_contact_area, asperity_contacts,
+// apparent_pressure; contact/models/README.md), then the requested
 // node-set columns <set>_reaction_{x,y,z} and <set>_displacement_{x,y,z}. SI units throughout;
 // 17 significant digits so that runs can be compared to round-off. Flushed after every row.
 #pragma once
