@@ -159,13 +159,19 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(5.5, 4))
+        fig, (ax, ax_log) = plt.subplots(1, 2, figsize=(10, 4))
         n = [p["normal_force"] * 1e6 for p in points]
-        ax.plot(n, [p["friction_force"] * 1e6 for p in points], "o", label="FE, steady sliding")
+        f = [p["friction_force"] * 1e6 for p in points]
         x = [-f_adh * 1e6] + n
-        ax.plot(x, [mu * (v + f_adh * 1e6) for v in x], "-", label=f"F = mu (N + F_adh): mu = {mu:.3f}, F_adh = {f_adh * 1e6:.3g} uN")
-        ax.set_xlabel("normal load N (uN)")
-        ax.set_ylabel("friction force F (uN)")
+        for axis in (ax, ax_log):
+            axis.plot(n, f, "o", label="FE, steady sliding (= direct GW)")
+            axis.plot(x[1:] if axis is ax_log else x, [mu * (v + f_adh * 1e6) for v in (x[1:] if axis is ax_log else x)], "-",
+                      label=f"Eq. 2.2 fit: mu = {mu:.3f}, F_adh = {f_adh * 1e6:.3g} uN")
+            axis.plot(n, [p["adhesive_force"] * 1e6 for p in points], "s--", ms=3, label="adhesive force of the model")
+            axis.set_xlabel("normal load N (uN)")
+            axis.set_ylabel("force (uN)")
+        ax_log.set_xscale("log")
+        ax_log.set_yscale("log")
         ax.legend(fontsize=8)
         fig.tight_layout()
         fig.savefig(a.plot, dpi=120)
