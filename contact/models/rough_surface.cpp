@@ -22,15 +22,15 @@ inline double hermite_slope(double s, double f0, double f1, double m0, double m1
   return (6 * s2 - 6 * s) * f0 + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * f1 + (3 * s2 - 2 * s) * m1;
 }
 
-// The continuous law from F_0, F_1, F_3/2 and dF_3/2/dt at t = d / sigma_s.
-RoughSurfaceState continuous_state(const RoughSurfaceParameters& q, double f0, double f1, double f32, double df32) {
-  const double hertz_scale = (4.0 / 3.0) * q.composite_modulus * std::sqrt(q.summit_radius) * std::pow(q.sigma_s, 1.5);
+// The continuous law from F_0, F_1, F_3/2 and dF_3/2/dt at t = d / sigma_s, with the scales of
+// RoughSurfaceLaw::Scales (computed once: no pow or sqrt per call).
+RoughSurfaceState continuous_state(const RoughSurfaceLaw::Scales& c, double f0, double f1, double f32, double df32) {
   RoughSurfaceState s;
-  s.contact_density = q.summit_density * f0;
-  s.area_fraction = M_PI * q.summit_density * q.summit_radius * q.sigma_s * f1;
-  s.adhesion = q.summit_density * 2.0 * M_PI * q.work_of_adhesion * q.summit_radius * f0;
-  s.pressure = q.summit_density * hertz_scale * f32 - s.adhesion;
-  s.stiffness = -q.summit_density * hertz_scale * df32 / q.sigma_s;  // dt/dd = 1/sigma_s
+  s.contact_density = c.count * f0;
+  s.area_fraction = c.area * f1;
+  s.adhesion = c.adhesion * f0;
+  s.pressure = c.hertz * f32 - s.adhesion;
+  s.stiffness = -c.hertz * df32 * c.inverse_sigma;  // dt/dd = 1/sigma_s
   return s;
 }
 
@@ -60,6 +60,12 @@ RoughSurfaceLaw::RoughSurfaceLaw(RoughSurfaceParameters parameters) : parameters
   }
   if (!(q.summit_density > 0.0 && q.summit_radius > 0.0 && q.sigma_s > 0.0))
     throw std::invalid_argument("rough surface: summit density, summit radius and sigma_s must be positive");
+  scales_.count = q.summit_density;                                         // N/A_0 = eta F_0
+  scales_.area = M_PI * q.summit_density * q.summit_radius * q.sigma_s;     // A_c/A_0 = pi eta R sigma_s F_1
+  scales_.hertz = q.summit_density * (4.0 / 3.0) * q.composite_modulus * std::sqrt(q.summit_radius) *
+                  std::pow(q.sigma_s, 1.5);                                 // p = (4/3) eta E* R^1/2 sigma_s^3/2 F_3/2
+  scales_.adhesion = q.summit_density * 2.0 * M_PI * q.work_of_adhesion * q.summit_radius;  // - 2 pi W R eta F_0
+  scales_.inverse_sigma = 1.0 / q.sigma_s;
   const int count = static_cast<int>(std::lround((table_t_max - table_t_min) / table_spacing)) + 1;
   for (int k = 0; k < count; ++k) {
     const double t = table_t_min + k * table_spacing;
@@ -75,13 +81,13 @@ RoughSurfaceLaw::RoughSurfaceLaw(RoughSurfaceParameters parameters) : parameters
 
 RoughSurfaceState RoughSurfaceLaw::evaluate(double d) const {
   if (discrete()) return evaluate_direct(d);
-  const double t = d / parameters_.sigma_s;
+  const double t = d * scales_.inverse_sigma;
   if (t >= table_t_max) return {};  // F_0(6) = 1e-9: no contact
   const int last = static_cast<int>(f0_.size()) - 1;
   if (t <= table_t_min) {
     // Far below the table (8 sigma_s into the summits): continue each F_n along its end tangent.
     const double dt = t - table_t_min;
-    return continuous_state(parameters_, f0_[0] + df0_[0] * dt, f1_[0] + df1_[0] * dt, f32_[0] + df32_[0] * dt, df32_[0]);
+    return continuous_state(scales_, f0_[0] + df0_[0] * dt, f1_[0] + df1_[0] * dt, f32_[0] + df32_[0] * dt, df32_[0]);
   }
   const double x = (t - table_t_min) / table_spacing;
   const int k = std::min(static_cast<int>(x), last - 1);
@@ -90,14 +96,14 @@ RoughSurfaceState RoughSurfaceLaw::evaluate(double d) const {
     return hermite(s, f[k], f[k + 1], h * df[k], h * df[k + 1]);
   };
   const double df32 = hermite_slope(s, f32_[k], f32_[k + 1], h * df32_[k], h * df32_[k + 1]) / h;
-  return continuous_state(parameters_, at(f0_, df0_), at(f1_, df1_), at(f32_, df32_), df32);
+  return continuous_state(scales_, at(f0_, df0_), at(f1_, df1_), at(f32_, df32_), df32);
 }
 
 RoughSurfaceState RoughSurfaceLaw::evaluate_direct(double d) const {
   const auto& q = parameters_;
   if (!discrete()) {
     const double t = d / q.sigma_s;
-    return continuous_state(q, gw::gw_integral(0.0, t), gw::gw_integral(1.0, t), gw::gw_integral(1.5, t),
+    return continuous_state(scales_, gw::gw_integral(0.0, t), gw::gw_integral(1.0, t), gw::gw_integral(1.5, t),
                             -1.5 * gw::gw_integral(0.5, t));
   }
   RoughSurfaceState s;

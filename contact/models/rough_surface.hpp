@@ -65,12 +65,18 @@ class RoughSurfaceLaw {
   double contact_separation() const { return contact_separation_; }
   bool discrete() const { return !heights_.empty(); }
   const RoughSurfaceParameters& parameters() const { return parameters_; }
+  /// Dimensional factors of the continuous law: N/A_0 = count F_0, A_c/A_0 = area F_1,
+  /// p = hertz F_3/2 - adhesion F_0 (Pa), t = d inverse_sigma.
+  struct Scales {
+    double count = 0.0, area = 0.0, hertz = 0.0, adhesion = 0.0, inverse_sigma = 0.0;
+  };
   /// Nondimensional table range and spacing of the continuous law (t = d / sigma_s).
   static constexpr double table_t_min = -8.0, table_t_max = 6.0, table_spacing = 0.02;
 
  private:
   RoughSurfaceParameters parameters_;
   double contact_separation_ = 0.0;
+  Scales scales_;
   // continuous: values and t-derivatives of F_0, F_1, F_3/2 at t_k = t_min + k h
   std::vector<double> f0_, f1_, f32_, df0_, df1_, df32_;
   // discrete: heights above the mean summit height (descending) and the matching radii
