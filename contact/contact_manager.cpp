@@ -66,6 +66,8 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
       p.model = it.model;
       p.adhesion = it.adhesion;
       p.junction = it.junction;
+      p.rough = it.rough;
+      p.mean_plane_offset = it.mean_plane_offset;
       p.primary = k == 0;
       p.x_at_search.resize(3 * (surfaces_[p.slave].nodes.size() + surfaces_[p.master].nodes.size()));
       if (p.model == InterfaceModel::junction) {
@@ -79,7 +81,7 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
         p.contact_share.resize(n);
       }
       if (it.enforcement == Enforcement::mortar) {
-        if (it.model == InterfaceModel::junction)
+        if (it.model == InterfaceModel::junction || it.model == InterfaceModel::rough_surface)
           throw std::invalid_argument("contact interaction '" + it.name + "': the mortar enforcement supports models frictionless and adhesion");
         p.mortar = std::make_unique<MortarEnforcement>(surfaces_[p.slave]);
         p.penalty_per_area = mortar_penalty_per_area(surfaces_[p.slave], surfaces_[p.master], mass, p.penalty_scale, dt_ref);
@@ -209,6 +211,94 @@ void ContactManager::apply_interface(Pass& p, int k, int face, const double* sha
     for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= shape[a] * f;
     traction_[3 * node + i] += f / area;
   }
+}
+
+// Junction shear tau A_I on a slave node in contact (physics.md 7.1-7.2), added to f (force on the
+// slave node); v_t is the tangential part of v_slave - sum_a N_a v_a (relative to the master point).
+void ContactManager::apply_shear(const Pass& p, const JunctionLaw& law, int node, const int* fn, const double* shape,
+                                 const double* normal, double area, const double* v, double* f, Accumulator& acc) {
+  double vr[3] = {0.0, 0.0, 0.0};
+  if (v) {
+    for (int i = 0; i < 3; ++i) {
+      vr[i] = v[3 * node + i];
+      for (int a = 0; a < 4; ++a) vr[i] -= shape[a] * v[3 * fn[a] + i];
+    }
+  }
+  const double vn = vr[0] * normal[0] + vr[1] * normal[1] + vr[2] * normal[2];
+  double vt[3], tau[3];
+  for (int i = 0; i < 3; ++i) vt[i] = vr[i] - vn * normal[i];
+  junction_traction(vt, law, tau);
+  const double sign = p.primary ? 1.0 : -1.0;
+  double power = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double ft = p.factor * tau[i] * area;
+    f[i] += ft;
+    acc.friction[i] += sign * ft;
+    power += ft * vt[i];
+  }
+  acc.totals.friction_power += std::abs(power);
+  acc.totals.junction_capacity += p.factor * law.strength * area;
+}
+
+// Rough-surface (GW) law on slave node k over master face `face` at gap g (models/rough_surface.hpp):
+// d = g + offset; normal force p(d) A_I along the master's outward normal (p > 0 pushes apart), the
+// junction shear with tau* (A_c/A_0)(d), and the node's critical step (normal spring, shear damper).
+void ContactManager::apply_rough_surface(Pass& p, int k, int face, const double* shape, const double* normal,
+                                         double gap, const double* v, double* force, Accumulator& acc) {
+  const RoughSurfaceLaw& law = *p.rough;
+  const double d = gap + p.mean_plane_offset;
+  if (d >= law.contact_separation()) return;
+  const ContactSurface& slave = surfaces_[p.slave];
+  const int node = slave.nodes[k];
+  const int* fn = &surfaces_[p.master].face_nodes[4 * face];
+  const double area = slave.node_area[k];
+  const RoughSurfaceState s = law.evaluate(d);
+  ContactTotals& totals = acc.totals;
+  const double fn_mag = p.factor * s.pressure * area;
+  double f[3];
+  for (int i = 0; i < 3; ++i) f[i] = fn_mag * normal[i];
+  // Totals split like the other models: the Hertz (repulsive) part and the DMT pull.
+  const double pull = p.factor * s.adhesion * area;
+  totals.compressive_force += fn_mag + pull;
+  totals.adhesive_force += pull;
+  totals.nominal_area += p.factor * area;
+  totals.real_area += p.factor * area * s.area_fraction;
+  totals.asperity_contacts += p.factor * area * s.contact_density;
+  totals.max_penetration = std::max(totals.max_penetration, -gap);
+  if (s.contact_density > 0.0) {
+    status_[node] = 1.0;
+    totals.area += p.factor * area;
+    if (p.primary) ++totals.nodes;
+    if (has_axis_) totals.radius_max = std::max(totals.radius_max, axis_distance(acc.x + 3 * node, axis_point_, axis_dir_));
+  }
+  if (p.junction.strength > 0.0 && s.area_fraction > 0.0) {
+    JunctionLaw shear = p.junction;
+    shear.strength *= s.area_fraction;  // tau* A_c / A_0: junction friction on the real area
+    apply_shear(p, shear, node, fn, shape, normal, area, v, f, acc);
+  }
+  for (int i = 0; i < 3; ++i) {
+    force[3 * node + i] += f[i];
+    for (int a = 0; a < 4; ++a) force[3 * fn[a] + i] -= shape[a] * f[i];
+    traction_[3 * node + i] += f[i] / area;
+  }
+  // Explicit stability between the node and the face point (m_eff as for the penalty): the normal
+  // spring k_I = A_I dp/dd needs dt < 2 sqrt(m_eff / k_I), the shear damper c_I = tau* (A_c/A_0) A_I / v_ref
+  // (its slope at zero slip, physics.md 7.3) needs dt < 2 m_eff / c_I.
+  const double k_spring = p.factor * s.stiffness * area;
+  const double c_damper = p.factor * p.junction.strength * s.area_fraction * area / p.junction.reference_speed;
+  if (k_spring > 0.0 || c_damper > 0.0) {
+    double inv_mM = 0.0;
+    for (int a = 0; a < 4; ++a) inv_mM += shape[a] * shape[a] / mass_[fn[a]];
+    const double ms = mass_[node], mM = 1.0 / inv_mM, m_eff = ms * mM / (ms + mM);
+    if (k_spring > 0.0) p.stable_dt = std::min(p.stable_dt, 2.0 * std::sqrt(m_eff / k_spring));
+    if (c_damper > 0.0) p.stable_dt = std::min(p.stable_dt, 2.0 * m_eff / c_damper);
+  }
+}
+
+double ContactManager::stable_time_step() const {
+  double dt = INFINITY;
+  for (const auto& p : passes_) dt = std::min(dt, p.stable_dt);
+  return dt;
 }
 
 // In-contact part of each slave node's tributary area, int over {g <= g_j} of N_I dA: the nodal
@@ -359,6 +449,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
     const ContactSurface& slave = surfaces_[p.slave];
     const ContactSurface& master = surfaces_[p.master];
     p.gap.assign(slave.nodes.size(), NAN);
+    p.stable_dt = INFINITY;
     if (p.mortar) {
       apply_mortar(p, x, force, totals);
       if (has_axis_ && p.primary) totals.radius_edge = edge_radius(p, x);
@@ -372,6 +463,12 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, xs, p.last_face[k]);
       p.last_face[k] = best.face >= 0 && best.proj.interior ? best.face : -1;
       if (best.face >= 0 && best.proj.interior) p.gap[k] = best.proj.gap;
+      if (p.model == InterfaceModel::rough_surface) {
+        // The GW law is the whole normal contact (no penalty); a node deeper than the margin is the far side.
+        if (best.face >= 0 && best.proj.interior && -best.proj.gap <= p.margin)
+          apply_rough_surface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, v, force, acc);
+        continue;
+      }
       if (p.model != InterfaceModel::frictionless && best.face >= 0 && best.proj.interior && best.proj.gap >= 0.0) {
         apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, force, acc);
         continue;

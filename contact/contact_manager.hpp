@@ -18,6 +18,10 @@
 //     sigma_s(g + z0) A_I on slave nodes with 0 <= g <= g_c (nodal tributary areas A_I, shape-function
 //     reactions on the master); `junction` adds to it the shear tau A_I on slave nodes in contact
 //     (g <= g_j, penalty contact included), tau opposing the relative tangential velocity;
+//     `rough_surface` replaces the penalty by the homogenized GW law (models/rough_surface.hpp) at the
+//     mean-plane separation d = g + mean_plane_offset: normal traction p(d) A_I, shear tau* (A_c/A_0) A_I
+//     by the junction law, and stable-time-step bounds per node: 2 sqrt(m_eff / (A_I dp/dd)) for the
+//     normal spring, 2 m_eff v_ref / (tau* (A_c/A_0) A_I) for the shear damper.
 //  5. junction shear, after the normal forces of the pass, on the in-contact part of each slave
 //     node's tributary area (the gap interpolated bilinearly over each slave face and sampled 8 x 8:
 //     int over {g <= g_j} of N_I dA, so the area does not jump by a ring of nodes as rings enter
@@ -30,6 +34,7 @@
 // contact/mortar/ (weighted gaps, consistent nodal loads, adhesion at face integration points).
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,12 +42,13 @@
 #include "contact/models/adhesion_lj.hpp"
 #include "contact/models/junction_shear.hpp"
 #include "contact/mortar/mortar_enforcement.hpp"
+#include "contact/models/rough_surface.hpp"
 #include "contact/search/bucket_search.hpp"
 #include "contact/surface.hpp"
 
 namespace tribex::contact {
 
-enum class InterfaceModel { frictionless, adhesion, junction };
+enum class InterfaceModel { frictionless, adhesion, junction, rough_surface };
 
 /// node_to_face: penalty on slave nodes projected on master faces (adhesion with nodal tributary
 /// areas); mortar: segment-to-segment integration (contact/mortar/; models frictionless, adhesion).
@@ -58,8 +64,10 @@ struct InteractionSettings {
   double research_fraction = 0.25; // re-search when a node moved this fraction of the margin
   InterfaceModel model = InterfaceModel::frictionless;
   AdhesionLaw adhesion;            // adhesion and junction models; the margin must be >= g_c
-  JunctionLaw junction;            // junction model
+  JunctionLaw junction;            // junction model; rough_surface: tau* and v_ref of the shear
   Enforcement enforcement = Enforcement::node_to_face;
+  std::shared_ptr<const RoughSurfaceLaw> rough;  // rough_surface model (shared by its two passes)
+  double mean_plane_offset = 0.0;  // rough_surface: d = gap + offset, m
 };
 
 // Forces are those acting on the slave surfaces (for a symmetric interaction the second pass's
@@ -79,6 +87,11 @@ struct ContactTotals {
   double radius_edge = 0.0;        // mean axis distance of the gap sign changes on slave-face edges, m
   double radius_pressure_fit = 0.0;  // a of the elliptic pressure p^2 = p0^2 (1 - r^2/a^2) fitted to the nodal pressures, m
   int searches = 0;                // broad-phase builds this step
+  // rough_surface model (slave side, partition factor applied):
+  double real_area = 0.0;          // sum A_I (A_c/A_0)(d_I), m^2
+  double asperity_contacts = 0.0;  // sum A_I (N/A_0)(d_I): asperities in contact
+  double nominal_area = 0.0;       // sum A_I over nodes with d_I below the contact separation, m^2
+  double apparent_pressure() const { return nominal_area > 0.0 ? normal_force / nominal_area : 0.0; }
 };
 
 class ContactManager {
@@ -103,6 +116,9 @@ class ContactManager {
   const std::vector<int>& surface_nodes() const { return all_nodes_; }
   const std::vector<ContactSurface>& surfaces() const { return surfaces_; }
   long total_searches() const { return total_searches_; }
+  /// Critical time step of the rough-surface contact at the last compute_forces: min over nodes of
+  /// 2 sqrt(m_eff / k_I) (normal spring A_I dp/dd) and 2 m_eff / c_I (shear damper); INFINITY without one.
+  double stable_time_step() const;
 
   /// Initial gaps (pre-flight report): per interaction pass, the most penetrating slave nodes.
   struct Overlap {
@@ -122,6 +138,9 @@ class ContactManager {
     InterfaceModel model;
     AdhesionLaw adhesion;
     JunctionLaw junction;
+    std::shared_ptr<const RoughSurfaceLaw> rough;
+    double mean_plane_offset = 0.0;
+    double stable_dt = INFINITY;  // rough_surface: critical step of the last compute_forces
     std::vector<int> candidate_offset, candidates;
     std::vector<double> x_at_search;  // [slave node + master node][3] positions at the last search
     bool searched = false;
@@ -148,6 +167,10 @@ class ContactManager {
   void apply_interface(Pass& p, int k, int face, const double* shape, const double* normal, double gap,
                        double* force, Accumulator& acc);
   void apply_junction(Pass& p, const double* v, const double* other_force, double dt, double* force, Accumulator& acc);
+  void apply_rough_surface(Pass& p, int k, int face, const double* shape, const double* normal, double gap,
+                           const double* v, double* force, Accumulator& acc);
+  void apply_shear(const Pass& p, const JunctionLaw& law, int node, const int* face_nodes, const double* shape,
+                   const double* normal, double area, const double* v, double* f, Accumulator& acc);
 
   std::vector<ContactSurface> surfaces_;
   std::vector<Pass> passes_;

@@ -208,7 +208,7 @@ struct ContactSurfaceSpec {
   SourceLocation where;
 };
 
-enum class InteractionModel { frictionless, adhesion, junction };
+enum class InteractionModel { frictionless, adhesion, junction, rough_surface };
 
 /// `enforcement = node to face | mortar` (contact/README.md: when each is adequate).
 enum class InteractionEnforcement { node_to_face, mortar };
@@ -230,6 +230,16 @@ struct InteractionSpec {
   double junction_strength = 0.0;              // tau*, Pa
   std::optional<double> junction_reference_speed;  // v_ref, m/s; default 0.1 m/s (raised to stability)
   std::optional<double> junction_gap_tolerance;    // g_j, m; default 0.05 z0
+  // model = rough surface (contact/models/rough_surface.hpp): continuous (the four summit keys) or
+  // discrete (`summit file` + `summit map area`); W and tau* optional (0: no adhesion, no friction).
+  double summit_density = 0.0;            // eta, 1/m^2
+  double summit_radius = 0.0;             // R_s, m
+  double summit_height_deviation = 0.0;   // sigma_s, m
+  double composite_modulus = 0.0;         // E*, Pa
+  std::string summit_file;                // resolved against the deck's folder; empty: continuous
+  SourceLocation summit_file_where;
+  double summit_map_area = 0.0;           // m^2
+  double mean_plane_offset = 0.0;         // m
   SourceLocation where;
 };
 

@@ -461,9 +461,9 @@ class Builder {
       interface_model(*it, i);
       if (word(*it, "enforcement") == "mortar") {
         i.enforcement = InteractionEnforcement::mortar;
-        if (i.model == InteractionModel::junction)
+        if (i.model == InteractionModel::junction || i.model == InteractionModel::rough_surface)
           error(where(*it, "enforcement"), *it,
-                "'enforcement = mortar' supports 'model = frictionless' and 'model = adhesion'; use 'enforcement = node to face' for the junction model");
+                "'enforcement = mortar' supports 'model = frictionless' and 'model = adhesion'; use 'enforcement = node to face' for the junction and rough surface models");
       }
       spec.interactions.push_back(i);
     }
@@ -476,7 +476,9 @@ class Builder {
     const std::string m = word(it, "model");
     i.model = m == "adhesion" ? InteractionModel::adhesion
               : m == "junction" ? InteractionModel::junction
+              : m == "rough surface" ? InteractionModel::rough_surface
                                 : InteractionModel::frictionless;
+    if (rough_surface_model(it, i)) return;
     const bool adhesive = i.model != InteractionModel::frictionless;
     const bool junction = i.model == InteractionModel::junction;
     const char* adhesion_keys[] = {"work of adhesion", "equilibrium separation", "adhesion cutoff"};
@@ -502,6 +504,51 @@ class Builder {
     i.junction_strength = real(it, "junction strength");
     i.junction_reference_speed = optional_real(it, "junction reference speed");
     i.junction_gap_tolerance = optional_real(it, "junction gap tolerance");
+  }
+
+  // `model = rough surface` (contact/models/rough_surface.hpp): continuous Gaussian summits (density,
+  // radius, sigma_s) or a discrete summit file with its map area, E* always; W, tau*, v_ref optional.
+  // Returns false for the other models after rejecting the rough-surface keys there.
+  bool rough_surface_model(const Scope& it, InteractionSpec& i) {
+    const char* continuous_keys[] = {"summit density", "summit radius", "summit height deviation"};
+    if (i.model != InteractionModel::rough_surface) {
+      for (const char* k : {"summit density", "summit radius", "summit height deviation", "summit file", "summit map area",
+                            "composite modulus", "mean plane offset"})
+        if (it.find(k)) error(where(it, k), it, std::string("'") + k + "' applies to 'model = rough surface'; set the model or remove the key");
+      return false;
+    }
+    for (const char* k : {"equilibrium separation", "adhesion cutoff", "junction gap tolerance"})
+      if (it.find(k))
+        error(where(it, k), it, std::string("'") + k + "' does not apply to 'model = rough surface' (DMT adhesion per asperity needs only 'work of adhesion'); remove it");
+    if (!it.find("composite modulus"))
+      error(where(it, "model"), it, "'model = rough surface' needs 'composite modulus' (E* of the asperity contacts, Pa); add it to the interaction");
+    const bool discrete = it.find("summit file") != nullptr;
+    if (discrete) {
+      for (const char* k : continuous_keys)
+        if (it.find(k)) error(where(it, k), it, std::string("'") + k + "' is taken from the summit file; remove it or remove 'summit file'");
+      if (!it.find("summit map area"))
+        error(where(it, "summit file"), it, "'summit file' needs 'summit map area' (area of the map the summits were found on, m^2); add it");
+      std::filesystem::path p(word(it, "summit file"));
+      if (p.is_relative()) p = std::filesystem::path(it.find("summit file")->where.file).parent_path() / p;
+      i.summit_file = p.lexically_normal().string();
+      i.summit_file_where = where(it, "summit file");
+      i.summit_map_area = real(it, "summit map area");
+    } else {
+      if (it.find("summit map area")) error(where(it, "summit map area"), it, "'summit map area' belongs to 'summit file'; add the file or remove the key");
+      for (const char* k : continuous_keys)
+        if (!it.find(k))
+          error(where(it, "model"), it, std::string("'model = rough surface' needs '") + k +
+                                            "' (from `tribex surface stats`) or a 'summit file'; add it to the interaction");
+      i.summit_density = real(it, "summit density");
+      i.summit_radius = real(it, "summit radius");
+      i.summit_height_deviation = real(it, "summit height deviation");
+    }
+    i.composite_modulus = real(it, "composite modulus");
+    i.mean_plane_offset = real(it, "mean plane offset", 0.0);
+    i.work_of_adhesion = real(it, "work of adhesion", 0.0);
+    i.junction_strength = real(it, "junction strength", 0.0);
+    i.junction_reference_speed = optional_real(it, "junction reference speed");
+    return true;
   }
 
   template <class Output>

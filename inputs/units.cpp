@@ -91,6 +91,7 @@ std::string Dimension::str() const {
   if (*this == dim::energy_per_area) return "J/m^2";
   if (*this == dim::density) return "kg/m^3";
   if (*this == dim::mass) return "kg";
+  if (*this == dim::per_area) return "1/m^2";
   std::ostringstream s;
   s << "kg^" << mass << " m^" << length << " s^" << time;
   return s.str();

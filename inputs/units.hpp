@@ -36,6 +36,7 @@ inline constexpr Dimension energy{1, 2, -2};
 inline constexpr Dimension energy_per_area{1, 0, -2};  // J/m^2 = N/m
 inline constexpr Dimension stiffness{1, 0, -2};        // N/m, same as energy per area
 inline constexpr Dimension density{1, -3, 0};
+inline constexpr Dimension per_area{0, -2, 0};  // 1/m^2 (summit density)
 }  // namespace dim
 
 struct Quantity {

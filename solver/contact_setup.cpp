@@ -105,7 +105,9 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     }
     s.penalty_scale = spec.penalty_scale_factor;
     s.search_margin = spec.search_margin.value_or(0.0);
-    if (it.model != inputs::InteractionModel::frictionless)
+    if (it.model == inputs::InteractionModel::rough_surface)
+      rough_surface_model(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
+    else if (it.model != inputs::InteractionModel::frictionless)
       interface_model(it, spec, surfaces[static_cast<std::size_t>(s.slave)], surfaces[static_cast<std::size_t>(s.master)],
                       model.mass, dt, s, report);
     interactions.push_back(s);

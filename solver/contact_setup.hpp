@@ -20,4 +20,10 @@ struct Model;
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
                                                        std::vector<std::string>* report);
 
+/// `model = rough surface` (solver/rough_surface_setup.cpp): builds the GW law (reading a summit
+/// file), the shear law and the search margin; each choice goes to the run log.
+void rough_surface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
+                         const contact::ContactSurface& master, contact::InteractionSettings& s,
+                         std::vector<std::string>* report);
+
 }  // namespace tribex::solver

@@ -189,7 +189,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                              std::sqrt(C.area / M_PI), C.radius_max, C.max_penetration, integrator.momentum()[0],
                              integrator.momentum()[1], integrator.momentum()[2], C.radius_edge, C.adhesive_force,
                              C.compressive_force, C.tangential_force, C.junction_capacity, C.adhesion_energy,
-                             C.friction_power, C.radius_pressure_fit});
+                             C.friction_power, C.radius_pressure_fit, C.real_area, C.asperity_contacts,
+                             C.apparent_pressure()});
       for (const auto* set : reaction_sets) {
         double r[3] = {0, 0, 0};
         for (int node : *set)

@@ -52,7 +52,10 @@ double CentralDifference::choose_dt() {
       throw NumericalFailure("element " + std::to_string(stable_.inverted_element + 1) + " inverted (non-positive volume)" +
                              where_and_when(step_, time_));
   }
-  double dt = std::min(scale_factor_ * stable_.dt, max_dt_);
+  // Rough-surface contact springs A_I dp/dd bound the step too (none for the other models: the
+  // penalty is scaled to the step); evaluated at the last contact force computation.
+  const double contact_dt = model_.contact ? model_.contact->stable_time_step() : INFINITY;
+  double dt = std::min(scale_factor_ * std::min(stable_.dt, contact_dt), max_dt_);
   // Land exactly on the termination time instead of overshooting it.
   if (time_ + dt > end_time_) dt = end_time_ - time_;
   return dt;

@@ -20,7 +20,10 @@ const std::vector<std::string>& HistoryWriter::standard_columns() {
       "adhesive_force", "compressive_force", "friction_force", "tau_star_times_area", "adhesion_energy",
       "friction_power",
       // elliptic-pressure fit of the contact radius (contact/contact_manager.cpp pressure_fit_radius), m
-      "contact_radius_pressure_fit"};
+      "contact_radius_pressure_fit",
+      // rough-surface (GW) model: real contact area A_c, m^2; asperities in contact; normal force over
+      // the nominal area within reach of the law, Pa
+      "real_contact_area", "asperity_contacts", "apparent_pressure"};
   return columns;
 }
 

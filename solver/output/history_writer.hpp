@@ -7,7 +7,8 @@
 // (sqrt(area/pi)), contact_radius_max, contact_max_penetration, momentum_{x,y,z},
 // contact_radius_edge (where the gap changes sign along slave-face edges), the interface-model
 // columns, contact_radius_pressure_fit (zero of the least-squares line p^2 = alpha - beta r^2 through
-// the contacting nodes' pressures: the radius of an elliptic, Hertz-like, pressure), then the requested
+// the contacting nodes' pressures: the radius of an elliptic, Hertz-like, pressure), the rough-surface
+// totals (real_contact_area, asperity_contacts, apparent_pressure; contact/models/README.md), then the requested
 // node-set columns <set>_reaction_{x,y,z} and <set>_displacement_{x,y,z}. SI units throughout;
 // 17 significant digits so that runs can be compared to round-off. Flushed after every row.
 #pragma once

@@ -116,5 +116,27 @@ TEST(StaticFriction, NormalForceColumnAndStiffnessUncertaintyThroughTheCommand) 
   EXPECT_NEAR(mu_sigma, 0.0031, 0.0002);
 }
 
+// Reduced points (normal_force and friction_force, no position): the Eq. 2.2 line through them as
+// given, no --stiffness; exact data F = 0.3 (N + 0.2 uN) return mu = 0.3 and F_adh = 0.2 uN.
+TEST(StaticFriction, ReducedPointsAreFittedDirectly) {
+  const auto dir = std::filesystem::temp_directory_path() / "tribex_friction_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "points.csv").string();
+  std::vector<double> fn = {1e-6, 2e-6, 5e-6, 9e-6}, fs;  // SI, written in uN
+  for (double n : fn) fs.push_back(0.3 * (n + 0.2e-6));
+  tools::CsvRecord(path, {{"normal_force", {fn, "uN"}}, {"friction_force", {fs, "uN"}}}).write(path);
+  testing::internal::CaptureStdout();
+  EXPECT_EQ(cli::friction_test_command({"static", path, "--json"}), 0);
+  const std::string out = testing::internal::GetCapturedStdout();
+  const auto value = [&](const std::string& key) {
+    const auto at = out.find("\"" + key + "\": {\"value\": ");
+    EXPECT_NE(at, std::string::npos) << key << " in " << out;
+    return at == std::string::npos ? NAN : std::stod(out.substr(at + key.size() + 13));
+  };
+  EXPECT_NEAR(value("mu_s"), 0.3, 1e-9);
+  EXPECT_NEAR(value("adhesion_force"), 0.2e-6, 1e-15);
+  EXPECT_NEAR(value("slip_events"), 4.0, 0.0);
+}
+
 }  // namespace
 }  // namespace tribex::friction_test

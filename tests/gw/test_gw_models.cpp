@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tools/gw/gw_integrals.hpp"
-#include "tools/gw/gw_models.hpp"
+#include "contact/rough/gw_integrals.hpp"
+#include "contact/rough/gw_models.hpp"
 
 using namespace tribex::gw;
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "tools/gw/gw_integrals.hpp"
+#include "contact/rough/gw_integrals.hpp"
 #include "tools/surface/mccool.hpp"
 #include "tools/surface/summit_contact.hpp"
 

@@ -8,7 +8,7 @@
 
 #include "mesh/afm/preprocess.hpp"
 #include "synthetic_surface.hpp"
-#include "tools/gw/gw_integrals.hpp"
+#include "contact/rough/gw_integrals.hpp"
 #include "tools/surface/spectral_moments.hpp"
 
 using namespace tribex;

@@ -53,6 +53,8 @@ const char* static_usage =
     "Slip events are jumps larger than --min-jump toward the spring zero X0. Before each jump the\n"
     "spring force F_s = K |x - X0| balances static friction at F_N = eps0 A V^2/(2 G^2) + M g - KZ Z\n"
     "(Eq. 2.3; a normal_force column is taken as F_N). Fits F_s = mu_s F_N + mu_s F_adh (Eq. 2.2).\n"
+    "A FILE with normal_force and friction_force columns (no position) is a list of reduced points\n"
+    "(e.g. steady sliding per load): the line is fitted through them directly; --stiffness is not needed.\n"
     "--foot-area reports the adhesion per area.\n";
 
 const char* dynamic_usage =
@@ -219,13 +221,19 @@ int static_friction(const std::vector<std::string>& argv) {
   const std::string file = a.positional(0, "FILE");
   a.finish();
   const std::string cmd = "tribex friction-test static";
-  if (!stiffness || *stiffness <= 0) throw BadInput(cmd + ": --stiffness K (N/m, > 0) is required: the load-spring constant");
   if (min_jump <= 0) throw BadInput(cmd + ": --min-jump must be > 0");
 
   const tools::CsvRecord rec = tools::CsvRecord::read(file);
-  const auto& x = rec.column("position", dim::length);
+  // Points already reduced (normal_force and friction_force columns, e.g. one steady-sliding FE run per
+  // load, inputs/examples/clamp_friction): the Eq. 2.2 line through them, no slip detection.
+  const bool points = rec.has("friction_force") && rec.has("normal_force") && !rec.has("position");
+  if (!points && (!stiffness || *stiffness <= 0))
+    throw BadInput(cmd + ": --stiffness K (N/m, > 0) is required: the load-spring constant");
+  const std::vector<double> x = points ? std::vector<double>(rec.size(), 0.0) : rec.column("position", dim::length);
   std::vector<double> fn(rec.size());
-  if (rec.has("normal_force")) {
+  if (points) {
+    fn = rec.column("normal_force", dim::force);
+  } else if (rec.has("normal_force")) {
     fn = rec.column("normal_force", dim::force);
   } else if (rec.has("voltage")) {
     if (!gap || !area || *gap <= 0 || *area <= 0)
@@ -238,10 +246,17 @@ int static_friction(const std::vector<std::string>& argv) {
     rec.column("voltage", dim::none);  // throws the missing-column message
   }
   if (rec.has("time")) rec.require_increasing("time");
-  rec.require_rows(4, "for a static friction ramp");
-  StaticFit f = fit_static(detect_slips(x, fn, *stiffness, x_zero, min_jump), file, min_jump);
+  std::vector<SlipEvent> events;
+  if (points) {
+    const auto& fs = rec.column("friction_force", dim::force);
+    for (std::size_t i = 0; i < fs.size(); ++i) events.push_back({i, 0.0, 0.0, fn[i], 0.0, fs[i]});
+  } else {
+    rec.require_rows(4, "for a static friction ramp");
+    events = detect_slips(x, fn, *stiffness, x_zero, min_jump);
+  }
+  StaticFit f = fit_static(std::move(events), file, min_jump);
   // The spring constant scales every F_s: its relative error adds to mu_s (F_adh = intercept/slope is free of it).
-  const double mu_sigma = std::hypot(f.mu_s_sigma, f.mu_s * stiffness_sigma / *stiffness);
+  const double mu_sigma = points ? f.mu_s_sigma : std::hypot(f.mu_s_sigma, f.mu_s * stiffness_sigma / *stiffness);
   tools::FitReport r;
   r.command = "static";
   r.text.push_back({"file", file});

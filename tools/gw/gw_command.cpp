@@ -9,8 +9,8 @@
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
 #include "tools/common/text_file.hpp"
-#include "tools/gw/gw_integrals.hpp"
-#include "tools/gw/gw_models.hpp"
+#include "contact/rough/gw_integrals.hpp"
+#include "contact/rough/gw_models.hpp"
 
 namespace tribex::cli {
 namespace {

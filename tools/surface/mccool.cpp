@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "tools/gw/gw_integrals.hpp"
+#include "contact/rough/gw_integrals.hpp"
 
 namespace tribex::surface {
 

@@ -35,6 +35,8 @@ const char* stats_usage =
     "  --median            3x3 median filter after resampling\n"
     "  --smooth            3x3 [1 2 1] weighted smoothing after the median filter\n"
     "  --json              JSON instead of the text table\n"
+    "  --summits FILE.csv  write the summits found (height_m,radius_m; positive curvature only) for a\n"
+    "                      rough-surface contact interaction's 'summit file' (its 'summit map area' is printed)\n"
     "Steps: read, crop, level (least-squares plane), resample, median, smooth, then the moments.\n";
 
 const char* mccool_usage =
@@ -92,6 +94,24 @@ int channel_option(Args& a, const std::string& name) {
   return static_cast<int>(c);
 }
 
+// `--summits FILE.csv`: the discrete population of the rough-surface contact model
+// (contact/models/rough_surface.hpp: `summit file` + `summit map area`), one summit per line.
+void write_summits(const std::string& path, const mesh::afm::HeightMap& map, const std::string& source) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw BadInput("tribex surface stats: cannot write --summits file '" + path + "'");
+  std::size_t count = 0;
+  std::fprintf(f, "# summits of %s (8-neighbour maxima, positive curvature), map area %.9g m^2\nheight_m,radius_m\n",
+               source.c_str(), map.size_x() * map.size_y());
+  for (const auto& s : surface::find_summits(map))
+    if (s.curvature > 0.0) {
+      std::fprintf(f, "%.9g,%.9g\n", s.height, 1.0 / s.curvature);
+      ++count;
+    }
+  std::fclose(f);
+  std::fprintf(stderr, "summits: %zu written to %s; summit map area = %.9g m^2\n", count, path.c_str(),
+               map.size_x() * map.size_y());
+}
+
 int stats(const std::vector<std::string>& argv) {
   Args a(argv, "tribex surface stats", stats_usage, {"--json", "--median", "--smooth"});
   if (a.help_requested()) { std::fputs(stats_usage, stdout); return tools::exit_ok; }
@@ -102,8 +122,10 @@ int stats(const std::vector<std::string>& argv) {
   bool median = false, smooth = false;
   add_preprocess_options(a, window, resample, median, smooth);
   const bool json = a.flag("--json");
+  const auto summits_csv = a.text("--summits");
   a.finish();
   const Prepared p = prepare(file, channel, window, resample, median, smooth);
+  if (summits_csv) write_summits(*summits_csv, p.map, file);
   using surface::Direction;
   const auto mx = surface::profile_moments(p.map, Direction::x), my = surface::profile_moments(p.map, Direction::y);
   const auto mi = surface::isotropic_moments(p.map);

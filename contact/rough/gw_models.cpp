@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "tools/gw/gw_models.hpp"
+#include "contact/rough/gw_models.hpp"
 
 #include <cmath>
 #include <random>
 #include <stdexcept>
 
-#include "tools/gw/gw_integrals.hpp"
+#include "contact/rough/gw_integrals.hpp"
 
 namespace tribex::gw {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "tools/gw/gw_integrals.hpp"
+#include "contact/rough/gw_integrals.hpp"
 
 #include <array>
 #include <cmath>

@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Rough-surface model with a discrete summit population (issue 10 acceptance, few asperities): the FE
+run's load-area curve against a direct sum over the summits of di3_window_summits.csv at the
+mean-plane separation read back from the run, within 1 %.
+
+usage: compare_discrete.py HISTORY.csv [--plot OUT.png]
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+E_STAR, W = 84.1e9, 0.05                      # Pa, J/m^2 (rough_flats_discrete.i)
+OFFSET = 10e-9                                # mean plane offset, m
+MAP_AREA = 6.10351562e-13                     # summit map area, m^2
+A0 = 2e-6 * 2e-6                              # the upper block's face, m^2
+PRESS = (0.0, 150e-9)                         # s, press and hold
+TOL = 0.01
+
+
+def summits():
+    rows = [l for l in open(os.path.join(HERE, "di3_window_summits.csv")) if l.strip() and not l.startswith("#")][1:]
+    pairs = [tuple(float(v) for v in l.split(",")) for l in rows]
+    mean = sum(h for h, _ in pairs) / len(pairs)
+    return [(h - mean, r) for h, r in pairs]   # heights from their mean, as the model measures d
+
+
+def direct_sum(pop, d):
+    """Load (Hertz minus the DMT pull 2 pi W R, Eqs. 4.4, 4.10) and real area over the summits touching at d."""
+    load = area = 0.0
+    count = 0
+    for z, r in pop:
+        w = z - d
+        if w <= 0:
+            continue
+        load += (4.0 / 3.0) * E_STAR * math.sqrt(r) * w ** 1.5 - 2.0 * math.pi * W * r
+        area += math.pi * r * w
+        count += 1
+    scale = A0 / MAP_AREA
+    return load * scale, area * scale, count
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("history")
+    ap.add_argument("--plot")
+    a = ap.parse_args()
+    pop = summits()
+    with open(a.history) as f:
+        rows = [r for r in csv.DictReader(f) if PRESS[0] <= float(r["time"]) <= PRESS[1]]
+    points, worst_load, worst_area, contacts = [], 0.0, 0.0, set()
+    for r in rows:
+        d = OFFSET + float(r["upper_zmin_displacement_z"])
+        load, area, count = direct_sum(pop, d)
+        if count == 0:
+            continue
+        fe_load, fe_area = float(r["contact_normal_force"]), float(r["real_contact_area"])
+        worst_load = max(worst_load, abs(fe_load - load) / abs(load))
+        worst_area = max(worst_area, abs(fe_area / area - 1))
+        contacts.add(count)
+        points.append((d, fe_load, load, fe_area, area))
+    failures = []
+    if not points or max(contacts) < len(pop):
+        failures.append("the press did not bring every summit into contact")
+    print(f"{len(points)} rows with {min(contacts)} to {max(contacts)} of {len(pop)} summits in contact: worst |load_FE / "
+          f"load_sum - 1| = {100 * worst_load:.4f} %, worst |A_FE / A_sum - 1| = {100 * worst_area:.4f} % (tolerance 1 %)")
+    if worst_load > TOL:
+        failures.append(f"load differs from the direct summit sum by {100 * worst_load:.3f} % (> 1 %)")
+    if worst_area > TOL:
+        failures.append(f"real area differs from the direct summit sum by {100 * worst_area:.3f} % (> 1 %)")
+    if a.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(5.5, 4))
+        ax.plot([p[4] * 1e12 for p in points], [p[2] * 1e6 for p in points], "-", label="direct sum over the summits")
+        ax.plot([p[3] * 1e12 for p in points], [p[1] * 1e6 for p in points], "o", ms=3, label="FE (discrete rough-surface model)")
+        ax.set_xlabel("real contact area (um^2)")
+        ax.set_ylabel("normal load (uN)")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(a.plot, dpi=120)
+    for f in failures:
+        print("FAIL:", f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
