@@ -1,0 +1,158 @@
+# case2.i -- coated-substrate study (verification/coated/README.md), written by make_decks.py: edit
+# the generator, not this file. Table B.1 case 2, element size 0.4 nm.
+#
+# Run:    build/bin/tribex run verification/coated/decks/case2.i -o build/verification/coated_case2
+# Check:  /usr/bin/python3 verification/coated/study.py (reads every run folder present)
+#
+# Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
+# are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
+# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 30 nm.
+# Tip top pushed 0.753 nm: 3 m/s, slowing to 0.53 m/s at 0.036 nm (first fitted load), then
+# v ~ travel^1.25 up to 10 m/s (KE/IE about 1 %: make_decks.py drive_times); bottom on rollers.
+begin sierra case2
+  begin function push
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+           0.00  0.00000
+           2.50  0.00037
+           5.00  0.00273
+           7.50  0.00787
+          10.00  0.01500
+          15.03  0.02724
+          20.07  0.03345
+          25.11  0.03665
+          30.35  0.03967
+          35.41  0.04287
+          40.53  0.04645
+          45.64  0.05040
+          50.70  0.05473
+          55.84  0.05963
+          60.99  0.06509
+          66.08  0.07111
+          71.19  0.07789
+          76.26  0.08543
+          81.34  0.09390
+          86.34  0.10331
+          91.40  0.11405
+          96.41  0.12610
+         101.44  0.13984
+         106.46  0.15547
+         111.48  0.17336
+         116.50  0.19389
+         121.53  0.21761
+         126.54  0.24492
+         131.56  0.27674
+         136.57  0.31384
+         141.58  0.35733
+         146.58  0.40686
+         151.59  0.45695
+         156.60  0.50704
+         161.61  0.55712
+         166.62  0.60721
+         171.63  0.65730
+         176.64  0.70739
+         181.22  0.75321
+    end values
+  end function push
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+
+  begin property specification for material coating
+    density = 1000 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 8 GPa
+      poissons ratio = 0.4
+    end parameters for model elastic
+  end property specification for material coating
+
+  # Fully integrated: penalty point forces excite the hourglass modes of one-point elements at the
+  # surface (verification/hertz/README.md).
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+
+  begin finite element model asperity
+    begin generated asperity
+      symmetry = quarter
+      radius = 30 nm
+      tip width = 12 nm
+      tip height = 4 nm
+      substrate width = 36 nm
+      substrate depth = 18 nm
+      element size = 0.4 nm
+      fine half width = 5 nm
+      fine depth = 1.2 nm
+      grading ratio = 1.4
+      coating thickness = 2 nm
+      coating layers = 6
+    end generated asperity
+    begin parameters for block tip
+      material = silicon
+      section = hex8
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8
+    end parameters for block substrate
+    begin parameters for block coating
+      material = coating
+      section = hex8
+    end parameters for block coating
+  end finite element model asperity
+
+  begin presto procedure indent
+    begin time control
+      termination time = 182 ps
+    end time control
+    begin presto region main
+      use finite element model asperity
+      mass damping coefficient = 5e11 1/s
+      # Symmetry planes hold x (y); with them no rigid lateral motion or spin is left, so the
+      # bottom is a roller (z) and the tip top is only driven in z (a node is constrained once).
+      begin fixed displacement
+        node set = symmetry_x
+        components = x
+      end fixed displacement
+      begin fixed displacement
+        node set = symmetry_y
+        components = y
+      end fixed displacement
+      begin fixed displacement
+        node set = substrate_bottom
+        components = z
+      end fixed displacement
+      begin prescribed displacement
+        node set = tip_top
+        component = z
+        function = push
+        scale factor = -1
+      end prescribed displacement
+      begin contact definition tip_on_coating
+        contact surface tip contains tip_surface
+        contact surface flat contains substrate_top
+        contact axis = 0 0 0 0 0 1 nm
+        begin interaction sphere_flat
+          surfaces = tip flat
+        end interaction sphere_flat
+      end contact definition tip_on_coating
+      begin history output hist
+        time increment = 1 ps
+        reaction force = tip_top substrate_bottom
+        mean displacement = tip_top tip_apex substrate_axis_top
+      end history output hist
+      begin results output fields
+        time increment = 182 ps
+        nodal variables = displacement contact_traction contact_status
+        element variables = stress
+      end results output fields
+    end presto region main
+  end presto procedure indent
+end sierra case2
