@@ -7,8 +7,8 @@
 # Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
 # nu = 0.23; coating: E_c = 16 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 27 nm.
-# Tip top pushed 0.602 nm: 3 m/s, slowing to 0.78 m/s at 0.038 nm (first fitted load), then
-# v ~ travel^1.25 up to 10 m/s (KE/IE about 1 %: make_decks.py drive_times); bottom on rollers.
+# Tip top pushed 0.401 nm: 3 m/s, slowing to 0.65 m/s at 0.038 nm (first fitted load), then
+# v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra case6
   begin function push
     type = piecewise linear
@@ -20,31 +20,30 @@ begin sierra case6
            5.00  0.00273
            7.50  0.00787
           10.00  0.01500
-          15.03  0.02809
-          20.08  0.03562
-          25.25  0.04013
-          30.39  0.04465
-          35.48  0.04976
-          40.57  0.05563
-          45.67  0.06241
-          50.67  0.07008
-          55.74  0.07911
-          60.75  0.08950
-          65.78  0.10169
-          70.79  0.11598
-          75.83  0.13299
-          80.85  0.15315
-          85.86  0.17723
-          90.88  0.20628
-          95.90  0.24150
-         100.91  0.28454
-         105.92  0.33435
-         110.93  0.38447
-         115.94  0.43458
-         120.95  0.48470
-         125.97  0.53481
-         130.98  0.58492
-         132.68  0.60198
+          15.01  0.02794
+          20.02  0.03517
+          25.09  0.03918
+          30.22  0.04279
+          35.31  0.04680
+          40.32  0.05122
+          45.39  0.05624
+          50.44  0.06185
+          55.48  0.06817
+          60.50  0.07530
+          65.55  0.08343
+          70.59  0.09266
+          75.62  0.10319
+          80.64  0.11523
+          85.66  0.12908
+          90.66  0.14503
+          95.69  0.16359
+         100.70  0.18516
+         105.70  0.21034
+         110.72  0.24004
+         115.73  0.27516
+         120.73  0.31689
+         125.74  0.36575
+         129.30  0.40132
     end values
   end function push
 
@@ -101,7 +100,7 @@ begin sierra case6
 
   begin presto procedure indent
     begin time control
-      termination time = 133 ps
+      termination time = 130 ps
     end time control
     begin presto region main
       use finite element model asperity
@@ -140,7 +139,7 @@ begin sierra case6
         mean displacement = tip_top tip_apex substrate_axis_top
       end history output hist
       begin results output fields
-        time increment = 133 ps
+        time increment = 130 ps
         nodal variables = displacement contact_traction contact_status
         element variables = stress
       end results output fields

@@ -7,8 +7,8 @@
 # Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 322 GPa,
 # nu = 0.23; coating: E_c = 16 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 27 nm.
-# Tip top pushed 0.735 nm: 3 m/s, slowing to 0.77 m/s at 0.037 nm (first fitted load), then
-# v ~ travel^1.25 up to 10 m/s (KE/IE about 1 %: make_decks.py drive_times); bottom on rollers.
+# Tip top pushed 0.490 nm: 3 m/s, slowing to 0.64 m/s at 0.037 nm (first fitted load), then
+# v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra case7
   begin function push
     type = piecewise linear
@@ -20,33 +20,32 @@ begin sierra case7
            5.00  0.00273
            7.50  0.00787
           10.00  0.01500
-          15.04  0.02786
-          20.04  0.03502
-          25.23  0.03943
-          30.23  0.04383
-          35.33  0.04898
-          40.39  0.05485
-          45.46  0.06165
-          50.53  0.06955
-          55.60  0.07873
-          60.63  0.08938
-          65.64  0.10187
-          70.70  0.11675
-          75.73  0.13438
-          80.74  0.15531
-          85.74  0.18048
-          90.74  0.21096
-          95.76  0.24824
-         100.76  0.29398
-         105.77  0.34411
-         110.79  0.39425
-         115.80  0.44439
-         120.81  0.49453
-         125.83  0.54467
-         130.84  0.59481
-         135.86  0.64494
-         140.87  0.69508
-         144.82  0.73463
+          15.03  0.02773
+          20.13  0.03471
+          25.20  0.03851
+          30.21  0.04206
+          35.31  0.04610
+          40.41  0.05063
+          45.42  0.05565
+          50.52  0.06140
+          55.60  0.06789
+          60.66  0.07524
+          65.69  0.08357
+          70.75  0.09312
+          75.78  0.10401
+          80.80  0.11650
+          85.82  0.13095
+          90.85  0.14772
+          95.85  0.16719
+         100.86  0.18996
+         105.87  0.21678
+         110.88  0.24849
+         115.89  0.28620
+         120.90  0.33138
+         125.91  0.38146
+         130.92  0.43153
+         135.93  0.48161
+         136.74  0.48975
     end values
   end function push
 
@@ -103,7 +102,7 @@ begin sierra case7
 
   begin presto procedure indent
     begin time control
-      termination time = 145 ps
+      termination time = 137 ps
     end time control
     begin presto region main
       use finite element model asperity
@@ -142,7 +141,7 @@ begin sierra case7
         mean displacement = tip_top tip_apex substrate_axis_top
       end history output hist
       begin results output fields
-        time increment = 145 ps
+        time increment = 137 ps
         nodal variables = displacement contact_traction contact_status
         element variables = stress
       end results output fields

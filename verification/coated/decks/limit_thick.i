@@ -7,8 +7,8 @@
 # Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
 # nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 27 nm.
-# Tip top pushed 0.735 nm: 3 m/s, slowing to 0.54 m/s at 0.037 nm (first fitted load), then
-# v ~ travel^1.25 up to 10 m/s (KE/IE about 1 %: make_decks.py drive_times); bottom on rollers.
+# Tip top pushed 0.800 nm: 3 m/s, slowing to 0.46 m/s at 0.037 nm (first fitted load), then
+# v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra limit_thick
   begin function push
     type = piecewise linear
@@ -20,40 +20,46 @@ begin sierra limit_thick
            5.00  0.00273
            7.50  0.00787
           10.00  0.01500
-          15.04  0.02767
-          20.20  0.03447
-          25.33  0.03796
-          30.37  0.04090
-          35.53  0.04420
-          40.73  0.04787
-          45.89  0.05192
-          50.99  0.05632
-          56.15  0.06128
-          61.31  0.06679
-          66.40  0.07285
-          71.52  0.07965
-          76.58  0.08718
-          81.65  0.09563
-          86.66  0.10499
-          91.71  0.11564
-          96.73  0.12758
-         101.77  0.14117
-         106.80  0.15660
-         111.85  0.17423
-         116.85  0.19425
-         121.85  0.21721
-         126.88  0.24384
-         131.89  0.27451
-         136.89  0.31014
-         141.91  0.35183
-         146.92  0.40031
-         151.94  0.45045
-         156.95  0.50059
-         161.97  0.55073
-         166.98  0.60087
-         171.99  0.65101
-         177.01  0.70114
-         180.36  0.73463
+          15.04  0.02760
+          20.20  0.03420
+          25.63  0.03760
+          30.65  0.04000
+          35.69  0.04260
+          40.69  0.04540
+          45.96  0.04860
+          51.11  0.05200
+          56.11  0.05560
+          61.22  0.05960
+          66.37  0.06400
+          71.50  0.06880
+          76.58  0.07400
+          81.74  0.07980
+          86.76  0.08600
+          91.78  0.09280
+          96.86  0.10040
+         101.95  0.10880
+         106.99  0.11800
+         112.04  0.12820
+         117.11  0.13960
+         122.15  0.15220
+         127.17  0.16620
+         132.17  0.18180
+         137.21  0.19940
+         142.25  0.21920
+         147.27  0.24140
+         152.27  0.26640
+         157.29  0.29480
+         162.29  0.32700
+         167.30  0.36380
+         172.32  0.40600
+         177.33  0.45420
+         182.33  0.50420
+         187.33  0.55420
+         192.33  0.60420
+         197.33  0.65420
+         202.33  0.70420
+         207.33  0.75420
+         211.91  0.80000
     end values
   end function push
 
@@ -110,7 +116,7 @@ begin sierra limit_thick
 
   begin presto procedure indent
     begin time control
-      termination time = 181 ps
+      termination time = 212 ps
     end time control
     begin presto region main
       use finite element model asperity
@@ -149,7 +155,7 @@ begin sierra limit_thick
         mean displacement = tip_top tip_apex substrate_axis_top
       end history output hist
       begin results output fields
-        time increment = 181 ps
+        time increment = 212 ps
         nodal variables = displacement contact_traction contact_status
         element variables = stress
       end results output fields

@@ -8,7 +8,7 @@
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
 # nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 0.05 nm in 1 layers. R = 27 nm.
 # Tip top pushed 0.800 nm: 3 m/s, slowing to 3.00 m/s at 0.300 nm (first fitted load), then
-# v ~ travel^1.25 up to 10 m/s (KE/IE about 1 %: make_decks.py drive_times); bottom on rollers.
+# v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra limit_thin
   begin function push
     type = piecewise linear
