@@ -133,7 +133,9 @@ TEST(FitCli, BadCsvAndArgumentsExitTwoWithOneLineMessage) {
       {"same_load.csv", "load[nN],friction[nN]\n1,2\n1,3\n1,4\n1,5\n1,6\n", "fewer than 3 distinct", {}},
       {"good.csv", good, "unknown --model 'dtm'", {"--model", "dtm"}},
       {"good.csv", good, "--model md needs exactly one of --lambda", {"--model", "md"}},
-      {"good.csv", good, "verification/coated/results.csv: coating table not found", {"--model", "coated"}},
+      // (an explicit missing path: the default verification/coated/results.csv exists from the repository root)
+      {"good.csv", good, "no_such_table.csv: coating table not found",
+       {"--model", "coated", "--coating-table", (dir / "no_such_table.csv").string()}},
       {"good.csv", good, "--residual must be absolute or relative", {"--model", "dmt", "--residual", "log"}},
   };
   for (const auto& c : cases) {

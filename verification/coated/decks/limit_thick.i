@@ -7,7 +7,7 @@
 # Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
 # nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 27 nm.
-# Tip top pushed 0.800 nm: 3 m/s, slowing to 0.46 m/s at 0.037 nm (first fitted load), then
+# Tip top pushed 0.800 nm: 3 m/s, slowing to 0.25 m/s at 0.037 nm (first fitted load), then
 # v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra limit_thick
   begin function push
@@ -20,46 +20,72 @@ begin sierra limit_thick
            5.00  0.00273
            7.50  0.00787
           10.00  0.01500
-          15.04  0.02760
-          20.20  0.03420
-          25.63  0.03760
-          30.65  0.04000
-          35.69  0.04260
-          40.69  0.04540
-          45.96  0.04860
-          51.11  0.05200
-          56.11  0.05560
-          61.22  0.05960
-          66.37  0.06400
-          71.50  0.06880
-          76.58  0.07400
-          81.74  0.07980
-          86.76  0.08600
-          91.78  0.09280
-          96.86  0.10040
-         101.95  0.10880
-         106.99  0.11800
-         112.04  0.12820
-         117.11  0.13960
-         122.15  0.15220
-         127.17  0.16620
-         132.17  0.18180
-         137.21  0.19940
-         142.25  0.21920
-         147.27  0.24140
-         152.27  0.26640
-         157.29  0.29480
-         162.29  0.32700
-         167.30  0.36380
-         172.32  0.40600
-         177.33  0.45420
-         182.33  0.50420
-         187.33  0.55420
-         192.33  0.60420
-         197.33  0.65420
-         202.33  0.70420
-         207.33  0.75420
-         211.91  0.80000
+          15.08  0.02740
+          20.18  0.03340
+          25.26  0.03620
+          31.04  0.03780
+          36.37  0.03920
+          41.46  0.04060
+          47.03  0.04220
+          52.33  0.04380
+          57.40  0.04540
+          62.84  0.04720
+          68.03  0.04900
+          73.52  0.05100
+          78.75  0.05300
+          84.22  0.05520
+          89.43  0.05740
+          94.83  0.05980
+          99.97  0.06220
+         105.27  0.06480
+         110.31  0.06740
+         115.46  0.07020
+         120.71  0.07320
+         126.02  0.07640
+         131.06  0.07960
+         136.15  0.08300
+         141.26  0.08660
+         146.37  0.09040
+         151.47  0.09440
+         156.54  0.09860
+         161.57  0.10300
+         166.75  0.10780
+         171.86  0.11280
+         176.88  0.11800
+         181.99  0.12360
+         187.15  0.12960
+         192.17  0.13580
+         197.22  0.14240
+         202.26  0.14940
+         207.27  0.15680
+         212.37  0.16480
+         217.41  0.17320
+         222.47  0.18220
+         227.54  0.19180
+         232.59  0.20200
+         237.60  0.21280
+         242.64  0.22440
+         247.68  0.23680
+         252.69  0.25000
+         257.73  0.26420
+         262.76  0.27940
+         267.81  0.29580
+         272.86  0.31340
+         277.88  0.33220
+         282.89  0.35240
+         287.91  0.37420
+         292.95  0.39780
+         297.97  0.42320
+         302.98  0.45060
+         307.98  0.48020
+         313.00  0.51240
+         318.00  0.54720
+         323.02  0.58520
+         328.03  0.62640
+         333.05  0.67140
+         338.05  0.72020
+         343.07  0.77040
+         346.03  0.80000
     end values
   end function push
 
@@ -91,8 +117,8 @@ begin sierra limit_thick
       radius = 27 nm
       tip width = 12 nm
       tip height = 4 nm
-      substrate width = 36 nm
-      substrate depth = 18 nm
+      substrate width = 72 nm
+      substrate depth = 36 nm
       element size = 0.4 nm
       fine half width = 5 nm
       fine depth = 1.2 nm
@@ -116,7 +142,7 @@ begin sierra limit_thick
 
   begin presto procedure indent
     begin time control
-      termination time = 212 ps
+      termination time = 347 ps
     end time control
     begin presto region main
       use finite element model asperity
@@ -155,7 +181,7 @@ begin sierra limit_thick
         mean displacement = tip_top tip_apex substrate_axis_top
       end history output hist
       begin results output fields
-        time increment = 212 ps
+        time increment = 347 ps
         nodal variables = displacement contact_traction contact_status
         element variables = stress
       end results output fields

@@ -1,13 +1,13 @@
 # limit_thin.i -- coated-substrate study (verification/coated/README.md), written by make_decks.py: edit
-# the generator, not this file. Limit h_c -> 0: a 0.05 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), coating density scaled to 22,000 kg/m^3 (mass scaling, KE/IE checked).
+# the generator, not this file. Limit h_c -> 0: a 0.02 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), coating density scaled to 137,500 kg/m^3 (mass scaling, KE/IE checked).
 #
 # Run:    build/bin/tribex run verification/coated/decks/limit_thin.i -o build/verification/coated_limit_thin
 # Check:  /usr/bin/python3 verification/coated/study.py (reads every run folder present)
 #
 # Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
-# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 0.05 nm in 1 layers. R = 27 nm.
-# Tip top pushed 0.800 nm: 3 m/s, slowing to 3.00 m/s at 0.300 nm (first fitted load), then
+# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 0.02 nm in 1 layers. R = 27 nm.
+# Tip top pushed 0.800 nm: 3 m/s, slowing to 1.50 m/s at 0.150 nm (first fitted load), then
 # v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra limit_thin
   begin function push
@@ -23,40 +23,42 @@ begin sierra limit_thin
           15.07  0.03020
           20.13  0.04540
           25.20  0.06060
-          30.27  0.07580
-          35.27  0.09080
-          40.27  0.10580
-          45.27  0.12080
-          50.27  0.13580
-          55.27  0.15080
-          60.27  0.16580
-          65.27  0.18080
-          70.33  0.19600
-          75.40  0.21120
-          80.47  0.22640
-          85.53  0.24160
-          90.60  0.25680
-          95.67  0.27200
-         100.73  0.28720
-         105.80  0.30240
-         110.85  0.31820
-         115.88  0.33500
-         120.89  0.35280
-         125.89  0.37180
-         130.92  0.39220
-         135.95  0.41400
-         140.98  0.43740
-         146.01  0.46240
-         151.03  0.48920
-         156.05  0.51800
-         161.06  0.54880
-         166.07  0.58200
-         171.09  0.61780
-         176.11  0.65640
-         181.13  0.69800
-         186.15  0.74300
-         191.16  0.79160
-         192.00  0.80000
+          30.20  0.07560
+          35.27  0.09000
+          40.33  0.10300
+          45.42  0.11480
+          50.47  0.12540
+          55.54  0.13500
+          60.56  0.14360
+          65.59  0.15140
+          70.69  0.15940
+          75.72  0.16780
+          80.76  0.17680
+          85.80  0.18640
+          90.82  0.19660
+          95.87  0.20760
+         100.93  0.21940
+         105.97  0.23200
+         110.97  0.24540
+         115.98  0.25980
+         121.03  0.27540
+         126.08  0.29220
+         131.10  0.31020
+         136.12  0.32960
+         141.15  0.35060
+         146.17  0.37320
+         151.17  0.39760
+         156.20  0.42420
+         161.23  0.45300
+         166.24  0.48420
+         171.26  0.51820
+         176.27  0.55520
+         181.29  0.59560
+         186.30  0.63960
+         191.31  0.68780
+         196.31  0.73780
+         201.31  0.78780
+         202.53  0.80000
     end values
   end function push
 
@@ -69,7 +71,7 @@ begin sierra limit_thin
   end property specification for material silicon
 
   begin property specification for material coating
-    density = 22000 kg/m^3
+    density = 137500 kg/m^3
     begin parameters for model elastic
       youngs modulus = 8 GPa
       poissons ratio = 0.4
@@ -90,11 +92,11 @@ begin sierra limit_thin
       tip height = 4 nm
       substrate width = 36 nm
       substrate depth = 18 nm
-      element size = 0.5 nm
+      element size = 0.4 nm
       fine half width = 5.5 nm
       fine depth = 1.2 nm
       grading ratio = 1.4
-      coating thickness = 0.05 nm
+      coating thickness = 0.02 nm
       coating layers = 1
     end generated asperity
     begin parameters for block tip
@@ -113,7 +115,7 @@ begin sierra limit_thin
 
   begin presto procedure indent
     begin time control
-      termination time = 192 ps
+      termination time = 203 ps
     end time control
     begin presto region main
       use finite element model asperity
@@ -147,12 +149,12 @@ begin sierra limit_thin
         end interaction sphere_flat
       end contact definition tip_on_coating
       begin history output hist
-        time increment = 2 ps
+        time increment = 1 ps
         reaction force = tip_top substrate_bottom
         mean displacement = tip_top tip_apex substrate_axis_top
       end history output hist
       begin results output fields
-        time increment = 192 ps
+        time increment = 203 ps
         nodal variables = displacement contact_traction contact_status
         element variables = stress
       end results output fields
