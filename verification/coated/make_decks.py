@@ -27,13 +27,14 @@ for c in TABLE_B1:
     RUNS[f"case{c}"] = dict(case=c, h=0.4)
 # Case 3 (R = 35 nm) and the 0.2 nm mesh fit from P~ = 0.020 with a below the 1.2 nm fit_start
 # assumes: with the default the first fitted rows were still in the slow-down (KE/IE 2.8 % and 2.7 %);
-# slowing down earlier and to 0.35 m/s keeps it under 2 % in case 3. At 0.2 nm it still gave 2.2 %
+# slowing down earlier and to 0.35 m/s keeps it under 2 % in case 3. At 0.2 nm it still gives 2.2 %
 # over P~ = 0.021-0.028 (the moving tip's KE: the model is stiffer than the Hertz estimate of
-# fit_start, so it stores less energy at a given load), hence 0.2 m/s there.
+# fit_start, so it stores less energy at a given load); a rerun at 0.2 m/s (29,160 steps) did not fit
+# in the time available: NOT fixed, its slow compare fails on KE/IE (README.md).
 RUNS["case3"]["fit_start"] = (0.025, 0.35)
 RUNS["case1_h0.5"] = dict(case=1, h=0.5)
 RUNS["case1_h0.3"] = dict(case=1, h=0.3)
-RUNS["case1_h0.2"] = dict(case=1, h=0.2, fit_start=(0.025, 0.2))  # the report's element size (Appendix B)
+RUNS["case1_h0.2"] = dict(case=1, h=0.2, fit_start=(0.025, 0.35))  # the report's element size (Appendix B)
 RUNS["case1_w0.05"] = dict(case=1, h=0.4, W=0.05)
 RUNS["case1_w0.10"] = dict(case=1, h=0.4, W=0.10)
 # f -> 1: the whole substrate made of the coating material (h_c -> infinity).
