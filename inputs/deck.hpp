@@ -96,6 +96,7 @@ struct GeneratedAsperitySpec {
   double grading_ratio = 1.25;
   double coating_thickness = 0.0;
   int coating_layers = 6;
+  bool quarter = false;  // `symmetry = quarter`: x, y >= 0 only, node sets symmetry_x, symmetry_y
   SourceLocation where;
 };
 

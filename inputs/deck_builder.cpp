@@ -199,6 +199,7 @@ class Builder {
       g.grading_ratio = real(*a, "grading ratio");
       g.coating_thickness = real(*a, "coating thickness");
       g.coating_layers = static_cast<int>(real(*a, "coating layers"));
+      g.quarter = word(*a, "symmetry") == "quarter";
       m.asperity = g;
     }
     if (db) {

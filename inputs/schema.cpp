@@ -153,7 +153,9 @@ std::vector<BlockSchema> build_table() {
                 real("fine depth", dim::length, positive(), false, "2 nm", "uniformly fine layers in z"),
                 real("grading ratio", dim::none, {1.0, 2.0, false, false}, false, "1.25", "growth per element"),
                 real("coating thickness", dim::length, non_negative(), false, "0", "bonded coating (block coating)"),
-                integer("coating layers", at_least(1), false, "6", "elements through the coating")},
+                integer("coating layers", at_least(1), false, "6", "elements through the coating"),
+                choice("symmetry", ValueKind::enumeration, {"none", "quarter"}, false, "none",
+                       "quarter: mesh x, y >= 0 only (node sets symmetry_x, symmetry_y; forces and areas are 1/4)")},
                {},
                false, "sphere-tipped asperity above a substrate (blocks tip, substrate, coating)"});
 

@@ -31,10 +31,12 @@ void rename(Mesh& m, const std::string& from, const std::string& to) {
   }
 }
 
-void merge_sides(Mesh& m, const std::string& prefix, const std::string& to) {
+void merge_sides(Mesh& m, const std::string& prefix, const std::string& to, bool quarter) {
   std::vector<Side> sides;
   std::vector<int> nodes;
-  for (const char* f : {"_xmin", "_xmax", "_ymin", "_ymax"}) {
+  const std::vector<std::string> faces =
+      quarter ? std::vector<std::string>{"_xmax", "_ymax"} : std::vector<std::string>{"_xmin", "_xmax", "_ymin", "_ymax"};
+  for (const std::string& f : faces) {
     const auto& s = m.side_sets.at(prefix + f);
     sides.insert(sides.end(), s.begin(), s.end());
     const auto& n = m.node_sets.at(prefix + f);
@@ -59,13 +61,28 @@ int nearest_node(const Mesh& m, const std::vector<int>& set, double x, double y)
   return best;
 }
 
+// The lateral axis: symmetric about 0, or (quarter model) from 0 to +half.
+std::vector<double> lateral_axis(double half, double h, double fine, double ratio, bool quarter) {
+  return quarter ? graded_axis(0.0, half, h, fine, ratio) : symmetric_axis(half, h, fine, ratio);
+}
+
+// Quarter model: the x = 0 (y = 0) faces become node sets for the symmetry conditions; their side
+// sets go (they are not boundaries of the physical problem).
+void keep_symmetry_plane(Mesh& m, const std::string& prefix, const char* face, const std::string& to) {
+  m.node_sets[to] = std::move(m.node_sets.at(prefix + face));
+  m.node_sets.erase(prefix + face);
+  m.side_sets.erase(prefix + face);
+}
+
 }  // namespace
 
 std::vector<double> graded_axis(double lo, double hi, double h, double fine, double ratio) {
   std::vector<double> x{lo};
   const double length = hi - lo;
-  const int n_fine = std::max(1, static_cast<int>(std::ceil(std::min(fine, length) / h - 1e-9)));
-  const double hf = std::min(fine, length) / n_fine;
+  // A fine region shorter than one element (e.g. none left below a coating) is one element of h.
+  const double fine_length = std::min(std::max(fine, h), length);
+  const int n_fine = std::max(1, static_cast<int>(std::ceil(fine_length / h - 1e-9)));
+  const double hf = fine_length / n_fine;
   for (int i = 1; i <= n_fine; ++i) x.push_back(lo + i * hf);
   double size = hf;
   while (x.back() < hi - 1e-12 * length) {
@@ -108,14 +125,16 @@ Mesh generate_asperity(const AsperitySpec& s) {
   const double h = s.element_size, r = s.grading_ratio;
   // Substrate (and coating): z from -depth to 0, fine near the top.
   std::array<std::vector<double>, 3> sub_axes;
-  sub_axes[0] = symmetric_axis(0.5 * s.substrate_width, h, s.fine_half_width, r);
+  sub_axes[0] = lateral_axis(0.5 * s.substrate_width, h, s.fine_half_width, r, s.quarter);
   sub_axes[1] = sub_axes[0];
   std::vector<double> z;
   int coating_k = -1;  // first element layer of the coating
   if (s.coating_thickness > 0.0) {
     const double hc = s.coating_thickness / s.coating_layers;
-    // Below the coating, continue with the coating's spacing (or h if finer) and grade down.
-    std::vector<double> below = graded_axis(0.0, s.substrate_depth - s.coating_thickness, std::min(hc, h),
+    // Below the coating, start again from h and grade down (not from the coating's layer
+    // thickness: a very thin coating would otherwise fill the substrate with thin layers that set
+    // the stable time step).
+    std::vector<double> below = graded_axis(0.0, s.substrate_depth - s.coating_thickness, h,
                                             std::max(0.0, s.fine_depth - s.coating_thickness), r);
     for (auto it = below.rbegin(); it != below.rend(); ++it) z.push_back(-s.coating_thickness - *it);
     coating_k = static_cast<int>(z.size()) - 1;
@@ -134,11 +153,11 @@ Mesh generate_asperity(const AsperitySpec& s) {
   }
   rename(sub, "substrate_zmax", "substrate_top");
   rename(sub, "substrate_zmin", "substrate_bottom");
-  merge_sides(sub, "substrate", "substrate_sides");
+  merge_sides(sub, "substrate", "substrate_sides", s.quarter);
 
   // Tip: a column on [-w/2, w/2]^2 x [0, H] mapped so that its bottom follows the sphere.
   std::array<std::vector<double>, 3> tip_axes;
-  tip_axes[0] = symmetric_axis(0.5 * s.tip_width, h, s.fine_half_width, r);
+  tip_axes[0] = lateral_axis(0.5 * s.tip_width, h, s.fine_half_width, r, s.quarter);
   tip_axes[1] = tip_axes[0];
   tip_axes[2] = graded_axis(0.0, s.tip_height, h, s.fine_depth, r);
   Mesh tip = generate_grid("tip", tip_axes);
@@ -151,14 +170,31 @@ Mesh generate_asperity(const AsperitySpec& s) {
   }
   rename(tip, "tip_zmin", "tip_surface");
   rename(tip, "tip_zmax", "tip_top");
-  merge_sides(tip, "tip", "tip_sides");
+  merge_sides(tip, "tip", "tip_sides", s.quarter);
   tip.node_sets["tip_axis_top"] = {nearest_node(tip, tip.node_sets.at("tip_top"), 0.0, 0.0)};
   sub.node_sets["substrate_axis_bottom"] = {nearest_node(sub, sub.node_sets.at("substrate_bottom"), 0.0, 0.0)};
   sub.node_sets["substrate_axis_top"] = {nearest_node(sub, sub.node_sets.at("substrate_top"), 0.0, 0.0)};
   tip.node_sets["tip_apex"] = {nearest_node(tip, tip.node_sets.at("tip_surface"), 0.0, 0.0)};
 
+  if (s.quarter) {
+    keep_symmetry_plane(sub, "substrate", "_xmin", "symmetry_x");
+    keep_symmetry_plane(sub, "substrate", "_ymin", "symmetry_y");
+    keep_symmetry_plane(tip, "tip", "_xmin", "tip_symmetry_x");
+    keep_symmetry_plane(tip, "tip", "_ymin", "tip_symmetry_y");
+  }
+
   Mesh mesh = std::move(sub);
   append(mesh, tip);
+  if (s.quarter) {
+    for (const char* axis : {"x", "y"}) {
+      const std::string tip_set = std::string("tip_symmetry_") + axis;
+      std::vector<int>& plane = mesh.node_sets.at(std::string("symmetry_") + axis);
+      const std::vector<int>& from_tip = mesh.node_sets.at(tip_set);
+      plane.insert(plane.end(), from_tip.begin(), from_tip.end());
+      std::sort(plane.begin(), plane.end());
+      mesh.node_sets.erase(tip_set);
+    }
+  }
   validate(mesh, "asperity mesh");
   return mesh;
 }

@@ -15,6 +15,12 @@
 // `grading_ratio` per element beyond; in z it is `element_size` within fine_depth of the contact
 // and grows likewise. Node sets of the same names as the side sets, plus `tip_axis_top` (the tip
 // top node on the axis) and `substrate_axis_bottom`.
+//
+// quarter = true meshes only x >= 0, y >= 0 (the problem is symmetric about x = 0 and y = 0): a
+// quarter of the elements for the same resolution. The planes x = 0 and y = 0 are then node sets
+// `symmetry_x` and `symmetry_y` (tip and substrate nodes; fix x resp. y there), the side sets
+// `*_sides` hold only the outer faces x, y = +width/2, and every force and area the run reports is a
+// quarter of the full problem's.
 #pragma once
 
 #include "mesh/mesh.hpp"
@@ -34,6 +40,7 @@ struct AsperitySpec {
   double grading_ratio = 1.25;      // growth per element outside the fine region
   double coating_thickness = 0.0;   // bonded coating on the substrate (block `coating`), m; 0: none
   int coating_layers = 6;           // elements through the coating
+  bool quarter = false;             // mesh x >= 0, y >= 0 only (symmetry planes: node sets symmetry_x, symmetry_y)
 };
 
 /// Throws MeshError for inconsistent sizes (naming the parameter and the fix).

@@ -115,6 +115,7 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
       g.grading_ratio = a.grading_ratio;
       g.coating_thickness = a.coating_thickness;
       g.coating_layers = a.coating_layers;
+      g.quarter = a.quarter;
       try {
         mesh::append(m, mesh::generate_asperity(g));
       } catch (const mesh::MeshError& e) {

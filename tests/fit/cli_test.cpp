@@ -79,6 +79,34 @@ TEST(FitCli, SynthThenFitRecoversValuesAndDrawsThePlot) {
   EXPECT_FALSE(std::filesystem::exists(png + ".panel0.csv"));  // temporaries removed
 }
 
+// The coated model end to end with the study's own table (verification/coated/results.csv):
+// synth at E_c = 8 GPa, then fit; tau* and W come back within 2 sigma.
+TEST(FitCli, CoatedWithTheStudysTable) {
+  const std::string table = TRIBEX_SOURCE_DIR "/verification/coated/results.csv";
+  const auto csv = (dir / "coated.csv").string();
+  std::filesystem::create_directories(dir);
+  const std::vector<std::string> coated = {"--radius", "27nm", "--coating-table", table, "--coating-youngs", "8GPa"};
+  testing::internal::CaptureStderr();
+  ASSERT_EQ(cli::fit_command(with({"synth", "-o", csv, "--tau", "194MPa", "--W", "0.05J/m^2", "--loads=-6nN,40nN",
+                                   "--noise", "0.05", "--seed", "5"},
+                                  coated)),
+            0);
+  testing::internal::CaptureStdout();
+  const int rc = cli::fit_command(with({"friction", csv, "--json", "--no-plot", "--residual", "relative"}, coated));
+  const std::string out = testing::internal::GetCapturedStdout();
+  testing::internal::GetCapturedStderr();
+  ASSERT_EQ(rc, 0);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(out, m, std::regex("\"tau\": \\{\"value\": [-0-9.eE+]+, \"uncertainty\": ([-0-9.eE+]+)")))
+      << out;
+  const double tau_sigma = std::stod(m[1]);
+  ASSERT_TRUE(std::regex_search(out, m, std::regex("\"W\": \\{\"value\": [-0-9.eE+]+, \"uncertainty\": ([-0-9.eE+]+)")))
+      << out;
+  const double w_sigma = std::stod(m[1]);
+  EXPECT_LT(std::abs(json_value(out, "tau") - 194e6), 2 * tau_sigma) << out;
+  EXPECT_LT(std::abs(json_value(out, "W") - 0.05), 2 * w_sigma) << out;
+}
+
 TEST(FitCli, HelpAndUnknownSubcommand) {
   testing::internal::CaptureStdout();
   EXPECT_EQ(cli::fit_command({"friction", "--help"}), 0);
@@ -105,7 +133,9 @@ TEST(FitCli, BadCsvAndArgumentsExitTwoWithOneLineMessage) {
       {"same_load.csv", "load[nN],friction[nN]\n1,2\n1,3\n1,4\n1,5\n1,6\n", "fewer than 3 distinct", {}},
       {"good.csv", good, "unknown --model 'dtm'", {"--model", "dtm"}},
       {"good.csv", good, "--model md needs exactly one of --lambda", {"--model", "md"}},
-      {"good.csv", good, "verification/coated/results.csv: coating table not found", {"--model", "coated"}},
+      // (an explicit missing path: the default verification/coated/results.csv exists from the repository root)
+      {"good.csv", good, "no_such_table.csv: coating table not found",
+       {"--model", "coated", "--coating-table", (dir / "no_such_table.csv").string()}},
       {"good.csv", good, "--residual must be absolute or relative", {"--model", "dmt", "--residual", "log"}},
   };
   for (const auto& c : cases) {

@@ -89,6 +89,24 @@ TEST(FrictionFit, CoatedRecoversTauAndWFromFivePercentNoise) {
   }
 }
 
+// The same acceptance with A, b interpolated from the coated-substrate FE study's own table
+// (verification/coated/results.csv, written by verification/coated/study.py), at three coating
+// moduli inside its range of Ebar_c/Ebar (0.014 .. 0.112): tau* and W recovered within their sigmas.
+TEST(FrictionFit, CoatedRecoversTauAndWWithTheStudysTable) {
+  const CoatingTable table = CoatingTable::read(TRIBEX_SOURCE_DIR "/verification/coated/results.csv");
+  const Case cases[] = {{27e-9, 8e9, 194e6, 0.05}, {27e-9, 3e9, 80e6, 0.03}, {27e-9, 14e9, 250e6, 0.08}};
+  std::uint64_t seed = 301;
+  for (const auto& c : cases) {
+    FrictionSetup s = coated_setup(c);
+    s.table = table;
+    const FrictionModel m(s);
+    const FrictionParams truth = m.defaults(c.tau, c.w);
+    expect_recovered(m, truth, ramp_for(m, truth), Residual::relative, seed,
+                     "study table, Ec " + std::to_string(c.coating_youngs));
+    seed += 5;
+  }
+}
+
 // The sigmas are honest: over 200 noise draws, tau and W each land within 1 sigma of the truth
 // in 68 % +- 10 % of fits (3 binomial standard deviations: sqrt(0.68 0.32/200) = 3.3 %).
 TEST(FrictionFit, ReportedSigmasHaveOneSigmaCoverage) {

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// generate_asperity: the quarter model (symmetry = quarter) against the full one, the symmetry
+// node sets, the coating block (layers, thickness, bonded to the substrate), and a fine depth
+// smaller than the coating (no zero-thickness layer below it).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "mesh/asperity.hpp"
+
+namespace tribex::mesh {
+namespace {
+
+AsperitySpec coated(bool quarter) {
+  AsperitySpec s;
+  s.radius = 27e-9;
+  s.tip_width = 14e-9;
+  s.tip_height = 6e-9;
+  s.substrate_width = 30e-9;
+  s.substrate_depth = 15e-9;
+  s.element_size = 0.5e-9;
+  s.fine_half_width = 3e-9;
+  s.fine_depth = 2.5e-9;
+  s.grading_ratio = 1.3;
+  s.coating_thickness = 2e-9;
+  s.coating_layers = 6;
+  s.quarter = quarter;
+  return s;
+}
+
+// Volume of a hex8 by the 2x2x2 Gauss rule (exact for trilinear maps).
+double hex_volume(const Mesh& m, int e) {
+  const double g = 1.0 / std::sqrt(3.0);
+  const int sx[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, sy[8] = {-1, -1, 1, 1, -1, -1, 1, 1}, sz[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+  double vol = 0;
+  for (int q = 0; q < 8; ++q) {
+    const double xi = sx[q] * g, eta = sy[q] * g, zeta = sz[q] * g;
+    double J[3][3] = {};
+    for (int a = 0; a < 8; ++a) {
+      const double d[3] = {0.125 * sx[a] * (1 + sy[a] * eta) * (1 + sz[a] * zeta),
+                           0.125 * sy[a] * (1 + sx[a] * xi) * (1 + sz[a] * zeta),
+                           0.125 * sz[a] * (1 + sx[a] * xi) * (1 + sy[a] * eta)};
+      const double* x = &m.coordinates[3 * m.connectivity[8 * e + a]];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) J[i][j] += d[i] * x[j];
+    }
+    vol += J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+           J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+  }
+  return vol;
+}
+
+double block_volume(const Mesh& m, const std::string& name) {
+  const Block* b = m.find_block(name);
+  double v = 0;
+  for (int e = b->first_element; e < b->first_element + b->element_count; ++e) v += hex_volume(m, e);
+  return v;
+}
+
+TEST(Asperity, QuarterModelIsAQuarterOfTheFullOne) {
+  const Mesh full = generate_asperity(coated(false));
+  const Mesh quarter = generate_asperity(coated(true));
+  for (const char* b : {"tip", "substrate", "coating"}) {
+    ASSERT_NE(quarter.find_block(b), nullptr) << b;
+    // Same spacing on x, y >= 0: a quarter of the volume to round-off, and of the elements exactly.
+    EXPECT_NEAR(block_volume(quarter, b), 0.25 * block_volume(full, b), 1e-9 * block_volume(full, b)) << b;
+    EXPECT_EQ(4 * quarter.find_block(b)->element_count, full.find_block(b)->element_count) << b;
+  }
+  // Coating: 2 nm thick, 15 x 15 nm in the quarter.
+  EXPECT_NEAR(block_volume(quarter, "coating"), 15e-9 * 15e-9 * 2e-9, 1e-12 * 15e-9 * 15e-9 * 2e-9);
+  // No coordinate below zero in x or y.
+  for (int n = 0; n < quarter.node_count(); ++n) {
+    EXPECT_GE(quarter.coordinates[3 * n], 0.0);
+    EXPECT_GE(quarter.coordinates[3 * n + 1], 0.0);
+  }
+}
+
+TEST(Asperity, QuarterSymmetrySetsHoldTheTipAndSubstrateNodesOnThePlanes) {
+  const Mesh m = generate_asperity(coated(true));
+  for (int axis = 0; axis < 2; ++axis) {
+    const auto& set = m.node_sets.at(axis == 0 ? "symmetry_x" : "symmetry_y");
+    std::set<int> expected;
+    for (int n = 0; n < m.node_count(); ++n)
+      if (m.coordinates[3 * n + axis] == 0.0) expected.insert(n);
+    EXPECT_EQ(std::set<int>(set.begin(), set.end()), expected) << axis;
+    EXPECT_TRUE(std::is_sorted(set.begin(), set.end()));
+    // Both bodies contribute: nodes above the substrate top (tip) and below it.
+    const bool tip_nodes = std::any_of(set.begin(), set.end(), [&](int n) { return m.coordinates[3 * n + 2] > 1e-10; });
+    const bool sub_nodes = std::any_of(set.begin(), set.end(), [&](int n) { return m.coordinates[3 * n + 2] < -1e-10; });
+    EXPECT_TRUE(tip_nodes && sub_nodes) << axis;
+  }
+  // The symmetry planes are not outer sides.
+  for (const char* sides : {"substrate_sides", "tip_sides"})
+    for (int n : m.node_sets.at(sides)) {
+      const double x = m.coordinates[3 * n], y = m.coordinates[3 * n + 1];
+      const double half = std::string(sides) == "tip_sides" ? 7e-9 : 15e-9;
+      EXPECT_TRUE(std::abs(x - half) < 1e-15 || std::abs(y - half) < 1e-15) << sides << " node " << n;
+    }
+  EXPECT_EQ(m.node_sets.count("substrate_xmin"), 0u);
+  EXPECT_EQ(m.side_sets.count("substrate_xmin"), 0u);
+  // The axis node sets sit on the axis.
+  for (const char* s : {"tip_axis_top", "tip_apex", "substrate_axis_top", "substrate_axis_bottom"}) {
+    const int n = m.node_sets.at(s).at(0);
+    EXPECT_EQ(m.coordinates[3 * n], 0.0) << s;
+    EXPECT_EQ(m.coordinates[3 * n + 1], 0.0) << s;
+  }
+}
+
+TEST(Asperity, CoatingLayersAndTheSpacingBelowWhenTheFineDepthIsInsideTheCoating) {
+  AsperitySpec s = coated(true);
+  s.fine_depth = 1e-9;  // shorter than the 2 nm coating: below it one element of h, then grading
+  const Mesh m = generate_asperity(s);
+  std::set<double> z;
+  for (int n = 0; n < m.node_count(); ++n)
+    if (m.coordinates[3 * n + 2] <= 0.0) z.insert(m.coordinates[3 * n + 2]);
+  std::vector<double> levels(z.rbegin(), z.rend());  // from the top down
+  ASSERT_GE(levels.size(), 9u);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(levels[i] - levels[i + 1], 2e-9 / 6, 1e-18) << i;
+  EXPECT_NEAR(levels[6], -2e-9, 1e-18);
+  // Below the coating: the first element is h, then growth by the grading ratio.
+  EXPECT_NEAR(levels[6] - levels[7], 0.5e-9, 1e-18);
+  EXPECT_NEAR((levels[7] - levels[8]) / (levels[6] - levels[7]), 1.3, 1e-9);
+  for (std::size_t i = 1; i < levels.size(); ++i) EXPECT_GT(levels[i - 1] - levels[i], 1e-11) << i;
+}
+
+}  // namespace
+}  // namespace tribex::mesh

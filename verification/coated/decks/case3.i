@@ -1,0 +1,157 @@
+# case3.i -- coated-substrate study (verification/coated/README.md), written by make_decks.py: edit
+# the generator, not this file. Table B.1 case 3, element size 0.4 nm.
+#
+# Run:    build/bin/tribex run verification/coated/decks/case3.i -o build/verification/coated_case3
+# Check:  /usr/bin/python3 verification/coated/study.py (reads every run folder present)
+#
+# Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
+# are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
+# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 35 nm.
+# Tip top pushed 0.518 nm: 3 m/s, slowing to 0.35 m/s at 0.025 nm (first fitted load), then
+# v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
+begin sierra case3
+  begin function push
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+           0.00  0.00000
+           2.50  0.00037
+           5.00  0.00273
+           7.50  0.00787
+          10.00  0.01500
+          15.03  0.02264
+          20.24  0.02536
+          25.45  0.02731
+          30.52  0.02938
+          35.71  0.03171
+          40.94  0.03430
+          46.15  0.03715
+          51.30  0.04026
+          56.35  0.04363
+          61.43  0.04738
+          66.48  0.05153
+          71.59  0.05619
+          76.68  0.06137
+          81.69  0.06707
+          86.77  0.07355
+          91.84  0.08080
+          96.91  0.08897
+         101.96  0.09816
+         106.99  0.10853
+         112.03  0.12031
+         117.03  0.13366
+         122.05  0.14894
+         127.06  0.16643
+         132.08  0.18664
+         137.09  0.20995
+         142.11  0.23703
+         147.12  0.26863
+         152.14  0.30568
+         157.14  0.34921
+         162.15  0.39882
+         167.15  0.44882
+         172.15  0.49882
+         174.08  0.51815
+    end values
+  end function push
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+
+  begin property specification for material coating
+    density = 1000 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 8 GPa
+      poissons ratio = 0.4
+    end parameters for model elastic
+  end property specification for material coating
+
+  # Fully integrated: penalty point forces excite the hourglass modes of one-point elements at the
+  # surface (verification/hertz/README.md).
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+
+  begin finite element model asperity
+    begin generated asperity
+      symmetry = quarter
+      radius = 35 nm
+      tip width = 12 nm
+      tip height = 4 nm
+      substrate width = 36 nm
+      substrate depth = 18 nm
+      element size = 0.4 nm
+      fine half width = 5 nm
+      fine depth = 1.2 nm
+      grading ratio = 1.4
+      coating thickness = 2 nm
+      coating layers = 6
+    end generated asperity
+    begin parameters for block tip
+      material = silicon
+      section = hex8
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8
+    end parameters for block substrate
+    begin parameters for block coating
+      material = coating
+      section = hex8
+    end parameters for block coating
+  end finite element model asperity
+
+  begin presto procedure indent
+    begin time control
+      termination time = 175 ps
+    end time control
+    begin presto region main
+      use finite element model asperity
+      mass damping coefficient = 5e11 1/s
+      # Symmetry planes hold x (y); with them no rigid lateral motion or spin is left, so the
+      # bottom is a roller (z) and the tip top is only driven in z (a node is constrained once).
+      begin fixed displacement
+        node set = symmetry_x
+        components = x
+      end fixed displacement
+      begin fixed displacement
+        node set = symmetry_y
+        components = y
+      end fixed displacement
+      begin fixed displacement
+        node set = substrate_bottom
+        components = z
+      end fixed displacement
+      begin prescribed displacement
+        node set = tip_top
+        component = z
+        function = push
+        scale factor = -1
+      end prescribed displacement
+      begin contact definition tip_on_coating
+        contact surface tip contains tip_surface
+        contact surface flat contains substrate_top
+        contact axis = 0 0 0 0 0 1 nm
+        begin interaction sphere_flat
+          surfaces = tip flat
+        end interaction sphere_flat
+      end contact definition tip_on_coating
+      begin history output hist
+        time increment = 1 ps
+        reaction force = tip_top substrate_bottom
+        mean displacement = tip_top tip_apex substrate_axis_top
+      end history output hist
+      begin results output fields
+        time increment = 175 ps
+        nodal variables = displacement contact_traction contact_status
+        element variables = stress
+      end results output fields
+    end presto region main
+  end presto procedure indent
+end sierra case3

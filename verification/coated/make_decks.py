@@ -1,0 +1,274 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Writes the decks of the coated-substrate study (verification/coated/decks/*.i) from one template.
+
+  /usr/bin/python3 verification/coated/make_decks.py          # rewrites every deck (they are committed)
+
+Each deck: the generated asperity (quarter model, symmetry planes x = 0 and y = 0) with a bonded
+coating block of thickness h_c = 2 nm (6 element layers) on a silicon substrate, no adhesion unless
+the run names a work of adhesion, the tip top pushed down quasi-statically (cycloidal start, then a
+speed growing with the travel), mass damping. The per-run values (case of Table B.1, element size, drive depth,
+adhesion, limit runs) are in RUNS below; the template is the only deck text.
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# name: dict(case, h (element size at the contact, nm), depth (tip travel, nm), fit_start (travel nm,
+#            speed m/s at the first fitted load; default fit_start()), W (J/m^2), substrate ('silicon' or 'coating': the h_c -> infinity limit),
+#            coating (thickness nm, layers, density kg/m^3) overrides)
+RUNS = {}
+for c in TABLE_B1:
+    RUNS[f"case{c}"] = dict(case=c, h=0.4)
+# Case 3 (R = 35 nm) and the 0.2 nm mesh fit from P~ = 0.020 with a below the 1.2 nm fit_start
+# assumes: with the default the first fitted rows were still in the slow-down (KE/IE 2.8 % and 2.7 %);
+# slowing down earlier and to 0.35 m/s keeps it under 2 % in case 3. At 0.2 nm it still gives 2.2 %
+# over P~ = 0.021-0.028 (the moving tip's KE: the model is stiffer than the Hertz estimate of
+# fit_start, so it stores less energy at a given load); a rerun at 0.2 m/s (29,160 steps) did not fit
+# in the time available: NOT fixed, its slow compare fails on KE/IE (README.md).
+RUNS["case3"]["fit_start"] = (0.025, 0.35)
+RUNS["case1_h0.5"] = dict(case=1, h=0.5)
+RUNS["case1_h0.3"] = dict(case=1, h=0.3)
+RUNS["case1_h0.2"] = dict(case=1, h=0.2, fit_start=(0.025, 0.35))  # the report's element size (Appendix B)
+RUNS["case1_w0.05"] = dict(case=1, h=0.4, W=0.05)
+RUNS["case1_w0.10"] = dict(case=1, h=0.4, W=0.10)
+# f -> 1: the whole substrate made of the coating material (h_c -> infinity).
+# a = sqrt(R delta) ~ 4.6 nm. A block twice the study's (72 x 72 x 36 nm): a first run in the study's
+# 36 x 36 x 18 nm block gave f 4 % below 1 (a soft block 4 contact radii deep on rollers is stiffer
+# than a half-space), and KE/IE up to 2.4 % at the first loads (the soft block stores less energy
+# than the coating-Hertz estimate of fit_start), so the tip also comes in slower.
+RUNS["limit_thick"] = dict(case=1, h=0.4, substrate="coating", depth=0.8, block=(72, 36), fit_start=(0.037, 0.25))
+# f -> (2/(1 + Ebar/Ebar_c))^(2/3): a 0.02 nm coating (one layer) under a contact of a = 2-5 nm.
+# The layer's density is raised to 137,500 kg/m^3 (mass scaling: its own stable step would otherwise
+# be 11 times below silicon's; its mass is that of 1.2 nm of silicon), checked by KE/IE in study.py.
+# A first run with a 0.05 nm layer (22,000 kg/m^3) at 0.5 nm elements gave f/f_deep - 1 = +5.5 % on
+# average over a = 2.5-5 nm, falling from +15 % to +1 % as a/h_c grew (README.md).
+RUNS["limit_thin"] = dict(case=1, h=0.4, coating=(0.02, 1, 137500.0), depth=0.8, fit_start=(0.15, 1.5),
+                          fine_half_width=5.5)
+
+
+TEMPLATE = """\
+# {name}.i -- coated-substrate study (verification/coated/README.md), written by make_decks.py: edit
+# the generator, not this file. {what}
+#
+# Run:    build/bin/tribex run verification/coated/decks/{name}.i -o build/verification/coated_{name}
+# Check:  /usr/bin/python3 verification/coated/study.py (reads every run folder present)
+#
+# Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
+# are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = {E:g} GPa,
+# nu = {nu}; coating: E_c = {Ec:g} GPa, nu_c = {nu_c}, h_c = {hc:g} nm in {layers} layers. R = {R:g} nm.
+# Tip top pushed {depth:.3f} nm: 3 m/s, slowing to {v_fit:.2f} m/s at {d_fit:.3f} nm (first fitted load), then
+# v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
+begin sierra {name}
+  begin function push
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+{values}
+    end values
+  end function push
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = {E:g} GPa
+      poissons ratio = {nu}
+    end parameters for model elastic
+  end property specification for material silicon
+
+  begin property specification for material coating
+    density = {rho_c:g} kg/m^3
+    begin parameters for model elastic
+      youngs modulus = {Ec:g} GPa
+      poissons ratio = {nu_c}
+    end parameters for model elastic
+  end property specification for material coating
+
+  # Fully integrated: penalty point forces excite the hourglass modes of one-point elements at the
+  # surface (verification/hertz/README.md).
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+
+  begin finite element model asperity
+    begin generated asperity
+      symmetry = quarter
+      radius = {R:g} nm
+      tip width = 12 nm
+      tip height = 4 nm
+      substrate width = {block_width:g} nm
+      substrate depth = {block_depth:g} nm
+      element size = {h:g} nm
+      fine half width = {fine:g} nm
+      fine depth = {fine_depth:g} nm
+      grading ratio = 1.4
+      coating thickness = {hc:g} nm
+      coating layers = {layers}
+    end generated asperity
+    begin parameters for block tip
+      material = silicon
+      section = hex8
+    end parameters for block tip
+    begin parameters for block substrate
+      material = {substrate}
+      section = hex8
+    end parameters for block substrate
+    begin parameters for block coating
+      material = coating
+      section = hex8
+    end parameters for block coating
+  end finite element model asperity
+
+  begin presto procedure indent
+    begin time control
+      termination time = {t_end:g} ps
+    end time control
+    begin presto region main
+      use finite element model asperity
+      mass damping coefficient = 5e11 1/s
+      # Symmetry planes hold x (y); with them no rigid lateral motion or spin is left, so the
+      # bottom is a roller (z) and the tip top is only driven in z (a node is constrained once).
+      begin fixed displacement
+        node set = symmetry_x
+        components = x
+      end fixed displacement
+      begin fixed displacement
+        node set = symmetry_y
+        components = y
+      end fixed displacement
+      begin fixed displacement
+        node set = substrate_bottom
+        components = z
+      end fixed displacement
+      begin prescribed displacement
+        node set = tip_top
+        component = z
+        function = push
+        scale factor = -1
+      end prescribed displacement
+      begin contact definition tip_on_coating
+        contact surface tip contains tip_surface
+        contact surface flat contains substrate_top
+        contact axis = 0 0 0 0 0 1 nm
+        begin interaction sphere_flat
+          surfaces = tip flat
+{adhesion}        end interaction sphere_flat
+      end contact definition tip_on_coating
+      begin history output hist
+        time increment = {hist:g} ps
+        reaction force = tip_top substrate_bottom
+        mean displacement = tip_top tip_apex substrate_axis_top
+      end history output hist
+      begin results output fields
+        time increment = {t_end:g} ps
+        nodal variables = displacement contact_traction contact_status
+        element variables = stress
+      end results output fields
+    end presto region main
+  end presto procedure indent
+end sierra {name}
+"""
+
+
+def drive_depth(case):
+    """Tip travel (nm) that passes the case's largest P/(Ebar_c h_c^2): half the approach a^2/R of the
+    coating-only Hertz contact (f = 1) at that load. The substrate stiffens the contact (f < 1): in a
+    first case-1 run 0.75 a^2/R reached 3.5 times the largest load; half of it reaches about 1.5 times."""
+    R, E, Ec, _, pmax = TABLE_B1[case]
+    Eb, Ecb = E / (1 - NU * NU), Ec / (1 - NU_C * NU_C)
+    P = pmax * Ecb * 1e9 * (H_C * 1e-9) ** 2
+    a = (3 * P * R * 1e-9 * (1 + Eb / Ecb) / (4 * Eb * 1e9)) ** (1 / 3)
+    return 0.5 * a * a / (R * 1e-9) * 1e9
+
+
+def drive_times(depth, d_fit, v_fit, v_fast=3.0, v_max=10.0, ramp=10.0):
+    """Tip travel s(t) (nm, ps). The kinetic energy of the moving tip must stay a small fraction of the
+    internal energy from the first fitted load on (IE ~ (2/5) P delta ~ delta^(5/2), KE ~ v^2), so the
+    speed is v_fit at the first fitted travel d_fit and grows as (s/d_fit)^1.25 after it (KE/IE about
+    constant), capped at v_max; before it the tip comes in at v_fast (cycloidal start over `ramp`)
+    and slows down linearly in s from d_fit/2 to d_fit. Speeds in m/s = nm/ns."""
+    def speed(s):
+        if s < 0.5 * d_fit:
+            return v_fast
+        if s < d_fit:
+            return v_fast + (v_fit - v_fast) * (s - 0.5 * d_fit) / (0.5 * d_fit)
+        return min(v_max, v_fit * (s / d_fit) ** 1.25)
+    v0 = v_fast * 1e-3  # nm/ps
+    pts = []
+    t = 0.0
+    while t < ramp:  # cycloidal start: v = V (1 - cos(pi t/T))/2
+        pts.append((t, 0.5 * v0 * (t - ramp / math.pi * math.sin(math.pi * t / ramp))))
+        t += 2.5
+    s, t = 0.5 * v0 * ramp, ramp
+    pts.append((t, s))
+    ds = depth / 4000.0
+    next_out = t + 5.0
+    while s < depth - 1e-12:
+        step = min(ds, depth - s)
+        t += step / (speed(s + 0.5 * step) * 1e-3)
+        s += step
+        if t >= next_out or s >= depth - 1e-12:
+            pts.append((t, s))
+            next_out = t + 5.0
+    return "\n".join(f"      {t:9.2f}  {x:.5f}" for t, x in pts), t
+
+
+TIP_QUARTER_MASS = 6e-9 * 6e-9 * 3.3e-9 * 2330.0  # kg: quarter of the 12 x 12 nm column, 4 nm above the apex
+
+
+def fit_start(case, hc_nm=H_C):
+    """Tip travel (nm) at the first fitted load (P~ = 0.02, or a = 3 element sizes of 0.4 nm if
+    larger) and the speed there (m/s) that keeps the tip's kinetic energy at 0.7 % of the quarter
+    model's internal energy (2/5) P delta / 4 (coating-only Hertz estimate)."""
+    R, E, Ec, _, _ = TABLE_B1[case]
+    Eb, Ecb = E / (1 - NU * NU) * 1e9, Ec / (1 - NU_C * NU_C) * 1e9
+    estar = Eb / (1 + Eb / Ecb)
+    P = MIN_LOAD * Ecb * (hc_nm * 1e-9) ** 2
+    a = max((3 * P * R * 1e-9 / (4 * estar)) ** (1 / 3), 1.2e-9)
+    P = 4 * estar * a ** 3 / (3 * R * 1e-9)
+    d = a * a / (R * 1e-9)
+    ie = 0.4 * P * d / 4
+    return 0.7 * d * 1e9, math.sqrt(2 * 0.007 * ie / TIP_QUARTER_MASS)
+
+
+def write(name, run):
+    R, E, Ec, _, _ = TABLE_B1[run["case"]]
+    hc, layers, rho_c = run.get("coating", (H_C, 6, 1000.0))
+    depth = run.get("depth", drive_depth(run["case"]))
+    d_fit, v_fit = run.get("fit_start", fit_start(run["case"]))
+    values, t_end = drive_times(depth, d_fit, v_fit)
+    W = run.get("W", 0.0)
+    adhesion = ""
+    if W > 0:
+        adhesion = (f"          model = adhesion\n          work of adhesion = {W:g} J/m^2\n"
+                    f"          equilibrium separation = 0.3 nm\n"
+                    f"          adhesion cutoff = 6 nm      # 20 z0: the law keeps 99 % of W (physics.md 6.3)\n")
+    what = {"limit_thick": "Limit h_c -> infinity: substrate of the coating material (f -> 1).",
+            "limit_thin": "Limit h_c -> 0: a 0.02 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), "
+                          "coating density scaled to 137,500 kg/m^3 (mass scaling, KE/IE checked)."}.get(
+        name, f"Table B.1 case {run['case']}, element size {run['h']:g} nm" + (f", W = {W:g} J/m^2." if W else "."))
+    text = TEMPLATE.format(name=name, what=what, E=E, Ec=Ec, nu=NU, nu_c=NU_C, hc=hc, layers=layers, R=R,
+                           depth=depth, d_fit=d_fit, v_fit=v_fit, values=values, rho_c=rho_c, h=run["h"],
+                           fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
+                           substrate=run.get("substrate", "silicon"), block_width=run.get("block", (36, 18))[0],
+                           block_depth=run.get("block", (36, 18))[1], t_end=math.ceil(t_end), adhesion=adhesion,
+                           hist=1.0 if run["h"] <= 0.4 else 2.0)
+    os.makedirs(os.path.join(HERE, "decks"), exist_ok=True)
+    with open(os.path.join(HERE, "decks", name + ".i"), "w") as f:
+        f.write(text)
+
+
+def main():
+    for name, run in RUNS.items():
+        write(name, run)
+    print(f"wrote {len(RUNS)} decks to {os.path.join(HERE, 'decks')}")
+
+
+if __name__ == "__main__":
+    main()
