@@ -17,6 +17,8 @@
 #include "solver/output/results_writer.hpp"
 #include "solver/output/run_log.hpp"
 #include "solver/output/summary_writer.hpp"
+#include "solver/restart/restart_output.hpp"
+#include "solver/restart/state_archive.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -52,6 +54,8 @@ class Schedule {
     if (steps_) return step % *steps_ == 0;
     return t >= next_ - 1e-9 * *dt_;
   }
+  double next() const { return next_; }
+  void set_next(double t) { next_ = t; }
   void done(double t) {
     if (dt_)
       while (next_ <= t + 1e-9 * *dt_) next_ += *dt_;
@@ -126,6 +130,16 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     return summary;
   }
 
+  // A restart file is read and checked against the model before any output file is touched.
+  CentralDifference integrator(model, tc);
+  std::optional<StateArchive> resume;
+  if (!options.restart_path.empty()) {
+    resume = read_restart_file(options.restart_path);
+    integrator.restore_state(*resume);
+    log.say(format("restart: resuming from %s at step %ld, t = %.6g s", options.restart_path.c_str(),
+                   integrator.step_index(), integrator.time()));
+  }
+
   // Outputs.
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -143,7 +157,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     for (const auto& s : hist_spec->displacement_node_sets)
       for (const char* c : {"x", "y", "z"}) extra.push_back(s + "_displacement_" + c);
   }
-  HistoryWriter history((out / "history.csv").string(), extra);
+  HistoryWriter history((out / "history.csv").string(), extra, resume ? integrator.step_index() : -1);
   std::vector<const std::vector<int>*> reaction_sets, displacement_sets;
   if (hist_spec) {
     for (const auto& s : hist_spec->reaction_force_node_sets) reaction_sets.push_back(&mesh.node_sets.at(s));
@@ -159,7 +173,20 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     field_schedule.emplace(region.results->time_increment, region.results->step_increment, tc.start_time);
   }
 
-  CentralDifference integrator(model, tc);
+  if (resume) {
+    history_schedule.set_next(resume->scalar("history_next"));
+    if (field_schedule) field_schedule->set_next(resume->scalar("results_next"));
+  }
+  std::optional<RestartOutput> restart_output;
+  if (region.restart) restart_output.emplace(*region.restart, out.string());
+  const auto write_restart = [&]() {
+    StateArchive archive;
+    integrator.save_state(archive);
+    archive.put("history_next", history_schedule.next());
+    archive.put("results_next", field_schedule ? field_schedule->next() : 0.0);
+    const std::string file = restart_output->write(archive);
+    log.record(format("restart file %s at step %ld, t = %.9g s\n", file.c_str(), integrator.step_index(), integrator.time()));
+  };
   bool closing = false;
   const double end_time = tc.termination_time;
   const auto element_fields_due = [&](double t, long n) {
@@ -246,10 +273,15 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   log.say("running ...");
   loop_start = Clock::now();
   try {
-    integrator.init();
+    if (!resume) integrator.init();
     while (!integrator.finished()) {
       integrator.step(on_time_n);
-      if (g_stop_signal) break;
+      const bool stop = g_stop_signal || (options.stop_at_step >= 0 && integrator.step_index() >= options.stop_at_step);
+      if (restart_output && (stop || restart_output->due(integrator.step_index()))) write_restart();
+      if (stop) {
+        if (!g_stop_signal) g_stop_signal = SIGINT;
+        break;
+      }
     }
     closing = true;
     integrator.close(on_time_n);

@@ -13,6 +13,8 @@ struct RunOptions {
   std::string output_directory;  // created if missing
   bool quiet = false;            // no progress line, no echo to the terminal (log.txt still written)
   bool check_only = false;       // set up, print the pre-flight report, do not integrate
+  std::string restart_path;      // non-empty: resume from this restart file (same deck, same rank count)
+  long stop_at_step = -1;        // >= 0: stop as if interrupted after this step (writes a restart file)
 };
 
 struct RunSummary {

@@ -29,6 +29,8 @@
 
 namespace tribex::solver {
 
+struct StateArchive;
+
 class CentralDifference {
  public:
   CentralDifference(Model& model, const inputs::TimeControlSpec& time_control);
@@ -45,6 +47,12 @@ class CentralDifference {
   /// Completes the time-n quantities at the current (final) time and reports them; the state is
   /// then final (no further step()).
   void close(const std::function<void()>& on_time_n = {});
+
+  /// Restart (central_difference_state.cpp): the full state between two step() calls (time, step,
+  /// step sizes, nodal kinematics and forces, energy ledger with its lagged halves, element
+  /// outputs, contact state) into / from `archive`. restore_state() replaces init().
+  void save_state(StateArchive& archive) const;
+  void restore_state(const StateArchive& archive);
 
   bool finished() const { return time_ >= end_time_ * (1.0 - 1e-14) ; }
 
