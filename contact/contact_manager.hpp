@@ -133,7 +133,7 @@ class ContactManager {
 
   std::vector<ContactSurface> surfaces_;
   std::vector<Pass> passes_;
-  const std::vector<double>& mass_;
+  std::vector<double> mass_;  // a copy: the manager outlives the set-up model in parallel runs
   double dt_ref_;
   BucketSearch bucket_;
   std::vector<double> traction_, status_;

@@ -54,6 +54,17 @@ long long max(long long value) {
   return value;
 }
 
+double min_location(double value, int& payload) {
+  if (size() <= 1) return value;
+  struct {
+    double value;
+    int payload;
+  } pair{value, payload};
+  MPI_Allreduce(MPI_IN_PLACE, &pair, 1, MPI_DOUBLE_INT, MPI_MINLOC, MPI_COMM_WORLD);
+  payload = pair.payload;
+  return pair.value;
+}
+
 void barrier() {
   if (size() > 1) MPI_Barrier(MPI_COMM_WORLD);
 }

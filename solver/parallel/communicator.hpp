@@ -18,6 +18,8 @@ void sum(long long* values, int count);
 double min(double value);
 double max(double value);
 long long max(long long value);
+/// Minimum over ranks; `payload` becomes the smallest payload among the ranks holding the minimum.
+double min_location(double value, int& payload);
 void barrier();
 /// Broadcast from `root`.
 void broadcast(int* values, int count, int root = 0);

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+// One rank's share of a parallel run (physics of the decomposition in solver/README.md
+// "Parallel runs"): the elements METIS gave it, the nodes of those elements in local numbering
+// (ascending global number), which of them it owns (a node shared by several ranks is owned by the
+// lowest), and the communication the time loop needs:
+//   - sum_shared: partial nodal forces of shared nodes summed with the neighbour ranks
+//     (MPI_Isend/Irecv into buffers sized once), added in ascending rank order on every rank so
+//     that all copies of a shared node hold bit-identical sums;
+//   - gather_surface: positions and velocities of the contact-surface nodes to every rank
+//     (MPI_Allgatherv over the surface nodes only), so that each rank runs the whole contact
+//     search and enforcement on global node numbers;
+//   - gather_nodal / gather_elemental: a field to rank 0 in global order for results.h5.
+// On one rank every map is the identity and no message is sent.
+#pragma once
+
+#include <mpi.h>
+
+#include <vector>
+
+namespace tribex::solver {
+struct Model;
+}
+
+namespace tribex::solver::parallel {
+
+class Domain {
+ public:
+  int rank = 0, ranks = 1;
+  int global_node_count = 0, global_element_count = 0;
+  std::vector<int> global_node;     // [local node] global node index
+  std::vector<int> global_element;  // [local element] global element index
+  std::vector<double> owned;        // [local node] 1 owned here, 0 owned by a lower rank
+
+  bool serial() const { return ranks == 1; }
+  /// The identity layout of a whole model on one rank (build_model sets it).
+  void init_serial(int nodes, int elements);
+  int owned_node_count() const { return owned_nodes_; }
+
+  /// Sums a nodal [local node][3] vector over the ranks that share each node.
+  void sum_shared(double* nodal);
+
+  /// Contact surfaces: `surface_nodes` the sorted global nodes of all surfaces (same on every rank).
+  void set_surface(const std::vector<int>& surface_nodes);
+  /// [k] local index of surface node k, -1 when this rank does not hold it.
+  const std::vector<int>& surface_local() const { return surface_local_; }
+  /// [k] 1 when this rank owns surface node k.
+  const std::vector<double>& surface_owned() const { return surface_owned_; }
+  /// Writes x and v of every surface node into the global-numbered arrays (other entries untouched).
+  void gather_surface(const double* x_local, const double* v_local, double* x_global, double* v_global);
+
+  /// Field with `components` values per local node (element) -> rank 0, in global order, into
+  /// `global` (resized there; untouched elsewhere).
+  void gather_nodal(const double* local, int components, std::vector<double>& global);
+  void gather_elemental(const double* local, int components, std::vector<double>& global);
+
+ private:
+  friend Model localize(Model&& global, const std::vector<int>& part);
+  void gather(const double* local, const std::vector<int>& send_index, const std::vector<int>& order,
+              const std::vector<int>& counts, int components, std::vector<double>& global);
+
+  int owned_nodes_ = 0;
+  // halo
+  std::vector<int> neighbours_;        // ascending
+  std::vector<int> neighbour_offset_;  // [k + 1] into neighbour_nodes_
+  std::vector<int> neighbour_nodes_;   // local nodes shared with neighbour k, ascending
+  std::vector<int> neighbour_slot_;    // their index into shared_nodes_
+  std::vector<int> shared_nodes_;      // local nodes held by more than one rank, ascending
+  std::vector<double> send_, recv_, sum_;
+  std::vector<MPI_Request> requests_;
+  // contact surface gather
+  std::vector<int> surface_nodes_, surface_local_;
+  std::vector<double> surface_owned_;
+  std::vector<int> surface_send_index_;                  // local nodes of the owned surface nodes
+  std::vector<int> surface_order_;                       // [position in the gathered buffer] surface index k
+  std::vector<int> surface_counts_, surface_displs_;     // in doubles (6 per node)
+  std::vector<double> surface_send_, surface_recv_;
+  // field gather to rank 0
+  std::vector<int> node_owner_;                          // [global node] owning rank (set-up only)
+  std::vector<int> owned_local_nodes_, local_elements_;  // what this rank sends, ascending
+  std::vector<int> node_order_, node_counts_;            // rank 0: global node of each gathered entry
+  std::vector<int> element_order_, element_counts_;
+  std::vector<double> gather_send_, gather_recv_;
+};
+
+/// This rank's part of the model built on every rank from the whole mesh: elements with
+/// part[e] == rank, their nodes, restricted sets, constraints, loads and dashpots, the global
+/// lumped mass (so no mass exchange is needed), and the contact manager (global numbering) with
+/// the surface gather. On one rank the model is returned unchanged with an identity Domain.
+Model localize(Model&& global, const std::vector<int>& part);
+
+}  // namespace tribex::solver::parallel
