@@ -105,6 +105,9 @@ begin sierra mpi_dmt
         nodal variables = displacement contact_traction contact_status
         element variables = stress
       end results output fields
+      begin restart output
+        step increment = 1000   # beyond the run's ~590 steps: written only when a run stops early
+      end restart output
     end presto region main
   end presto procedure indent
 end sierra mpi_dmt
