@@ -45,7 +45,17 @@ void print_usage(std::FILE* to) {
 // `run` and `check` are MPI programs (a run without mpirun is one rank). Every rank runs the
 // command with its error messages into a buffer; afterwards the ranks agree: the lowest rank that
 // printed an error prints it (once), and every rank exits with that rank's code.
+// Without a launcher (no mpirun/mpiexec environment) MPI is not started at all: Open MPI's
+// singleton start costs about 0.5 s per process, and the run is the one-rank case anyway (the
+// helpers of solver/parallel/communicator.hpp treat an uninitialised MPI as one rank).
+bool launched_by_mpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
 int run_parallel(int argc, char** argv, const Command& c, const std::vector<std::string>& args) {
+  if (!launched_by_mpirun()) return tribex::cli::run_mapping_errors([&] { return c.run(args); });
   MPI_Init(&argc, &argv);
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
