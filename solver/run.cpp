@@ -175,7 +175,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   // are those of the whole mesh.
   const std::vector<int> part = parallel::partition_elements(mesh, ranks);
   std::optional<mesh::Mesh> whole_mesh;
-  if (ranks > 1 && root && region.results) whole_mesh = mesh;
+  if (ranks > 1 && region.results) whole_mesh = mesh;
   std::map<std::string, double> set_size;
   for (const auto& [name, nodes] : mesh.node_sets) set_size[name] = double(nodes.size());
   if (ranks > 1) {
@@ -267,18 +267,32 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
 
   std::unique_ptr<ResultsWriter> results;
   std::optional<Schedule> field_schedule;
+  agree_on_errors(output_error);
+  // results.h5: in a parallel run every rank writes the rows of its owned nodes and its elements
+  // (runs of consecutive global rows) collectively with parallel HDF5.
+  ResultsSlab slab;
   if (region.results) {
-    if (root && !output_error) {
-      try {
-        results = std::make_unique<ResultsWriter>(out.string(), whole_mesh ? *whole_mesh : model.mesh);
-      } catch (...) {
-        output_error = std::current_exception();
-      }
+    const auto add_row = [](std::vector<std::array<unsigned long long, 2>>& runs, unsigned long long row) {
+      if (!runs.empty() && runs.back()[0] + runs.back()[1] == row)
+        ++runs.back()[1];
+      else
+        runs.push_back({row, 1});
+    };
+    for (int l : domain.owned_local_nodes()) add_row(slab.node_runs, static_cast<unsigned long long>(domain.global_node[l]));
+    for (int e : domain.global_element) add_row(slab.element_runs, static_cast<unsigned long long>(e));
+    slab.node_rows = static_cast<long long>(domain.owned_local_nodes().size());
+    slab.element_rows = static_cast<long long>(domain.global_element.size());
+    std::exception_ptr error;
+    try {
+      results = std::make_unique<ResultsWriter>(out.string(), whole_mesh ? *whole_mesh : model.mesh,
+                                                ranks > 1 ? &slab : nullptr);
+    } catch (...) {
+      error = std::current_exception();
     }
     whole_mesh.reset();
+    agree_on_errors(error);
     field_schedule.emplace(region.results->time_increment, region.results->step_increment, tc.start_time);
   }
-  agree_on_errors(output_error);
 
   if (resume) {
     history_schedule.set_next(resume->scalar("history_next"));
@@ -305,7 +319,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   std::vector<double> row;
   row.reserve(HistoryWriter::standard_columns().size() + extra.size());
   std::vector<double> element_stress(6 * static_cast<std::size_t>(model.mesh.element_count()), 0.0);
-  std::vector<std::vector<double>> gathered;  // fields in global order on rank 0 (output steps only)
+  std::vector<std::vector<double>> packed;  // parallel: this rank's rows of each field (output steps only)
   const bool terminal = root && !options.quiet && isatty(STDERR_FILENO);
   auto last_progress = Clock::now();
   Clock::time_point loop_start;
@@ -345,17 +359,19 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
       history_schedule.done(t);
     }
     if (field_schedule && field_schedule->due(t, n, closing)) {
-      // Fields in global node/element order: gathered to rank 0 in a parallel run (the contact
-      // fields are already global on every rank).
+      // Parallel runs write the rows this rank owns: nodal fields packed from local (or, for the
+      // contact fields, global) numbering; the rank's elements are its rows already.
       std::vector<FieldView> nodal, element;
       std::size_t g = 0;
-      const auto global_field = [&](const std::vector<double>& local, int components, bool per_element) {
-        if (gathered.size() <= g) gathered.emplace_back();
-        auto& buffer = gathered[g++];
-        if (per_element)
-          domain.gather_elemental(local.data(), components, buffer);
-        else
-          domain.gather_nodal(local.data(), components, buffer);
+      const auto owned_rows = [&](const std::vector<double>& values, int components, bool global_numbering) {
+        if (domain.serial()) return std::span<const double>(values);
+        if (packed.size() <= g) packed.emplace_back();
+        auto& buffer = packed[g++];
+        buffer.clear();
+        for (int l : domain.owned_local_nodes()) {
+          const std::size_t r = static_cast<std::size_t>(global_numbering ? domain.global_node[l] : l);
+          buffer.insert(buffer.end(), values.begin() + components * r, values.begin() + components * (r + 1));
+        }
         return std::span<const double>(buffer);
       };
       for (const auto& name : region.results->nodal_variables) {
@@ -364,15 +380,15 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
         if (name == "velocity") v = &integrator.velocity();
         if (name == "acceleration") v = &integrator.acceleration();
         if (name == "force") v = &integrator.force();
-        if (v) nodal.push_back({name, 3, domain.serial() ? std::span<const double>(*v) : global_field(*v, 3, false)});
-        if (model.contact && name == "contact_traction") nodal.push_back({name, 3, model.contact->traction()});
-        if (model.contact && name == "contact_status") nodal.push_back({name, 1, model.contact->status()});
+        if (v) nodal.push_back({name, 3, owned_rows(*v, 3, false)});
+        if (model.contact && name == "contact_traction") nodal.push_back({name, 3, owned_rows(model.contact->traction(), 3, true)});
+        if (model.contact && name == "contact_status") nodal.push_back({name, 1, owned_rows(model.contact->status(), 1, true)});
       }
       for (const auto& name : region.results->element_variables) {
         if (name != "stress") continue;
         for (const auto& b : model.blocks)
           std::copy(b.stress.begin(), b.stress.end(), element_stress.begin() + 6 * b.first_element);
-        element.push_back({"stress", 6, domain.serial() ? std::span<const double>(element_stress) : global_field(element_stress, 6, true)});
+        element.push_back({"stress", 6, element_stress});
       }
       if (results) results->write_step(t, nodal, element);
       field_schedule->done(t);
@@ -417,10 +433,12 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   }
   summary.loop_seconds = seconds_since(loop_start);
   if (terminal) std::fprintf(stderr, "\n");
-  if (results) results->flush();
+  if (results) results->flush();  // collective in a parallel run: every rank gets here
 
   summary.steps = integrator.step_index();
   summary.contact_seconds = integrator.contact_seconds();
+  summary.ranks = ranks;
+  summary.communication_seconds = model.domain.communication_seconds;
   summary.final_time = integrator.time();
   summary.energy_error = integrator.energies().relative_error();
   summary.ns_per_element_step =
@@ -436,6 +454,10 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     log.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", summary.contact_seconds,
                    summary.loop_seconds > 0 ? 100.0 * summary.contact_seconds / summary.loop_seconds : 0.0,
                    model.contact->total_searches()));
+  if (ranks > 1)
+    log.say(format("parallel: %d ranks; rank 0 spent %.3g s of the loop (%.1f %%) in communication", ranks,
+                   summary.communication_seconds,
+                   summary.loop_seconds > 0 ? 100.0 * summary.communication_seconds / summary.loop_seconds : 0.0));
   log.say(summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status);
   return summary;
 }

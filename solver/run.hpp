@@ -27,6 +27,8 @@ struct RunSummary {
   double loop_seconds = 0.0;
   double ns_per_element_step = 0.0;  // loop time / (elements * steps)
   double contact_seconds = 0.0;      // part of the loop spent in contact search and enforcement
+  int ranks = 1;                     // MPI ranks of the run
+  double communication_seconds = 0.0;  // rank 0's loop time in halo exchange, surface gather, energy sums
   int elements = 0;
   int nodes = 0;
 };

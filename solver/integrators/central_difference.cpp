@@ -316,7 +316,11 @@ void CentralDifference::account_time_n() {
   double sums[16] = {ke,        momentum_[0],  momentum_[1],  momentum_[2],       power_left,        power_right,
                      c_left,    c_right,       silent_left,   silent_right,      damp_left,         damp_right,
                      energies_.internal,       energies_.hourglass,              viscous_power_,    0.0};
-  parallel::sum(sums, 16);
+  if (!model_.domain.serial()) {
+    const auto start = std::chrono::steady_clock::now();
+    parallel::sum(sums, 16);
+    model_.domain.communication_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   ke = sums[0];
   for (int i = 0; i < 3; ++i) momentum_[i] = sums[1 + i];
   power_left = sums[4];

@@ -2,6 +2,7 @@
 #include "solver/parallel/domain.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -22,11 +23,17 @@ void Domain::init_serial(int nodes, int elements) {
   std::iota(global_element.begin(), global_element.end(), 0);
   owned.assign(static_cast<std::size_t>(nodes), 1.0);
   owned_nodes_ = nodes;
+  owned_local_nodes_ = global_node;
   node_owner_.assign(static_cast<std::size_t>(nodes), 0);
 }
 
+namespace {
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+}  // namespace
+
 void Domain::sum_shared(double* f) {
   if (neighbours_.empty()) return;
+  const double start = now();
   const int nk = static_cast<int>(neighbours_.size());
   for (int k = 0; k < nk; ++k) {
     const int b = neighbour_offset_[k], n = neighbour_offset_[k + 1] - b;
@@ -56,6 +63,7 @@ void Domain::sum_shared(double* f) {
   if (!mine_added) add_mine();
   for (std::size_t s = 0; s < shared_nodes_.size(); ++s)
     for (int i = 0; i < 3; ++i) f[3 * shared_nodes_[s] + i] = sum_[3 * s + i];
+  communication_seconds += now() - start;
 }
 
 void Domain::set_surface(const std::vector<int>& surface_nodes) {
@@ -99,6 +107,7 @@ void Domain::gather_surface(const double* x, const double* v, double* xg, double
       }
     return;
   }
+  const double start = now();
   for (std::size_t j = 0; j < surface_send_index_.size(); ++j) {
     const int l = surface_send_index_[j];
     for (int i = 0; i < 3; ++i) {
@@ -115,42 +124,7 @@ void Domain::gather_surface(const double* x, const double* v, double* xg, double
       vg[3 * node + i] = surface_recv_[6 * j + 3 + i];
     }
   }
-}
-
-void Domain::gather(const double* local, const std::vector<int>& send_index, const std::vector<int>& order,
-                    const std::vector<int>& counts, int components, std::vector<double>& global) {
-  const int c = components;
-  gather_send_.resize(static_cast<std::size_t>(c) * send_index.size());
-  for (std::size_t j = 0; j < send_index.size(); ++j)
-    for (int i = 0; i < c; ++i) gather_send_[c * j + i] = local[static_cast<std::size_t>(c) * send_index[j] + i];
-  std::vector<int> cnt(static_cast<std::size_t>(ranks)), displ(static_cast<std::size_t>(ranks), 0);
-  for (int r = 0; r < ranks; ++r) {
-    cnt[r] = c * counts[r];
-    if (r > 0) displ[r] = displ[r - 1] + cnt[r - 1];
-  }
-  if (rank == 0) gather_recv_.resize(static_cast<std::size_t>(c) * order.size());
-  MPI_Gatherv(gather_send_.data(), static_cast<int>(gather_send_.size()), MPI_DOUBLE, gather_recv_.data(), cnt.data(),
-              displ.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  if (rank != 0) return;
-  global.resize(static_cast<std::size_t>(c) * order.size());
-  for (std::size_t j = 0; j < order.size(); ++j)
-    for (int i = 0; i < c; ++i) global[static_cast<std::size_t>(c) * order[j] + i] = gather_recv_[c * j + i];
-}
-
-void Domain::gather_nodal(const double* local, int components, std::vector<double>& global) {
-  if (serial()) {
-    global.assign(local, local + static_cast<std::size_t>(components) * global_node.size());
-    return;
-  }
-  gather(local, owned_local_nodes_, node_order_, node_counts_, components, global);
-}
-
-void Domain::gather_elemental(const double* local, int components, std::vector<double>& global) {
-  if (serial()) {
-    global.assign(local, local + static_cast<std::size_t>(components) * global_element.size());
-    return;
-  }
-  gather(local, local_elements_, element_order_, element_counts_, components, global);
+  communication_seconds += now() - start;
 }
 
 Model localize(Model&& global, const std::vector<int>& part) {
@@ -200,8 +174,6 @@ Model localize(Model&& global, const std::vector<int>& part) {
   }
   std::vector<int> local_element_of(static_cast<std::size_t>(ge), -1);
   for (int l = 0; l < le; ++l) local_element_of[d.global_element[l]] = l;
-  d.local_elements_.resize(static_cast<std::size_t>(le));
-  std::iota(d.local_elements_.begin(), d.local_elements_.end(), 0);
 
   // Halo lists: for every neighbour rank, the shared local nodes in ascending order.
   std::vector<std::vector<int>> with(static_cast<std::size_t>(ranks));
@@ -235,20 +207,6 @@ Model localize(Model&& global, const std::vector<int>& part) {
   d.recv_.assign(3 * d.neighbour_nodes_.size(), 0.0);
   d.sum_.assign(3 * d.shared_nodes_.size(), 0.0);
   d.requests_.assign(2 * d.neighbours_.size(), MPI_REQUEST_NULL);
-
-  // Field gather to rank 0: every rank sends its owned nodes and its elements, ascending.
-  d.node_counts_.assign(static_cast<std::size_t>(ranks), 0);
-  d.element_counts_.assign(static_cast<std::size_t>(ranks), 0);
-  for (int n = 0; n < gn; ++n) ++d.node_counts_[d.node_owner_[n]];
-  for (int e = 0; e < ge; ++e) ++d.element_counts_[part[e]];
-  if (me == 0) {
-    for (int r = 0; r < ranks; ++r) {
-      for (int n = 0; n < gn; ++n)
-        if (d.node_owner_[n] == r) d.node_order_.push_back(n);
-      for (int e = 0; e < ge; ++e)
-        if (part[e] == r) d.element_order_.push_back(e);
-    }
-  }
 
   // Mesh.
   mesh::Mesh& m = local.mesh;

@@ -9,7 +9,7 @@
 //   - gather_surface: positions and velocities of the contact-surface nodes to every rank
 //     (MPI_Allgatherv over the surface nodes only), so that each rank runs the whole contact
 //     search and enforcement on global node numbers;
-//   - gather_nodal / gather_elemental: a field to rank 0 in global order for results.h5.
+// results.h5 is written collectively (each rank its owned nodes and its elements, parallel HDF5).
 // On one rank every map is the identity and no message is sent.
 #pragma once
 
@@ -32,9 +32,13 @@ class Domain {
   std::vector<double> owned;        // [local node] 1 owned here, 0 owned by a lower rank
 
   bool serial() const { return ranks == 1; }
+  /// Wall time spent in sum_shared and gather_surface (messages and waiting), s; 0 on one rank.
+  double communication_seconds = 0.0;
   /// The identity layout of a whole model on one rank (build_model sets it).
   void init_serial(int nodes, int elements);
   int owned_node_count() const { return owned_nodes_; }
+  /// Local indices of the owned nodes, ascending.
+  const std::vector<int>& owned_local_nodes() const { return owned_local_nodes_; }
 
   /// Sums a nodal [local node][3] vector over the ranks that share each node.
   void sum_shared(double* nodal);
@@ -48,15 +52,8 @@ class Domain {
   /// Writes x and v of every surface node into the global-numbered arrays (other entries untouched).
   void gather_surface(const double* x_local, const double* v_local, double* x_global, double* v_global);
 
-  /// Field with `components` values per local node (element) -> rank 0, in global order, into
-  /// `global` (resized there; untouched elsewhere).
-  void gather_nodal(const double* local, int components, std::vector<double>& global);
-  void gather_elemental(const double* local, int components, std::vector<double>& global);
-
  private:
   friend Model localize(Model&& global, const std::vector<int>& part);
-  void gather(const double* local, const std::vector<int>& send_index, const std::vector<int>& order,
-              const std::vector<int>& counts, int components, std::vector<double>& global);
 
   int owned_nodes_ = 0;
   // halo
@@ -74,12 +71,8 @@ class Domain {
   std::vector<int> surface_order_;                       // [position in the gathered buffer] surface index k
   std::vector<int> surface_counts_, surface_displs_;     // in doubles (6 per node)
   std::vector<double> surface_send_, surface_recv_;
-  // field gather to rank 0
-  std::vector<int> node_owner_;                          // [global node] owning rank (set-up only)
-  std::vector<int> owned_local_nodes_, local_elements_;  // what this rank sends, ascending
-  std::vector<int> node_order_, node_counts_;            // rank 0: global node of each gathered entry
-  std::vector<int> element_order_, element_counts_;
-  std::vector<double> gather_send_, gather_recv_;
+  std::vector<int> node_owner_;        // [global node] owning rank
+  std::vector<int> owned_local_nodes_;  // ascending
 };
 
 /// This rank's part of the model built on every rank from the whole mesh: elements with
