@@ -1,6 +1,6 @@
 # scaling_block.i -- the block of the parallel scaling benchmark (tools/bench/parallel_scaling.py
 # writes copies with other sizes): silicon, 1 nm hex8 (mean quadrature, elastic), bottom fixed,
-# top pulled at 1 m/s; 20 ps = about 220 steps; history every 50 steps, no field output.
+# top pulled at 1 m/s; 5 ps = about 90 steps; history every 50 steps, no field output.
 begin sierra scaling_block
   begin function pull
     type = piecewise linear
@@ -33,7 +33,7 @@ begin sierra scaling_block
   end finite element model block
   begin presto procedure pull
     begin time control
-      termination time = 20 ps
+      termination time = 5 ps
     end time control
     begin presto region block
       use finite element model block

@@ -42,7 +42,7 @@ void print_usage(std::FILE* to) {
   for (const auto& c : commands) std::fprintf(to, "  %-14s %s\n", c.name, c.summary);
 }
 
-// `run` and `check` are MPI programs (a run without mpirun is one rank). Every rank runs the
+// `run` is an MPI program (a run without mpirun is one rank). Every rank runs the
 // command with its error messages into a buffer; afterwards the ranks agree: the lowest rank that
 // printed an error prints it (once), and every rank exits with that rank's code.
 // Without a launcher (no mpirun/mpiexec environment) MPI is not started at all: Open MPI's
@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
   }
   std::vector<std::string> args(argv + 2, argv + argc);
   for (const auto& c : commands) {
-    if (name == c.name && (name == "run" || name == "check")) return run_parallel(argc, argv, c, args);
+    if (name == c.name && name == "run") return run_parallel(argc, argv, c, args);
     if (name == c.name) return tribex::cli::run_mapping_errors([&] { return c.run(args); });
   }
   std::vector<std::string> names;
