@@ -171,9 +171,15 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     return summary;
   }
 
-  // This rank's part. Rank 0 keeps the whole mesh for results.h5 (written once), the set sizes
-  // are those of the whole mesh.
-  const std::vector<int> part = parallel::partition_elements(mesh, ranks);
+  // This rank's part. The whole mesh is kept until results.h5 has been created (rank 0 writes it
+  // there, once); node-set sizes are those of the whole mesh.
+  std::vector<int> part;
+  try {
+    part = parallel::partition_elements(mesh, ranks);
+  } catch (const std::runtime_error& e) {
+    throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks) + " ranks: " + e.what() +
+                     "; run with fewer ranks (mpirun -np N)");
+  }
   std::optional<mesh::Mesh> whole_mesh;
   if (ranks > 1 && region.results) whole_mesh = mesh;
   std::map<std::string, double> set_size;
