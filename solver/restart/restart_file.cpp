@@ -18,6 +18,9 @@ namespace {
 
 using output::H5Handle;
 
+// Bumped when the archive layout changes; a file of another version is refused (exit 2).
+constexpr double kRestartFormatVersion = 1;
+
 class QuietErrors {
  public:
   QuietErrors() {
@@ -88,7 +91,10 @@ void write_restart_file(const std::string& path, const StateArchive& archive) {
                              : H5Fopen(part.c_str(), H5F_ACC_RDWR, H5P_DEFAULT),
                       H5Fclose);
         if (!file.valid()) throw std::runtime_error("cannot open " + part);
-        if (r == 0) output::write_double_attribute(file.get(), "ranks", parallel::size(), part);
+        if (r == 0) {
+          output::write_double_attribute(file.get(), "ranks", parallel::size(), part);
+          output::write_double_attribute(file.get(), "format_version", kRestartFormatVersion, part);
+        }
         write_group(file.get(), archive, part);
       } catch (const std::exception&) {
         failed = 1;
@@ -119,6 +125,14 @@ StateArchive read_restart_file(const std::string& path) {
     H5Handle a(H5Aopen(file.get(), "ranks", H5P_DEFAULT), H5Aclose);
     if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &ranks) < 0)
       throw SetupError(path + ": error: not a tribex restart file (no 'ranks' attribute)");
+  }
+  double version = 0;
+  {
+    H5Handle a(H5Aopen(file.get(), "format_version", H5P_DEFAULT), H5Aclose);
+    if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &version) < 0 || version != kRestartFormatVersion)
+      throw SetupError(path + ": error: restart file format version " + std::to_string(static_cast<int>(version)) +
+                       ", this tribex reads version " + std::to_string(static_cast<int>(kRestartFormatVersion)) +
+                       "; restart with the tribex that wrote it");
   }
   if (static_cast<int>(ranks) != parallel::size())
     throw SetupError(path + ": error: the restart file was written by " + std::to_string(static_cast<int>(ranks)) +

@@ -1,5 +1,5 @@
 # mpi_dmt.i -- a small, short DMT indentation (verification/dmt/dmt_coarse.i with 1.6 nm elements,
-# a smaller block and 40 ps of a 1.2 nm / 60 ps cycloidal push) for the parallel and restart tests of
+# a smaller block and 20 ps of a 1.2 nm / 30 ps cycloidal push) for the parallel and restart tests of
 # tests/parallel/: contact (penalty + Lennard-Jones adhesion) on surfaces split across ranks.
 # Not a verification case: only agreement between rank counts and across a restart is checked.
 #
@@ -11,16 +11,16 @@ begin sierra mpi_dmt
     ordinate unit = nm
     begin values
            0.0  0.00000
-           6.0  0.00774
-          12.0  0.05836
-          18.0  0.17836
-          24.0  0.36774
-          30.0  0.60000
-          36.0  0.83226
-          42.0  1.02164
-          48.0  1.14164
-          54.0  1.19226
-          60.0  1.20000
+           3.0  0.00774
+           6.0  0.05836
+           9.0  0.17836
+          12.0  0.36774
+          15.0  0.60000
+          18.0  0.83226
+          21.0  1.02164
+          24.0  1.14164
+          27.0  1.19226
+          30.0  1.20000
          200.0  1.20000
     end values
   end function push
@@ -64,7 +64,7 @@ begin sierra mpi_dmt
 
   begin presto procedure indent
     begin time control
-      termination time = 40 ps
+      termination time = 20 ps
     end time control
     begin presto region main
       use finite element model asperity
@@ -106,7 +106,7 @@ begin sierra mpi_dmt
         element variables = stress
       end results output fields
       begin restart output
-        step increment = 1000   # beyond the run's ~590 steps: written only when a run stops early
+        step increment = 1000   # beyond the run's ~290 steps: written only when a run stops early
       end restart output
     end presto region main
   end presto procedure indent
