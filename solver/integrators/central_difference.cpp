@@ -25,6 +25,8 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
       scale_factor_(tc.time_step_scale_factor),
       max_dt_(tc.maximum_time_step.value_or(std::numeric_limits<double>::infinity())),
       time_(tc.start_time) {
+  // A model assembled without build_model (tools, tests) runs as one rank.
+  if (model.domain.owned.size() != model.mass.size()) model.domain.init_serial(model.mesh.node_count(), model.mesh.element_count());
   const std::size_t n3 = 3 * static_cast<std::size_t>(model.mesh.node_count());
   u_.assign(n3, 0.0);
   v_.assign(n3, 0.0);
