@@ -128,6 +128,23 @@ class ContactManager {
   };
   std::vector<Overlap> initial_overlaps(const double* x, int worst_count);
 
+  /// What the manager carries from one step to the next (search results, the face each slave node
+  /// was over, positions at the last search, nodal outputs): saved in restart files so that a
+  /// resumed run repeats the uninterrupted one bit for bit (contact/contact_manager_state.cpp).
+  struct PassState {
+    std::vector<int> candidate_offset, candidates, last_face;
+    std::vector<double> x_at_search, gap;
+    bool searched = false;
+  };
+  struct State {
+    std::vector<PassState> passes;
+    std::vector<double> traction, status;
+    long total_searches = 0;
+  };
+  State state() const;
+  /// Throws std::invalid_argument when `s` does not fit this manager's surfaces and passes.
+  void restore(const State& s);
+
  private:
   struct Pass {
     int slave, master;
@@ -174,7 +191,7 @@ class ContactManager {
 
   std::vector<ContactSurface> surfaces_;
   std::vector<Pass> passes_;
-  const std::vector<double>& mass_;
+  std::vector<double> mass_;  // a copy: the manager outlives the set-up model in parallel runs
   double dt_ref_;
   BucketSearch bucket_;
   std::vector<double> traction_, status_;

@@ -278,6 +278,16 @@ struct HistoryOutputSpec {
   SourceLocation where;
 };
 
+/// `begin restart output [NAME]`: restart files in the output folder, written every `step increment`
+/// steps and/or every `wall time increment` seconds of wall-clock time (at least one of the two),
+/// into a ring of `ring size` files restart_0.h5, restart_1.h5, ...; restart.h5 is always the newest.
+struct RestartOutputSpec {
+  std::optional<int> step_increment;
+  std::optional<double> wall_time_increment;  // s of wall-clock time
+  int ring_size = 2;
+  SourceLocation where;
+};
+
 /// `begin presto region NAME`.
 struct RegionSpec {
   std::string name;
@@ -293,6 +303,7 @@ struct RegionSpec {
   std::optional<ContactSpec> contact;
   std::optional<ResultsOutputSpec> results;
   std::optional<HistoryOutputSpec> history;
+  std::optional<RestartOutputSpec> restart;
   SourceLocation where;
 };
 

@@ -405,6 +405,15 @@ class Builder {
         o.reaction_force_node_sets = words(c, "reaction force");
         o.displacement_node_sets = words(c, "mean displacement");
         r.history = o;
+      } else if (t == "restart output") {
+        RestartOutputSpec o;
+        o.where = c.where;
+        if (auto n = optional_real(c, "step increment")) o.step_increment = static_cast<int>(*n);
+        o.wall_time_increment = optional_real(c, "wall time increment");
+        o.ring_size = static_cast<int>(real(c, "ring size", 2.0));
+        if (!o.step_increment && !o.wall_time_increment)
+          error(c.where, c, "'begin restart output' needs 'step increment = N' and/or 'wall time increment = T'");
+        r.restart = o;
       }
     }
     return r;

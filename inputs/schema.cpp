@@ -217,7 +217,8 @@ std::vector<BlockSchema> build_table() {
                 {"silent boundary"},
                 {"contact definition", 0, 1},
                 {"results output", 0, 1},
-                {"history output", 0, 1}},
+                {"history output", 0, 1},
+                {"restart output", 0, 1}},
                false, "boundary conditions and output"});
 
   {
@@ -336,6 +337,13 @@ std::vector<BlockSchema> build_table() {
     history.keys.push_back(text("mean displacement", ValueKind::strings, false, "node sets"));
     t.push_back(history);
   }
+  t.push_back({"restart output", NameRule::optional, {}, {}, true,
+               {integer("step increment", at_least(1), false, "", "write a restart file every this many steps"),
+                real("wall time increment", dim::time, positive(), false, "",
+                     "write a restart file every this much wall-clock time"),
+                integer("ring size", at_least(1), false, "2", "restart files kept (restart_0.h5 ...), oldest overwritten")},
+               {},
+               false, "restart files: the full state, for `tribex run DECK --restart OUT/restart.h5`"});
   return t;
 }
 

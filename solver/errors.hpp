@@ -20,4 +20,12 @@ class NumericalFailure : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Parallel runs: another rank met an error (it prints the one message); this rank stops with the
+/// same exit code and prints nothing.
+class StoppedByOtherRank : public std::runtime_error {
+ public:
+  explicit StoppedByOtherRank(int code) : std::runtime_error("stopped by another rank"), exit_code(code) {}
+  int exit_code;
+};
+
 }  // namespace tribex::solver

@@ -228,6 +228,7 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     for (const auto& s : side_set(m, p.side_set, p.where)) {
       const auto nodes = m.side_nodes(s);
       load.face_nodes.insert(load.face_nodes.end(), nodes.begin(), nodes.end());
+      load.face_element.push_back(s.element);
     }
     load.function = function_index(model, p.function);
     load.scale = p.scale_factor;
@@ -286,6 +287,7 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
                                tc.maximum_time_step.value_or(INFINITY));
     model.contact = build_contact(*region.contact, model, dt, &model.preflight);
   }
+  model.domain.init_serial(nn, m.element_count());
   return model;
 }
 

@@ -13,6 +13,7 @@
 #include "inputs/deck.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/element_block.hpp"
+#include "solver/parallel/domain.hpp"
 #include "solver/time_function.hpp"
 
 namespace tribex::solver {
@@ -30,6 +31,7 @@ struct Constraints {
 /// current area vector (outward), p > 0 pushing into the body.
 struct PressureLoad {
   std::vector<int> face_nodes;  // [face][4]
+  std::vector<int> face_element;  // [face] the element the face belongs to (partitioning)
   int function = -1;
   double scale = 1.0;           // Pa per function unit
 };
@@ -68,6 +70,8 @@ struct Model {
   /// Contact, when the region has a contact definition (set up by build_model).
   std::unique_ptr<contact::ContactManager> contact;
   std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)
+  /// This rank's share of a parallel run (parallel::localize); identity on one rank.
+  parallel::Domain domain;
 };
 
 /// Build the mesh named by the region and everything above from a parsed deck. Throws SetupError

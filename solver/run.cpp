@@ -8,7 +8,9 @@
 #include <csignal>
 #include <filesystem>
 #include <memory>
+#include <map>
 #include <optional>
+#include <span>
 
 #include "solver/errors.hpp"
 #include "solver/integrators/central_difference.hpp"
@@ -17,6 +19,11 @@
 #include "solver/output/results_writer.hpp"
 #include "solver/output/run_log.hpp"
 #include "solver/output/summary_writer.hpp"
+#include "mesh/mesh_error.hpp"
+#include "solver/parallel/communicator.hpp"
+#include "solver/parallel/partition.hpp"
+#include "solver/restart/restart_output.hpp"
+#include "solver/restart/state_archive.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -52,6 +59,8 @@ class Schedule {
     if (steps_) return step % *steps_ == 0;
     return t >= next_ - 1e-9 * *dt_;
   }
+  double next() const { return next_; }
+  void set_next(double t) { next_ = t; }
   void done(double t) {
     if (dt_)
       while (next_ <= t + 1e-9 * *dt_) next_ += *dt_;
@@ -73,23 +82,59 @@ std::string human_seconds(double s) {
   return format("%.1f h", s / 3600);
 }
 
+// Exit code of an error thrown inside run_deck (the CLI maps the same types the same way).
+int exit_code_of(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const SetupError&) {
+    return 2;
+  } catch (const mesh::MeshError&) {
+    return 2;
+  } catch (const NumericalFailure&) {
+    return 3;
+  } catch (const StoppedByOtherRank& s) {
+    return s.exit_code;
+  } catch (...) {
+    return 1;
+  }
+}
+
+/// Collective: when any rank holds an error, the lowest such rank rethrows it (and prints it) and
+/// every other rank throws StoppedByOtherRank with its exit code. For the steps of the set-up that
+/// can fail on one rank only (files written by rank 0, a rank's group of a restart file).
+void agree_on_errors(const std::exception_ptr& error) {
+  if (parallel::size() == 1) {
+    if (error) std::rethrow_exception(error);
+    return;
+  }
+  const double first = parallel::min(error ? double(parallel::rank()) : 1e9);
+  if (first >= 1e9) return;
+  int code = error ? exit_code_of(error) : 0;
+  parallel::broadcast(&code, 1, static_cast<int>(first));
+  if (parallel::rank() == static_cast<int>(first)) std::rethrow_exception(error);
+  throw StoppedByOtherRank(code);
+}
+
 }  // namespace
 
 RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   const auto wall_start = Clock::now();
-  RunLog log(options.quiet);
+  const bool root = parallel::is_root();
+  const int ranks = parallel::size();
+  RunLog log(options.quiet || !root);  // printed once, by rank 0
   const auto& region = deck.procedure.region;
   const auto& tc = deck.procedure.time_control;
 
   log.say(format("tribex %s | deck %s", TRIBEX_VERSION, deck.path.c_str()));
-  // Bad input is found here, before any file is written.
-  Model model = build_model(deck);
-  const auto& mesh = model.mesh;
+  // Bad input is found here, before any file is written. Every rank builds the whole model (the
+  // same checks, the same errors), then keeps its part (parallel::localize).
+  Model global = build_model(deck);
+  const auto& mesh = global.mesh;
   const int elements = mesh.element_count();
 
   log.say(format("mesh: %d nodes, %d hex8 elements in %zu block(s); total mass %.6g kg", mesh.node_count(), elements,
-                 model.blocks.size(), model.total_mass));
-  for (const auto& b : model.blocks)
+                 global.blocks.size(), global.total_mass));
+  for (const auto& b : global.blocks)
     log.say(format("  block %-16s %8d elements  %s  %s", b.name.c_str(), b.count,
                    std::holds_alternative<materials::LinearElastic>(b.material) ? "elastic" : "neo_hookean",
                    b.formulation == inputs::ElementFormulation::mean_quadrature ? "mean_quadrature" : "fully_integrated"));
@@ -107,16 +152,16 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     log.say(format("element quality: scaled Jacobian min %.3f (element %d), mean %.3f", worst, worst_element + 1,
                    elements ? sum / elements : 0.0));
   }
-  const StableStep stable0 = compute_stable_time_step(model, nullptr);
+  const StableStep stable0 = compute_stable_time_step(global, nullptr);
   log.say(format("stable time step %.6g s (element %d controls it); scale factor %.3g => dt = %.6g s", stable0.dt,
                  stable0.controlling_element + 1, tc.time_step_scale_factor,
                  std::min(stable0.dt * tc.time_step_scale_factor, tc.maximum_time_step.value_or(INFINITY))));
   const double est_steps = (tc.termination_time - tc.start_time) /
                            std::min(stable0.dt * tc.time_step_scale_factor, tc.maximum_time_step.value_or(INFINITY));
   log.say(format("termination time %.6g s: about %.0f steps", tc.termination_time, std::ceil(est_steps)));
-  log.say(format("constraints: %zu dofs; silent-boundary nodes: %zu; pressure loads: %zu", model.constraints.dof.size(),
-                 model.silent.node.size(), model.pressures.size()));
-  for (const auto& line : model.preflight) log.say(line);
+  log.say(format("constraints: %zu dofs; silent-boundary nodes: %zu; pressure loads: %zu", global.constraints.dof.size(),
+                 global.silent.node.size(), global.pressures.size()));
+  for (const auto& line : global.preflight) log.say(line);
 
   RunSummary summary;
   summary.elements = elements;
@@ -126,14 +171,69 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     return summary;
   }
 
+  // This rank's part. The whole mesh is kept until results.h5 has been created (rank 0 writes it
+  // there, once); node-set sizes are those of the whole mesh.
+  std::vector<int> part;
+  try {
+    part = parallel::partition_elements(mesh, ranks);
+  } catch (const std::runtime_error& e) {
+    throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks) + " ranks: " + e.what() +
+                     "; run with fewer ranks (mpirun -np N)");
+  }
+  std::optional<mesh::Mesh> whole_mesh;
+  if (ranks > 1 && region.results) whole_mesh = mesh;
+  std::map<std::string, double> set_size;
+  for (const auto& [name, nodes] : mesh.node_sets) set_size[name] = double(nodes.size());
+  if (ranks > 1) {
+    int shared = 0;
+    std::vector<int> holder(static_cast<std::size_t>(mesh.node_count()), -1);
+    for (int e = 0; e < elements; ++e)
+      for (int I = 0; I < 8; ++I) {
+        int& h = holder[mesh.connectivity[8 * e + I]];
+        if (h >= 0 && h != part[e] && h < 1 << 20) {
+          ++shared;
+          h = 1 << 20;
+        } else if (h < 0) {
+          h = part[e];
+        }
+      }
+    log.say(format("parallel: %d ranks, METIS k-way partition of the element graph; %d nodes on partition boundaries",
+                   ranks, shared));
+  }
+  Model model = parallel::localize(std::move(global), part);
+  auto& domain = model.domain;
+
+  // A restart file is read and checked against the model before any output file is touched.
+  CentralDifference integrator(model, tc);
+  std::optional<StateArchive> resume;
+  if (!options.restart_path.empty()) {
+    std::exception_ptr error;
+    try {
+      resume = read_restart_file(options.restart_path);
+      integrator.restore_state(*resume);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    agree_on_errors(error);
+    log.say(format("restart: resuming from %s at step %ld, t = %.6g s", options.restart_path.c_str(),
+                   integrator.step_index(), integrator.time()));
+  }
+
   // Outputs.
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(options.output_directory, ec);
-  if (ec) throw SetupError("cannot create output folder " + options.output_directory + ": " + ec.message());
   const fs::path out(options.output_directory);
-  log.open((out / "log.txt").string());
-  log.record("# resolved deck (defaults filled in, SI units)\n" + deck.resolved_text + "\n");
+  std::exception_ptr output_error;  // files are made by rank 0; agreed on below
+  if (root) {
+    try {
+      std::error_code ec;
+      fs::create_directories(options.output_directory, ec);
+      if (ec) throw SetupError("cannot create output folder " + options.output_directory + ": " + ec.message());
+      log.open((out / "log.txt").string());
+      log.record("# resolved deck (defaults filled in, SI units)\n" + deck.resolved_text + "\n");
+    } catch (...) {
+      output_error = std::current_exception();
+    }
+  }
 
   std::vector<std::string> extra = {};
   const auto* hist_spec = region.history ? &*region.history : nullptr;
@@ -143,23 +243,77 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     for (const auto& s : hist_spec->displacement_node_sets)
       for (const char* c : {"x", "y", "z"}) extra.push_back(s + "_displacement_" + c);
   }
-  HistoryWriter history((out / "history.csv").string(), extra);
-  std::vector<const std::vector<int>*> reaction_sets, displacement_sets;
-  if (hist_spec) {
-    for (const auto& s : hist_spec->reaction_force_node_sets) reaction_sets.push_back(&mesh.node_sets.at(s));
-    for (const auto& s : hist_spec->displacement_node_sets) displacement_sets.push_back(&mesh.node_sets.at(s));
+  std::optional<HistoryWriter> history;
+  if (root && !output_error) {
+    try {
+      history.emplace((out / "history.csv").string(), extra, resume ? integrator.step_index() : -1);
+    } catch (...) {
+      output_error = std::current_exception();
+    }
   }
+  // Node-set columns: sums over the set's nodes this rank owns, then over the ranks.
+  std::vector<std::vector<int>> reaction_sets, displacement_sets;
+  std::vector<double> displacement_set_size;
+  const auto owned_nodes_of = [&](const std::string& name) {
+    std::vector<int> nodes;
+    for (int l : model.mesh.node_sets.at(name))
+      if (domain.owned[l] > 0.0) nodes.push_back(l);
+    return nodes;
+  };
+  if (hist_spec) {
+    for (const auto& s : hist_spec->reaction_force_node_sets) reaction_sets.push_back(owned_nodes_of(s));
+    for (const auto& s : hist_spec->displacement_node_sets) {
+      displacement_sets.push_back(owned_nodes_of(s));
+      displacement_set_size.push_back(set_size.at(s));
+    }
+  }
+  std::vector<double> set_sums(3 * (reaction_sets.size() + displacement_sets.size()), 0.0);
   Schedule history_schedule(hist_spec ? hist_spec->time_increment : std::nullopt,
                             hist_spec ? hist_spec->step_increment : std::optional<int>(1), tc.start_time);
 
   std::unique_ptr<ResultsWriter> results;
   std::optional<Schedule> field_schedule;
+  agree_on_errors(output_error);
+  // results.h5: in a parallel run every rank writes the rows of its owned nodes and its elements
+  // (runs of consecutive global rows) collectively with parallel HDF5.
+  ResultsSlab slab;
   if (region.results) {
-    results = std::make_unique<ResultsWriter>(out.string(), mesh);
+    const auto add_row = [](std::vector<std::array<unsigned long long, 2>>& runs, unsigned long long row) {
+      if (!runs.empty() && runs.back()[0] + runs.back()[1] == row)
+        ++runs.back()[1];
+      else
+        runs.push_back({row, 1});
+    };
+    for (int l : domain.owned_local_nodes()) add_row(slab.node_runs, static_cast<unsigned long long>(domain.global_node[l]));
+    for (int e : domain.global_element) add_row(slab.element_runs, static_cast<unsigned long long>(e));
+    slab.node_rows = static_cast<long long>(domain.owned_local_nodes().size());
+    slab.element_rows = static_cast<long long>(domain.global_element.size());
+    std::exception_ptr error;
+    try {
+      results = std::make_unique<ResultsWriter>(out.string(), whole_mesh ? *whole_mesh : model.mesh,
+                                                ranks > 1 ? &slab : nullptr);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    whole_mesh.reset();
+    agree_on_errors(error);
     field_schedule.emplace(region.results->time_increment, region.results->step_increment, tc.start_time);
   }
 
-  CentralDifference integrator(model, tc);
+  if (resume) {
+    history_schedule.set_next(resume->scalar("history_next"));
+    if (field_schedule) field_schedule->set_next(resume->scalar("results_next"));
+  }
+  std::optional<RestartOutput> restart_output;
+  if (region.restart) restart_output.emplace(*region.restart, out.string());
+  const auto write_restart = [&]() {
+    StateArchive archive;
+    integrator.save_state(archive);
+    archive.put("history_next", history_schedule.next());
+    archive.put("results_next", field_schedule ? field_schedule->next() : 0.0);
+    const std::string file = restart_output->write(archive);
+    log.record(format("restart file %s at step %ld, t = %.9g s\n", file.c_str(), integrator.step_index(), integrator.time()));
+  };
   bool closing = false;
   const double end_time = tc.termination_time;
   const auto element_fields_due = [&](double t, long n) {
@@ -170,8 +324,9 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
 
   std::vector<double> row;
   row.reserve(HistoryWriter::standard_columns().size() + extra.size());
-  std::vector<double> element_stress(6 * static_cast<std::size_t>(elements), 0.0);
-  const bool terminal = !options.quiet && isatty(STDERR_FILENO);
+  std::vector<double> element_stress(6 * static_cast<std::size_t>(model.mesh.element_count()), 0.0);
+  std::vector<std::vector<double>> packed;  // parallel: this rank's rows of each field (output steps only)
+  const bool terminal = root && !options.quiet && isatty(STDERR_FILENO);
   auto last_progress = Clock::now();
   Clock::time_point loop_start;
   const double span = end_time - tc.start_time;
@@ -191,33 +346,50 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                              C.compressive_force, C.tangential_force, C.junction_capacity, C.adhesion_energy,
                              C.friction_power, C.radius_pressure_fit, C.real_area, C.asperity_contacts,
                              C.apparent_pressure()});
-      for (const auto* set : reaction_sets) {
-        double r[3] = {0, 0, 0};
-        for (int node : *set)
-          for (int i = 0; i < 3; ++i) r[i] += integrator.reaction()[3 * node + i];
-        row.insert(row.end(), r, r + 3);
+      std::fill(set_sums.begin(), set_sums.end(), 0.0);
+      std::size_t c = 0;
+      for (const auto& set : reaction_sets) {
+        for (int node : set)
+          for (int i = 0; i < 3; ++i) set_sums[c + i] += integrator.reaction()[3 * node + i];
+        c += 3;
       }
-      for (const auto* set : displacement_sets) {
-        double d[3] = {0, 0, 0};
-        for (int node : *set)
-          for (int i = 0; i < 3; ++i) d[i] += integrator.displacement()[3 * node + i];
-        for (double& x : d) x /= static_cast<double>(set->size());
-        row.insert(row.end(), d, d + 3);
+      for (const auto& set : displacement_sets) {
+        for (int node : set)
+          for (int i = 0; i < 3; ++i) set_sums[c + i] += integrator.displacement()[3 * node + i];
+        c += 3;
       }
-      history.write_row(n, row);
+      parallel::sum(set_sums.data(), static_cast<int>(set_sums.size()));
+      for (std::size_t k = 0; k < displacement_sets.size(); ++k)
+        for (int i = 0; i < 3; ++i) set_sums[3 * (reaction_sets.size() + k) + i] /= displacement_set_size[k];
+      row.insert(row.end(), set_sums.begin(), set_sums.end());
+      if (history) history->write_row(n, row);
       history_schedule.done(t);
     }
     if (field_schedule && field_schedule->due(t, n, closing)) {
+      // Parallel runs write the rows this rank owns: nodal fields packed from local (or, for the
+      // contact fields, global) numbering; the rank's elements are its rows already.
       std::vector<FieldView> nodal, element;
+      std::size_t g = 0;
+      const auto owned_rows = [&](const std::vector<double>& values, int components, bool global_numbering) {
+        if (domain.serial()) return std::span<const double>(values);
+        if (packed.size() <= g) packed.emplace_back();
+        auto& buffer = packed[g++];
+        buffer.clear();
+        for (int l : domain.owned_local_nodes()) {
+          const std::size_t r = static_cast<std::size_t>(global_numbering ? domain.global_node[l] : l);
+          buffer.insert(buffer.end(), values.begin() + components * r, values.begin() + components * (r + 1));
+        }
+        return std::span<const double>(buffer);
+      };
       for (const auto& name : region.results->nodal_variables) {
         const std::vector<double>* v = nullptr;
         if (name == "displacement") v = &integrator.displacement();
         if (name == "velocity") v = &integrator.velocity();
         if (name == "acceleration") v = &integrator.acceleration();
         if (name == "force") v = &integrator.force();
-        if (v) nodal.push_back({name, 3, *v});
-        if (model.contact && name == "contact_traction") nodal.push_back({name, 3, model.contact->traction()});
-        if (model.contact && name == "contact_status") nodal.push_back({name, 1, model.contact->status()});
+        if (v) nodal.push_back({name, 3, owned_rows(*v, 3, false)});
+        if (model.contact && name == "contact_traction") nodal.push_back({name, 3, owned_rows(model.contact->traction(), 3, true)});
+        if (model.contact && name == "contact_status") nodal.push_back({name, 1, owned_rows(model.contact->status(), 1, true)});
       }
       for (const auto& name : region.results->element_variables) {
         if (name != "stress") continue;
@@ -225,7 +397,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
           std::copy(b.stress.begin(), b.stress.end(), element_stress.begin() + 6 * b.first_element);
         element.push_back({"stress", 6, element_stress});
       }
-      results->write_step(t, nodal, element);
+      if (results) results->write_step(t, nodal, element);
       field_schedule->done(t);
     }
     if (region.energy_error_limit && E.relative_error() > *region.energy_error_limit && n > 0)
@@ -247,10 +419,16 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   log.say("running ...");
   loop_start = Clock::now();
   try {
-    integrator.init();
+    if (!resume) integrator.init();
     while (!integrator.finished()) {
       integrator.step(on_time_n);
-      if (g_stop_signal) break;
+      bool stop = g_stop_signal || (options.stop_at_step >= 0 && integrator.step_index() >= options.stop_at_step);
+      if (ranks > 1) stop = parallel::max(static_cast<long long>(stop)) > 0;  // every rank stops at the same step
+      if (restart_output && (stop || restart_output->due(integrator.step_index()))) write_restart();
+      if (stop) {
+        if (!g_stop_signal) g_stop_signal = SIGINT;
+        break;
+      }
     }
     closing = true;
     integrator.close(on_time_n);
@@ -262,16 +440,18 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   }
   summary.loop_seconds = seconds_since(loop_start);
   if (terminal) std::fprintf(stderr, "\n");
-  if (results) results->flush();
+  if (results) results->flush();  // collective in a parallel run: every rank gets here
 
   summary.steps = integrator.step_index();
   summary.contact_seconds = integrator.contact_seconds();
+  summary.ranks = ranks;
+  summary.communication_seconds = model.domain.communication_seconds;
   summary.final_time = integrator.time();
   summary.energy_error = integrator.energies().relative_error();
   summary.ns_per_element_step =
       summary.steps > 0 && elements > 0 ? 1e9 * summary.loop_seconds / (double(elements) * double(summary.steps)) : 0.0;
   summary.wall_seconds = seconds_since(wall_start);
-  write_summary_json((out / "summary.json").string(), summary, integrator.energies(), stable0);
+  if (root) write_summary_json((out / "summary.json").string(), summary, integrator.energies(), stable0);
   log.say(format("%ld steps to t = %.6g s in %.3g s wall (loop %.3g s, %.1f ns per element per step); energy error %.3e",
                  summary.steps, summary.final_time, summary.wall_seconds, summary.loop_seconds,
                  summary.ns_per_element_step, summary.energy_error));
@@ -281,6 +461,10 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     log.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", summary.contact_seconds,
                    summary.loop_seconds > 0 ? 100.0 * summary.contact_seconds / summary.loop_seconds : 0.0,
                    model.contact->total_searches()));
+  if (ranks > 1)
+    log.say(format("parallel: %d ranks; rank 0 spent %.3g s of the loop (%.1f %%) in communication", ranks,
+                   summary.communication_seconds,
+                   summary.loop_seconds > 0 ? 100.0 * summary.communication_seconds / summary.loop_seconds : 0.0));
   log.say(summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status);
   return summary;
 }

@@ -13,6 +13,8 @@ struct RunOptions {
   std::string output_directory;  // created if missing
   bool quiet = false;            // no progress line, no echo to the terminal (log.txt still written)
   bool check_only = false;       // set up, print the pre-flight report, do not integrate
+  std::string restart_path;      // non-empty: resume from this restart file (same deck, same rank count)
+  long stop_at_step = -1;        // >= 0: stop as if interrupted after this step (writes a restart file)
 };
 
 struct RunSummary {
@@ -25,6 +27,8 @@ struct RunSummary {
   double loop_seconds = 0.0;
   double ns_per_element_step = 0.0;  // loop time / (elements * steps)
   double contact_seconds = 0.0;      // part of the loop spent in contact search and enforcement
+  int ranks = 1;                     // MPI ranks of the run
+  double communication_seconds = 0.0;  // rank 0's loop time in halo exchange, surface gather, energy sums
   int elements = 0;
   int nodes = 0;
 };

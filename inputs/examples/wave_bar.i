@@ -1,7 +1,7 @@
 # wave_bar.i -- a plane P wave travelling down a silicon column in uniaxial strain.
 #
 # Run:    build/bin/tribex run inputs/examples/wave_bar.i -o wave_bar_output
-# MPI:    (parallel runs come with the parallel-runs issue)
+# MPI:    mpirun -np 2 build/bin/tribex run inputs/examples/wave_bar.i -o wave_bar_np2
 # Check:  /usr/bin/python3 verification/wave_bar/compare.py wave_bar_output/history.csv
 #
 #        bar_zmax  <- velocity ramped to 1 m/s in 1 ps (the "piston")

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "solver/errors.hpp"
+#include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -24,6 +25,8 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
       scale_factor_(tc.time_step_scale_factor),
       max_dt_(tc.maximum_time_step.value_or(std::numeric_limits<double>::infinity())),
       time_(tc.start_time) {
+  // A model assembled without build_model (tools, tests) runs as one rank.
+  if (model.domain.owned.size() != model.mass.size()) model.domain.init_serial(model.mesh.node_count(), model.mesh.element_count());
   const std::size_t n3 = 3 * static_cast<std::size_t>(model.mesh.node_count());
   u_.assign(n3, 0.0);
   v_.assign(n3, 0.0);
@@ -34,8 +37,13 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   f_ext_.assign(n3, 0.0);
   reaction_.assign(n3, 0.0);
   if (model.contact) {
-    x_ = model.mesh.coordinates;
-    f_contact_.assign(n3, 0.0);
+    const std::size_t g3 = 3 * static_cast<std::size_t>(model.domain.global_node_count);
+    x_.assign(g3, 0.0);
+    v_contact_.assign(g3, 0.0);
+    f_other_contact_.assign(g3, 0.0);
+    f_contact_.assign(g3, 0.0);
+    xl_ = model.mesh.coordinates;
+    model.domain.set_surface(model.contact->surface_nodes());
   }
   if (!model.silent.node.empty()) {
     silent_index_.assign(model.mass.size(), -1);
@@ -43,14 +51,35 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   }
   inverse_mass_.resize(model.mass.size());
   for (std::size_t n = 0; n < model.mass.size(); ++n) inverse_mass_[n] = 1.0 / model.mass[n];
+  owned_mass_.resize(model.mass.size());
+  for (std::size_t n = 0; n < model.mass.size(); ++n) owned_mass_[n] = model.domain.owned[n] * model.mass[n];
+}
+
+void CentralDifference::raise_pending_failure() {
+  if (model_.domain.serial()) {
+    if (!pending_failure_.empty()) throw NumericalFailure(pending_failure_);
+    return;
+  }
+  const double me = pending_failure_.empty() ? 1e9 : double(model_.domain.rank);
+  const double first = parallel::min(me);
+  if (first >= 1e9) return;
+  std::string message = pending_failure_;
+  parallel::broadcast(message, static_cast<int>(first));
+  throw NumericalFailure(message);
 }
 
 double CentralDifference::choose_dt() {
   if (step_ % dt_update_interval_ == 0 || stable_.dt <= 0.0) {
     stable_ = compute_stable_time_step(model_, u_.data());
-    if (stable_.inverted_element >= 0)
-      throw NumericalFailure("element " + std::to_string(stable_.inverted_element + 1) + " inverted (non-positive volume)" +
-                             where_and_when(step_, time_));
+    stable_.controlling_element = global_element(stable_.controlling_element);
+    if (stable_.inverted_element >= 0 && pending_failure_.empty())
+      pending_failure_ = "element " + std::to_string(global_element(stable_.inverted_element) + 1) +
+                         " inverted (non-positive volume)" + where_and_when(step_, time_);
+    raise_pending_failure();
+    if (!model_.domain.serial()) {
+      // min over ranks; ties go to the lowest global element, as in the serial loop
+      stable_.dt = parallel::min_location(stable_.dt, stable_.controlling_element);
+    }
   }
   // Rough-surface contact springs A_I dp/dd bound the step too (none for the other models: the
   // penalty is scaled to the step); evaluated at the last contact force computation.
@@ -74,7 +103,8 @@ void CentralDifference::init() {
   v_n_ = v_;
   v_prev_ = v_;
   double ke = 0.0;
-  for (std::size_t d = 0; d < v_.size(); ++d) ke += 0.5 * model_.mass[d / 3] * v_[d] * v_[d];
+  for (std::size_t d = 0; d < v_.size(); ++d) ke += 0.5 * owned_mass_[d / 3] * v_[d] * v_[d];
+  parallel::sum(&ke, 1);
   const bool stress0 = wants_stress_ && wants_stress_(time_, 0);
   compute_forces(time_, stress0);
   energies_.kinetic = ke;
@@ -116,29 +146,41 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
   viscous_power_ = 0.0;
   for (auto& blk : model_.blocks) {
     const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), u_.data(), v_.data(), f_.data(), want_stress);
-    if (totals.first_inverted >= 0)
-      throw NumericalFailure("element " + std::to_string(totals.first_inverted + 1) + " of block '" + blk.name +
-                             "' inverted (det F <= 0)" + where_and_when(step_ + 1, t));
+    if (totals.first_inverted >= 0 && pending_failure_.empty())
+      pending_failure_ = "element " + std::to_string(global_element(totals.first_inverted) + 1) + " of block '" +
+                         blk.name + "' inverted (det F <= 0)" + where_and_when(step_ + 1, t);
     strain += totals.strain_energy;
     hourglass += totals.hourglass_energy;
     viscous_power_ += totals.viscous_power;
   }
+  // This rank's parts; account_time_n sums them over the ranks.
   energies_.internal = strain;
   energies_.hourglass = hourglass;
+  // Partial nodal forces of shared nodes summed over the ranks that hold them.
+  model_.domain.sum_shared(f_.data());
+  raise_pending_failure();
 
   if (model_.contact) {
+    // Every rank runs the whole contact on the gathered surface (global numbering) and adds the
+    // forces of the surface nodes it holds: the contact forces are never summed twice.
     const auto contact_start = std::chrono::steady_clock::now();
     const auto& X = model_.mesh.coordinates;
-    for (int node : model_.contact->surface_nodes())
-      for (int i = 0; i < 3; ++i) {
-        x_[3 * node + i] = X[3 * node + i] + u_[3 * node + i];
-        f_contact_[3 * node + i] = 0.0;
-      }
-    // f_ (internal + applied, no contact yet) and the last step size let the junction shear predict
-    // the slip of the coming velocity update (contact/contact_manager.hpp, step 5).
-    contact_totals_ = model_.contact->compute_forces(x_.data(), v_.data(), f_contact_.data(), f_.data(), dt_half_);
-    for (int node : model_.contact->surface_nodes())
-      for (int i = 0; i < 3; ++i) f_[3 * node + i] += f_contact_[3 * node + i];
+    const auto& surface = model_.contact->surface_nodes();
+    const auto& local = model_.domain.surface_local();
+    for (std::size_t k = 0; k < surface.size(); ++k) {
+      const int l = local[k];
+      if (l >= 0)
+        for (int i = 0; i < 3; ++i) xl_[3 * l + i] = X[3 * l + i] + u_[3 * l + i];
+      for (int i = 0; i < 3; ++i) f_contact_[3 * surface[k] + i] = 0.0;
+    }
+    // f_ (internal + applied, summed over the ranks, no contact yet) and the last step size let the
+    // junction shear predict the slip of the coming velocity update (contact/contact_manager.hpp, step 5).
+    model_.domain.gather_surface(xl_.data(), v_.data(), f_.data(), x_.data(), v_contact_.data(), f_other_contact_.data());
+    contact_totals_ = model_.contact->compute_forces(x_.data(), v_contact_.data(), f_contact_.data(),
+                                                     f_other_contact_.data(), dt_half_);
+    for (std::size_t k = 0; k < surface.size(); ++k)
+      if (const int l = local[k]; l >= 0)
+        for (int i = 0; i < 3; ++i) f_[3 * l + i] += f_contact_[3 * surface[k] + i];
     contact_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
   }
 }
@@ -208,57 +250,53 @@ void CentralDifference::apply_constraints() {
 }
 
 void CentralDifference::account_time_n() {
-  const auto& mass = model_.mass;
   // Kinetic energy in the form the central-difference scheme conserves exactly for linear
   // problems, KE^n = (1/2) v^{n-1/2} . M v^{n+1/2} (the "shadow" energy of the leapfrog), so the
   // energy balance measures the model, not the averaging of v^n. At n = 0, v^{-1/2} = v^0.
   double ke = 0.0;
   const double h = dt_n_;
   momentum_[0] = momentum_[1] = momentum_[2] = 0.0;
+  // Sums over nodes count each node once, on the rank that owns it (owned_mass_ is 0 elsewhere).
   for (std::size_t d = 0; d < v_.size(); ++d) {
-    momentum_[d % 3] += mass[d / 3] * (step_ == 0 ? v_prev_[d] : 0.5 * (v_prev_[d] + v_[d]));
+    momentum_[d % 3] += owned_mass_[d / 3] * (step_ == 0 ? v_prev_[d] : 0.5 * (v_prev_[d] + v_[d]));
     v_n_[d] = step_ == 0 ? v_prev_[d] : 0.5 * (v_prev_[d] + v_[d]);  // reported v^n
     a_[d] = (v_[d] - v_prev_[d]) / h;
-    ke += 0.5 * mass[d / 3] * v_prev_[d] * v_[d];
+    ke += 0.5 * owned_mass_[d / 3] * v_prev_[d] * v_[d];
   }
-  if (!std::isfinite(ke)) {
-    for (std::size_t d = 0; d < v_.size(); ++d)
-      if (!std::isfinite(v_[d]))
-        throw NumericalFailure("velocity of node " + std::to_string(d / 3 + 1) + " is not finite" + where_and_when(step_, time_) +
-                               " (instability: reduce the time step scale factor, check the loads and materials)");
-  }
-  energies_.kinetic = ke;
 
   // Work of the reactions and applied loads, in the pairing that makes the balance exact for
   // the scheme: W^{n} - W^{n-1} = (1/2) v^{n-1/2} . (dt^{n-1} F^{n-1} + dt^n F^n), which with the
   // shadow kinetic energy above gives KE + IE = E0 + W to round-off for linear problems (also
   // across the half first step and variable steps). The F^{n-1} half is kept from the last step.
   double power_left = 0.0, power_right = 0.0;
+  const auto& owned = model_.domain.owned;
   for (int dof : model_.constraints.dof) {
-    power_left += reaction_[dof] * v_prev_[dof];
-    power_right += reaction_[dof] * v_[dof];
+    power_left += owned[dof / 3] * reaction_[dof] * v_prev_[dof];
+    power_right += owned[dof / 3] * reaction_[dof] * v_[dof];
   }
   if (!model_.pressures.empty() || !model_.nodal_forces.empty())
     for (std::size_t d = 0; d < v_.size(); ++d) {
       power_left += f_ext_[d] * v_prev_[d];
       power_right += f_ext_[d] * v_[d];
     }
-  if (step_ > 0) energies_.external_work += 0.5 * (external_power_right_ + h * power_left);
-  external_power_right_ = h * power_right;
 
   // Contact: the energy held or dissipated by the interface is minus the work of the contact
   // forces on the bodies, in the same pairing.
+  double c_left = 0.0, c_right = 0.0;
   if (model_.contact) {
-    double c_left = 0.0, c_right = 0.0;
-    for (int node : model_.contact->surface_nodes())
+    const auto& surface = model_.contact->surface_nodes();
+    const auto& local = model_.domain.surface_local();
+    const auto& surface_owned = model_.domain.surface_owned();
+    for (std::size_t k = 0; k < surface.size(); ++k) {
+      const int l = local[k];
+      if (l < 0) continue;
+      const int node = surface[k];
       for (int i = 0; i < 3; ++i) {
-        c_left += f_contact_[3 * node + i] * v_prev_[3 * node + i];
-        c_right += f_contact_[3 * node + i] * v_[3 * node + i];
+        c_left += surface_owned[k] * f_contact_[3 * node + i] * v_prev_[3 * l + i];
+        c_right += surface_owned[k] * f_contact_[3 * node + i] * v_[3 * l + i];
       }
-    if (step_ > 0) energies_.contact_work -= 0.5 * (contact_power_right_ + h * c_left);
-    contact_power_right_ = h * c_right;
+    }
   }
-  if (step_ == 0) energies_.initial = energies_.kinetic + energies_.internal + energies_.hourglass;
 
   // Dashpots, mass damping and element viscosity: the force F^n = -C v^n (semi-implicit) or
   // -C v^{n-1/2} (element viscosity, evaluated with the last half-step velocity) enters the balance
@@ -276,19 +314,61 @@ void CentralDifference::account_time_n() {
     const double rn = vr[0] * nv[0] + vr[1] * nv[1] + vr[2] * nv[2];
     const double bl = vb[0] * vl[0] + vb[1] * vl[1] + vb[2] * vl[2];
     const double br = vb[0] * vr[0] + vb[1] * vr[1] + vb[2] * vr[2];
-    silent_left += sb.c_normal[k] * bn * ln + sb.c_tangential[k] * (bl - bn * ln);
-    silent_right += sb.c_normal[k] * bn * rn + sb.c_tangential[k] * (br - bn * rn);
+    silent_left += owned[node] * (sb.c_normal[k] * bn * ln + sb.c_tangential[k] * (bl - bn * ln));
+    silent_right += owned[node] * (sb.c_normal[k] * bn * rn + sb.c_tangential[k] * (br - bn * rn));
   }
+  double damp_left = 0.0, damp_right = 0.0;
+  if (model_.mass_damping > 0.0) {
+    for (std::size_t d = 0; d < v_.size(); ++d) {
+      damp_left += owned_mass_[d / 3] * v_n_[d] * v_prev_[d];
+      damp_right += owned_mass_[d / 3] * v_n_[d] * v_[d];
+    }
+  }
+
+  // One reduction over the ranks for every sum of this step (no-op on one rank).
+  double sums[16] = {ke,        momentum_[0],  momentum_[1],  momentum_[2],       power_left,        power_right,
+                     c_left,    c_right,       silent_left,   silent_right,      damp_left,         damp_right,
+                     energies_.internal,       energies_.hourglass,              viscous_power_,    0.0};
+  if (!model_.domain.serial()) {
+    const auto start = std::chrono::steady_clock::now();
+    parallel::sum(sums, 16);
+    model_.domain.communication_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  ke = sums[0];
+  for (int i = 0; i < 3; ++i) momentum_[i] = sums[1 + i];
+  power_left = sums[4];
+  power_right = sums[5];
+  c_left = sums[6];
+  c_right = sums[7];
+  silent_left = sums[8];
+  silent_right = sums[9];
+  damp_left = sums[10];
+  damp_right = sums[11];
+  energies_.internal = sums[12];
+  energies_.hourglass = sums[13];
+  viscous_power_ = sums[14];
+  if (!std::isfinite(ke)) {
+    for (std::size_t d = 0; d < v_.size() && pending_failure_.empty(); ++d)
+      if (!std::isfinite(v_[d]))
+        pending_failure_ = "velocity of node " + std::to_string(model_.domain.global_node[d / 3] + 1) + " is not finite" +
+                           where_and_when(step_, time_) +
+                           " (instability: reduce the time step scale factor, check the loads and materials)";
+    if (pending_failure_.empty() && model_.domain.serial()) pending_failure_ = "kinetic energy is not finite" + where_and_when(step_, time_);
+    raise_pending_failure();
+  }
+  energies_.kinetic = ke;
+  if (step_ > 0) energies_.external_work += 0.5 * (external_power_right_ + h * power_left);
+  external_power_right_ = h * power_right;
+  if (model_.contact) {
+    if (step_ > 0) energies_.contact_work -= 0.5 * (contact_power_right_ + h * c_left);
+    contact_power_right_ = h * c_right;
+  }
+  if (step_ == 0) energies_.initial = energies_.kinetic + energies_.internal + energies_.hourglass;
   energies_.silent_boundary_dissipation += 0.5 * (silent_power_right_ + h * silent_left);
   silent_power_right_ = h * silent_right;
   if (model_.mass_damping > 0.0) {
-    double left = 0.0, right = 0.0;
-    for (std::size_t d = 0; d < v_.size(); ++d) {
-      left += mass[d / 3] * v_n_[d] * v_prev_[d];
-      right += mass[d / 3] * v_n_[d] * v_[d];
-    }
-    energies_.damping_dissipation += 0.5 * model_.mass_damping * (damping_power_right_ + h * left);
-    damping_power_right_ = h * right;
+    energies_.damping_dissipation += 0.5 * model_.mass_damping * (damping_power_right_ + h * damp_left);
+    damping_power_right_ = h * damp_right;
   }
   // Element viscosity: F^n . v^{n-1/2} is the computed power; the v^{n+1/2} half is taken equal to
   // it (the element forces are not kept per node), an O(dt^2) per-step approximation.

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "inputs/deck.hpp"
@@ -28,6 +29,8 @@
 #include "solver/stable_time_step.hpp"
 
 namespace tribex::solver {
+
+struct StateArchive;
 
 class CentralDifference {
  public:
@@ -45,6 +48,12 @@ class CentralDifference {
   /// Completes the time-n quantities at the current (final) time and reports them; the state is
   /// then final (no further step()).
   void close(const std::function<void()>& on_time_n = {});
+
+  /// Restart (central_difference_state.cpp): the full state between two step() calls (time, step,
+  /// step sizes, nodal kinematics and forces, energy ledger with its lagged halves, element
+  /// outputs, contact state) into / from `archive`. restore_state() replaces init().
+  void save_state(StateArchive& archive) const;
+  void restore_state(const StateArchive& archive);
 
   bool finished() const { return time_ >= end_time_ * (1.0 - 1e-14) ; }
 
@@ -75,6 +84,11 @@ class CentralDifference {
   void apply_constraints();
   void account_time_n();
   double choose_dt();
+  /// Parallel runs: a rank that met a numerical failure keeps stepping to the next collective
+  /// point; there every rank learns of it and throws, the message coming from the lowest failing
+  /// rank. On one rank this throws at once.
+  void raise_pending_failure();
+  int global_element(int local) const { return local < 0 ? local : model_.domain.global_element[local]; }
 
   Model& model_;
   double end_time_, scale_factor_;
@@ -85,6 +99,8 @@ class CentralDifference {
   double dt_n_ = 0.0, dt_half_ = 0.0, dt_prev_half_ = 0.0;
   std::vector<double> u_, v_, v_prev_, v_n_, a_, f_, f_ext_, reaction_;
   std::vector<double> inverse_mass_;
+  std::vector<double> owned_mass_;  // [local node] mass where this rank owns the node, else 0 (energy sums)
+  std::string pending_failure_;     // a numerical failure met on this rank, raised collectively
   std::vector<int> silent_index_;  // [node] index into model.silent, -1 if none (empty: no silent nodes)
   Energies energies_;
   StableStep stable_;
@@ -92,7 +108,10 @@ class CentralDifference {
   double viscous_power_ = 0.0;        // element viscous dissipation rate of the last force pass
   double silent_power_right_ = 0.0, damping_power_right_ = 0.0, viscous_power_right_ = 0.0;
   // Contact: current positions of surface nodes, contact forces, totals, lagged contact power.
-  std::vector<double> x_, f_contact_;
+  // x_, v_contact_, f_other_contact_ (the summed non-contact forces) and f_contact_ are in global
+  // numbering (surface entries only), filled by the surface gather; xl_ holds X + u of this rank's
+  // surface nodes in local numbering.
+  std::vector<double> x_, f_contact_, v_contact_, f_other_contact_, xl_;
   contact::ContactTotals contact_totals_;
   double momentum_[3] = {0, 0, 0};
   double contact_seconds_ = 0.0;

@@ -51,6 +51,32 @@ void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_off
     fail(what, "write");
 }
 
+void write_row_runs(hid_t dataset, hid_t mem_type, const void* data, const std::vector<std::array<hsize_t, 2>>& runs,
+                    hsize_t cols, const std::string& what) {
+  const hsize_t width = std::max<hsize_t>(cols, 1);
+  hsize_t rows = 0;
+  for (const auto& r : runs) rows += r[1];
+  H5Handle file_space(H5Dget_space(dataset), H5Sclose);
+  const hsize_t mem_dims[2] = {std::max<hsize_t>(rows, 1), width};
+  H5Handle mem_space(H5Screate_simple(cols == 0 ? 1 : 2, mem_dims, nullptr), H5Sclose);
+  H5Handle dxpl(H5Pcreate(H5P_DATASET_XFER), H5Pclose);
+  if (!file_space.valid() || !mem_space.valid() || !dxpl.valid() || H5Pset_dxpl_mpio(dxpl.get(), H5FD_MPIO_COLLECTIVE) < 0)
+    fail(what, "prepare a collective write");
+  if (rows == 0) {
+    if (H5Sselect_none(file_space.get()) < 0 || H5Sselect_none(mem_space.get()) < 0) fail(what, "select no rows");
+  } else {
+    H5Sselect_none(file_space.get());
+    for (const auto& r : runs) {
+      const hsize_t start[2] = {r[0], 0}, count[2] = {r[1], width};
+      if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
+        fail(what, "select rows");
+    }
+  }
+  static const double nothing[9] = {};  // HDF5 wants a buffer even when this rank writes no rows
+  if (H5Dwrite(dataset, mem_type, mem_space.get(), file_space.get(), dxpl.get(), data ? data : nothing) < 0)
+    fail(what, "write");
+}
+
 void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what) {
   H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   H5Handle a(H5Acreate2(loc, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),

@@ -9,8 +9,10 @@
 
 #include <hdf5.h>
 
+#include <array>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace tribex::solver::output {
 
@@ -57,6 +59,12 @@ H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsi
 /// contiguous [rows][cols] buffer of `mem_type`, through explicit file and memory dataspaces.
 void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_offset, hsize_t rows,
                 hsize_t cols, const std::string& what);
+
+/// Parallel files (mpio driver): writes this rank's rows, given as runs {first row, row count}
+/// in ascending order, from a buffer holding those rows packed in run order, with a collective
+/// transfer. Every rank calls it for every dataset (a rank without rows selects none).
+void write_row_runs(hid_t dataset, hid_t mem_type, const void* data, const std::vector<std::array<hsize_t, 2>>& runs,
+                    hsize_t cols, const std::string& what);
 
 /// Writes a scalar double attribute `name` on `loc`.
 void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what);

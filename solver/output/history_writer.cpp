@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 
 #include "solver/errors.hpp"
 
@@ -27,13 +28,22 @@ const std::vector<std::string>& HistoryWriter::standard_columns() {
   return columns;
 }
 
-HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns) {
+HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns, long resume_step) {
+  std::string header = "step";
+  for (const auto& c : standard_columns()) header += "," + c;
+  for (const auto& c : extra_columns) header += "," + c;
+  std::string kept;  // rows of the interrupted run before the restart step
+  if (resume_step >= 0) {
+    std::ifstream old(path);
+    std::string line;
+    if (std::getline(old, line) && line == header)
+      while (std::getline(old, line) && !line.empty() && std::strtol(line.c_str(), nullptr, 10) < resume_step) kept += line + "\n";
+  }
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
-  std::fputs("step", file_);
-  for (const auto& c : standard_columns()) std::fprintf(file_, ",%s", c.c_str());
-  for (const auto& c : extra_columns) std::fprintf(file_, ",%s", c.c_str());
+  std::fputs(header.c_str(), file_);
   std::fputc('\n', file_);
+  std::fputs(kept.c_str(), file_);
   std::fflush(file_);
   columns_ = standard_columns().size() + extra_columns.size();
 }

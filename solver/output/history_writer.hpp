@@ -22,7 +22,9 @@ namespace tribex::solver {
 class HistoryWriter {
  public:
   /// Opens `path` and writes the header; `extra_columns` are appended after the standard ones.
-  HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns);
+  /// `resume_step` >= 0 (a restarted run): the rows of an existing `path` with the same header and
+  /// step < resume_step are kept, so the file reads as if the run had not been interrupted.
+  HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns, long resume_step = -1);
   ~HistoryWriter();
   HistoryWriter(const HistoryWriter&) = delete;
   HistoryWriter& operator=(const HistoryWriter&) = delete;

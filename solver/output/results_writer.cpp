@@ -15,6 +15,7 @@
 #include "solver/errors.hpp"
 #include "solver/output/h5_handles.hpp"
 #include "solver/output/xdmf_document.hpp"
+#include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -74,6 +75,10 @@ struct ResultsWriter::Impl {
   std::vector<FieldSpec> element_spec;
   std::vector<double> tensor_buffer;  // reused every step: full tensors expanded from Voigt
   double last_time = 0.0;
+  // Parallel: this rank's rows (runs) and whether it is rank 0.
+  bool parallel = false, root = true;
+  std::vector<std::array<hsize_t, 2>> node_runs, element_runs;
+  long long node_rows = 0, element_rows = 0;
 
   Impl(std::string dir, long long n, long long e, std::vector<std::string> block_names)
       : directory(std::move(dir)),
@@ -85,7 +90,7 @@ struct ResultsWriter::Impl {
 
   void check_fields(std::span<const FieldView> fields, long long entities, const char* kind,
                     const std::vector<FieldSpec>& spec, std::set<std::string>& seen) const;
-  void write_field(hid_t group, const FieldView& f, long long entities, const std::string& path);
+  void write_field(hid_t group, const FieldView& f, long long entities, const std::string& path, bool nodal);
 };
 
 void ResultsWriter::Impl::check_fields(std::span<const FieldView> fields, long long entities,
@@ -117,9 +122,10 @@ void ResultsWriter::Impl::check_fields(std::span<const FieldView> fields, long l
 }
 
 void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long entities,
-                                      const std::string& path) {
+                                      const std::string& path, bool nodal) {
   const int stored = stored_components(f.components);
   const auto rows = static_cast<hsize_t>(entities);
+  if (parallel) entities = nodal ? node_rows : element_rows;  // values hold this rank's rows only
   const auto cols = static_cast<hsize_t>(stored == 1 ? 0 : stored);  // scalars are 1-D [entity]
   H5Handle d = output::create_dataset(group, f.name, H5T_IEEE_F64LE, rows, cols, h5_path);
   const double* data = f.values.data();
@@ -132,11 +138,13 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
     }
     data = tensor_buffer.data();
   }
-  output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols,
-                     h5_path + ":" + path);
+  if (parallel)
+    output::write_row_runs(d.get(), H5T_NATIVE_DOUBLE, data, nodal ? node_runs : element_runs, cols, h5_path + ":" + path);
+  else
+    output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols, h5_path + ":" + path);
 }
 
-ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mesh) {
+ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab) {
   if (mesh.coordinates.size() % 3 != 0 || mesh.connectivity.size() % 8 != 0)
     throw std::invalid_argument("ResultsWriter: mesh arrays are not [n][3] and [e][8]");
   const long long n = mesh.node_count();
@@ -152,23 +160,43 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
   }
   impl_ = std::make_unique<Impl>(directory, n, e, names);
   QuietHdf5Errors quiet;
-
-  std::error_code ec;
-  std::filesystem::create_directories(directory, ec);
-  if (ec || !std::filesystem::is_directory(directory))
-    throw SetupError("cannot create output directory '" + directory + "': " +
-                     (ec ? ec.message() : std::string("a file of that name exists")) +
-                     "; choose another output directory or fix its permissions");
-  // fopen first: HDF5's own failure message is a multi-line stack without the errno text.
-  if (std::FILE* probe = std::fopen(impl_->h5_path.c_str(), "wb")) {
-    std::fclose(probe);
-  } else {
-    throw SetupError("cannot create results file '" + impl_->h5_path + "': " + std::strerror(errno) +
-                     "; choose another output directory or fix its permissions");
+  if (slab) {
+    impl_->parallel = true;
+    impl_->root = parallel::is_root();
+    for (const auto& r : slab->node_runs) impl_->node_runs.push_back({r[0], r[1]});
+    for (const auto& r : slab->element_runs) impl_->element_runs.push_back({r[0], r[1]});
+    impl_->node_rows = slab->node_rows;
+    impl_->element_rows = slab->element_rows;
   }
-  // Default (sec2) driver: the Open MPI flavour of HDF5 (H5_HAVE_PARALLEL) works serially without
-  // MPI_Init this way; the parallel version swaps in an mpio file-access property list.
-  impl_->file = H5Handle(H5Fcreate(impl_->h5_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+
+  // Rank 0 makes the folder and probes the file; every rank learns the outcome (one error, the
+  // same on every rank, instead of ranks waiting in a collective create).
+  std::error_code ec;
+  int status[2] = {1, 1};  // folder ok, file ok
+  std::string reason;
+  if (impl_->root) {
+    std::filesystem::create_directories(directory, ec);
+    status[0] = !ec && std::filesystem::is_directory(directory);
+    if (!status[0]) reason = ec ? ec.message() : std::string("a file of that name exists");
+    // fopen first: HDF5's own failure message is a multi-line stack without the errno text.
+    std::FILE* probe = status[0] ? std::fopen(impl_->h5_path.c_str(), "wb") : nullptr;
+    if (probe) std::fclose(probe);
+    status[1] = probe != nullptr;
+    if (status[0] && !status[1]) reason = std::strerror(errno);
+  }
+  if (impl_->parallel) {
+    parallel::broadcast(status, 2, 0);
+    parallel::broadcast(reason, 0);
+  }
+  if (!status[0])
+    throw SetupError("cannot create output directory '" + directory + "': " + reason +
+                     "; choose another output directory or fix its permissions");
+  if (!status[1])
+    throw SetupError("cannot create results file '" + impl_->h5_path + "': " + reason +
+                     "; choose another output directory or fix its permissions");
+  H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (impl_->parallel) H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL);
+  impl_->file = H5Handle(H5Fcreate(impl_->h5_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!impl_->file.valid())
     throw SetupError("cannot create results file '" + impl_->h5_path +
                      "': HDF5 H5Fcreate failed (is another run writing it? HDF5 locks open files)");
@@ -180,12 +208,19 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     output::create_group(f, "/steps", p);
     output::write_string_attribute(g.get(), "connectivity_order",
                                    "hex8 as VTK_HEXAHEDRON / physics.md 2.1, 0-based node indices", p);
+    // Parallel: the mesh is written once, by rank 0 (the others take part with no rows).
+    const auto write_all = [&](hid_t d, hid_t type, const void* data, hsize_t rows, hsize_t cols, const std::string& what) {
+      if (!impl_->parallel) return output::write_rows(d, type, data, 0, rows, cols, what);
+      std::vector<std::array<hsize_t, 2>> runs;
+      if (impl_->root) runs.push_back({0, rows});
+      output::write_row_runs(d, type, data, runs, cols, what);
+    };
     H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p);
-    output::write_rows(xyz.get(), H5T_NATIVE_DOUBLE, mesh.coordinates.data(), 0, n, 3, p + ":/mesh/coordinates");
+    write_all(xyz.get(), H5T_NATIVE_DOUBLE, mesh.coordinates.data(), n, 3, p + ":/mesh/coordinates");
     H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p);
-    output::write_rows(conn.get(), H5T_NATIVE_INT, mesh.connectivity.data(), 0, e, 8, p + ":/mesh/connectivity");
+    write_all(conn.get(), H5T_NATIVE_INT, mesh.connectivity.data(), e, 8, p + ":/mesh/connectivity");
     H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p);
-    output::write_rows(bid.get(), H5T_NATIVE_INT, block_id.data(), 0, e, 0, p + ":/mesh/block_id");
+    write_all(bid.get(), H5T_NATIVE_INT, block_id.data(), e, 0, p + ":/mesh/block_id");
     std::string joined;
     for (std::size_t b = 0; b < names.size(); ++b) {
       if (b > 0) joined += '\n';
@@ -208,8 +243,8 @@ void ResultsWriter::write_step(double time, std::span<const FieldView> nodal,
                                 " must be finite and larger than the previous step's " +
                                 std::to_string(m.last_time));
   std::set<std::string> seen;
-  m.check_fields(nodal, m.nodes, "nodal", m.nodal_spec, seen);
-  m.check_fields(element, m.elements, "element", m.element_spec, seen);
+  m.check_fields(nodal, m.parallel ? m.node_rows : m.nodes, "nodal", m.nodal_spec, seen);
+  m.check_fields(element, m.parallel ? m.element_rows : m.elements, "element", m.element_spec, seen);
 
   QuietHdf5Errors quiet;
   const std::string step = output::XdmfDocument::step_name(m.doc.step_count());
@@ -227,7 +262,7 @@ void ResultsWriter::write_step(double time, std::span<const FieldView> nodal,
     H5Handle sub = output::create_group(g.get(), k.group, m.h5_path);
     for (const auto& f : k.fields) {
       const std::string path = base + "/" + k.group + "/" + f.name;
-      m.write_field(sub.get(), f, k.entities, path);
+      m.write_field(sub.get(), f, k.entities, path, k.center == Center::node);
       attributes.push_back({f.name, k.center, stored_components(f.components), path});
     }
   }
@@ -245,7 +280,7 @@ void ResultsWriter::flush() {
   // HDF5 first: the XDMF must never name a dataset that is not on disk yet.
   if (H5Fflush(impl_->file.get(), H5F_SCOPE_LOCAL) < 0)
     throw std::runtime_error(impl_->h5_path + ": H5Fflush failed (disk full?)");
-  impl_->doc.write_atomically(impl_->xdmf_path);
+  if (impl_->root) impl_->doc.write_atomically(impl_->xdmf_path);
 }
 
 int ResultsWriter::step_count() const { return impl_->doc.step_count(); }

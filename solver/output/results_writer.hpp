@@ -3,7 +3,9 @@
 // "XDMF Reader" (Xdmf2) and "Xdmf3ReaderS" open as a time series. See README.md for the layouts.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <vector>
 #include <span>
 #include <string>
 
@@ -22,6 +24,15 @@ struct FieldView {
   std::span<const double> values;
 };
 
+/// Parallel runs: the rows of the global node and element arrays this rank writes, as runs
+/// {first, count} in ascending order. With a slab every rank constructs the writer and calls
+/// write_step (collective, parallel HDF5 with the mpio driver); the FieldView values are then
+/// this rank's rows only, packed in run order; rank 0 writes the mesh and the XDMF.
+struct ResultsSlab {
+  std::vector<std::array<unsigned long long, 2>> node_runs, element_runs;
+  long long node_rows = 0, element_rows = 0;  // rows in the runs
+};
+
 /// Writes DIR/results.h5 and DIR/results.xdmf. The mesh is written once; every step references it.
 /// After the constructor and after every write_step the pair on disk is complete and readable
 /// (HDF5 flushed first, then the XDMF rewritten atomically by temp file + rename), so a crash
@@ -31,7 +42,7 @@ class ResultsWriter {
   /// Creates DIR (and parents) and the two files, truncating old ones; writes coordinates [n][3],
   /// connectivity [e][8] (0-based int32), block_id [e] (-1 for elements in no block) and the block
   /// names. Throws SetupError (one line, path and reason) when a file or directory cannot be made.
-  ResultsWriter(const std::string& directory, const mesh::Mesh& mesh);
+  ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab = nullptr);
   ~ResultsWriter();  // closes; the files stay valid
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;

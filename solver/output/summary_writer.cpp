@@ -28,6 +28,8 @@ void write_summary_json(const std::string& path, const RunSummary& s, const Ener
                number(s.loop_seconds).c_str());
   std::fprintf(f, "  \"ns_per_element_step\": %s,\n", number(s.ns_per_element_step).c_str());
   std::fprintf(f, "  \"contact_time_s\": %s,\n", number(s.contact_seconds).c_str());
+  std::fprintf(f, "  \"ranks\": %d,\n", s.ranks);
+  std::fprintf(f, "  \"communication_time_s\": %s,\n", number(s.communication_seconds).c_str());
   std::fprintf(f, "  \"initial_stable_time_step\": %s,\n  \"controlling_element\": %d,\n", number(st.dt).c_str(),
                st.controlling_element + 1);
   std::fprintf(f, "  \"energy_error\": %s,\n", number(s.energy_error).c_str());

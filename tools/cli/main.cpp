@@ -3,7 +3,11 @@
 // below onto the exit codes of ARCHITECTURE.md (0 ok, 1 internal, 2 bad input, 3 numerical
 // failure, 130 interrupted). A new subcommand is one row in `commands` below plus its function
 // `int NAME_command(const std::vector<std::string>& args)` declared in tools/cli/commands.hpp.
+#include <mpi.h>
+
+#include <climits>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -38,6 +42,45 @@ void print_usage(std::FILE* to) {
   for (const auto& c : commands) std::fprintf(to, "  %-14s %s\n", c.name, c.summary);
 }
 
+// `run` is an MPI program (a run without mpirun is one rank). Every rank runs the
+// command with its error messages into a buffer; afterwards the ranks agree: the lowest rank that
+// printed an error prints it (once), and every rank exits with that rank's code.
+// Without a launcher (no mpirun/mpiexec environment) MPI is not started at all: Open MPI's
+// singleton start costs about 0.5 s per process, and the run is the one-rank case anyway (the
+// helpers of solver/parallel/communicator.hpp treat an uninitialised MPI as one rank).
+bool launched_by_mpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+int run_parallel(int argc, char** argv, const Command& c, const std::vector<std::string>& args) {
+  if (!launched_by_mpirun()) return tribex::cli::run_mapping_errors([&] { return c.run(args); });
+  MPI_Init(&argc, &argv);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  char* text = nullptr;
+  std::size_t length = 0;
+  std::FILE* err = size > 1 ? open_memstream(&text, &length) : stderr;
+  int code = tribex::cli::run_mapping_errors([&] { return c.run(args); }, err);
+  if (size > 1) {
+    std::fclose(err);
+    const bool has_message = code != 0 && length > 0;
+    int first = has_message ? rank : INT_MAX;
+    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first != INT_MAX) {
+      MPI_Bcast(&code, 1, MPI_INT, first, MPI_COMM_WORLD);
+      if (rank == first) std::fputs(text, stderr);
+    } else {
+      MPI_Allreduce(MPI_IN_PLACE, &code, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    }
+    std::free(text);
+  }
+  MPI_Finalize();
+  return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,6 +95,7 @@ int main(int argc, char** argv) {
   }
   std::vector<std::string> args(argv + 2, argv + argc);
   for (const auto& c : commands) {
+    if (name == c.name && name == "run") return run_parallel(argc, argv, c, args);
     if (name == c.name) return tribex::cli::run_mapping_errors([&] { return c.run(args); });
   }
   std::vector<std::string> names;

@@ -107,6 +107,11 @@ begin sierra tip_on_flat
         reaction force = substrate_zmin, substrate_zmax
         mean displacement = substrate_zmax
       end history output hist
+      begin restart output
+        step increment = 1000
+        wall time increment = 1800 s
+        ring size = 3
+      end restart output
     end presto region tip
   end presto procedure explicit
 end sierra tip_on_flat

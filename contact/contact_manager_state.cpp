@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// ContactManager state for restart files: everything compute_forces() reads from earlier steps.
+#include <stdexcept>
+
+#include "contact/contact_manager.hpp"
+
+namespace tribex::contact {
+
+ContactManager::State ContactManager::state() const {
+  State s;
+  for (const auto& p : passes_)
+    s.passes.push_back({p.candidate_offset, p.candidates, p.last_face, p.x_at_search, p.gap, p.searched});
+  s.traction = traction_;
+  s.status = status_;
+  s.total_searches = total_searches_;
+  return s;
+}
+
+void ContactManager::restore(const State& s) {
+  if (s.passes.size() != passes_.size() || s.traction.size() != traction_.size() || s.status.size() != status_.size())
+    throw std::invalid_argument("contact state has " + std::to_string(s.passes.size()) + " passes, the deck " +
+                                std::to_string(passes_.size()));
+  for (std::size_t k = 0; k < passes_.size(); ++k) {
+    Pass& p = passes_[k];
+    const PassState& q = s.passes[k];
+    if (q.x_at_search.size() != p.x_at_search.size())
+      throw std::invalid_argument("contact pass " + std::to_string(k) + " has other surfaces than the deck");
+    p.candidate_offset = q.candidate_offset;
+    p.candidates = q.candidates;
+    p.last_face = q.last_face;
+    p.x_at_search = q.x_at_search;
+    p.gap = q.gap;
+    p.searched = q.searched;
+  }
+  traction_ = s.traction;
+  status_ = s.status;
+  total_searches_ = s.total_searches;
+}
+
+}  // namespace tribex::contact

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+// CentralDifference state for restart files. A resumed run must repeat the uninterrupted one bit
+// for bit, so every member that step() reads from an earlier step is saved exactly: the lagged
+// halves of the trapezoidal energy rules, the stable-step estimate (recomputed only every
+// dt_update_interval steps), the forces f^n of the last force pass, the element outputs of that
+// pass and the contact search state.
+#include <string>
+
+#include "solver/integrators/central_difference.hpp"
+#include "solver/restart/state_archive.hpp"
+
+namespace tribex::solver {
+namespace {
+
+// The energy ledger and contact totals as flat arrays (order = restart file layout).
+std::vector<double> energies_to_array(const Energies& e) {
+  return {e.kinetic, e.internal, e.hourglass, e.external_work, e.silent_boundary_dissipation, e.damping_dissipation,
+          e.viscous_dissipation, e.contact_work, e.initial};
+}
+void energies_from_array(const std::vector<double>& a, Energies& e) {
+  if (a.size() != 9) throw SetupError("restart file: energy ledger has " + std::to_string(a.size()) + " terms, expected 9");
+  e = {};
+  e.kinetic = a[0];
+  e.internal = a[1];
+  e.hourglass = a[2];
+  e.external_work = a[3];
+  e.silent_boundary_dissipation = a[4];
+  e.damping_dissipation = a[5];
+  e.viscous_dissipation = a[6];
+  e.contact_work = a[7];
+  e.initial = a[8];
+}
+std::vector<double> totals_to_array(const contact::ContactTotals& c) {
+  return {c.normal_force,   c.tangential_force, c.compressive_force, c.adhesive_force, c.adhesion_energy,
+          c.junction_capacity, c.friction_power, c.area,            double(c.nodes),  c.max_penetration,
+          c.radius_max,     c.radius_edge,      double(c.searches)};
+}
+void totals_from_array(const std::vector<double>& a, contact::ContactTotals& c) {
+  if (a.size() != 13) throw SetupError("restart file: contact totals have " + std::to_string(a.size()) + " terms, expected 13");
+  c.normal_force = a[0];
+  c.tangential_force = a[1];
+  c.compressive_force = a[2];
+  c.adhesive_force = a[3];
+  c.adhesion_energy = a[4];
+  c.junction_capacity = a[5];
+  c.friction_power = a[6];
+  c.area = a[7];
+  c.nodes = static_cast<int>(a[8]);
+  c.max_penetration = a[9];
+  c.radius_max = a[10];
+  c.radius_edge = a[11];
+  c.searches = static_cast<int>(a[12]);
+}
+
+}  // namespace
+
+void CentralDifference::save_state(StateArchive& a) const {
+  a.put_integer("step", step_);
+  a.put_integer("node_count", model_.mesh.node_count());
+  a.put_integer("element_count", model_.mesh.element_count());
+  a.put("time", time_);
+  a.put("dt_n", dt_n_);
+  a.put("dt_half", dt_half_);
+  a.put("dt_prev_half", dt_prev_half_);
+  a.put("stable_dt", stable_.dt);
+  a.put_ints("stable_elements", std::vector<int>{stable_.controlling_element, stable_.inverted_element});
+  a.put("u", u_);
+  a.put("v_half", v_);
+  a.put("v_prev_half", v_prev_);
+  a.put("v_n", v_n_);
+  a.put("acceleration", a_);
+  a.put("force", f_);
+  a.put("external_force", f_ext_);
+  a.put("reaction", reaction_);
+  a.put("energies", energies_to_array(energies_));
+  a.put("lagged_power", std::vector<double>{external_power_right_, viscous_power_, silent_power_right_,
+                                            damping_power_right_, viscous_power_right_, contact_power_right_,
+                                            contact_seconds_});
+  a.put("momentum", std::vector<double>(momentum_, momentum_ + 3));
+  for (std::size_t b = 0; b < model_.blocks.size(); ++b)
+    a.put("block_" + std::to_string(b) + "_stress", model_.blocks[b].stress);
+  if (model_.contact) {
+    a.put("contact_x", x_);
+    a.put("contact_force", f_contact_);
+    a.put("contact_totals", totals_to_array(contact_totals_));
+    const auto s = model_.contact->state();
+    a.put("contact_traction", s.traction);
+    a.put("contact_status", s.status);
+    a.put_integer("contact_total_searches", s.total_searches);
+    a.put_integer("contact_passes", static_cast<long long>(s.passes.size()));
+    for (std::size_t k = 0; k < s.passes.size(); ++k) {
+      const std::string p = "contact_pass_" + std::to_string(k) + "_";
+      a.put_ints(p + "candidate_offset", s.passes[k].candidate_offset);
+      a.put_ints(p + "candidates", s.passes[k].candidates);
+      a.put_ints(p + "last_face", s.passes[k].last_face);
+      a.put(p + "x_at_search", s.passes[k].x_at_search);
+      a.put(p + "gap", s.passes[k].gap);
+      a.put_integer(p + "searched", s.passes[k].searched ? 1 : 0);
+    }
+  }
+}
+
+void CentralDifference::restore_state(const StateArchive& a) {
+  if (a.integer("node_count") != model_.mesh.node_count() || a.integer("element_count") != model_.mesh.element_count())
+    throw SetupError("the restart file holds " + std::to_string(a.integer("node_count")) + " nodes and " +
+                     std::to_string(a.integer("element_count")) + " elements, the deck's mesh " +
+                     std::to_string(model_.mesh.node_count()) + " and " + std::to_string(model_.mesh.element_count()) +
+                     "; restart with the deck (and mesh) of the run that wrote it");
+  step_ = static_cast<long>(a.integer("step"));
+  time_ = a.scalar("time");
+  dt_n_ = a.scalar("dt_n");
+  dt_half_ = a.scalar("dt_half");
+  dt_prev_half_ = a.scalar("dt_prev_half");
+  stable_.dt = a.scalar("stable_dt");
+  std::vector<int> se;
+  a.get_ints("stable_elements", se);
+  if (se.size() != 2) throw SetupError("restart file: 'stable_elements' must hold 2 values");
+  stable_.controlling_element = se[0];
+  stable_.inverted_element = se[1];
+  a.get("u", u_);
+  a.get("v_half", v_);
+  a.get("v_prev_half", v_prev_);
+  a.get("v_n", v_n_);
+  a.get("acceleration", a_);
+  a.get("force", f_);
+  a.get("external_force", f_ext_);
+  a.get("reaction", reaction_);
+  energies_from_array(a.array("energies"), energies_);
+  std::vector<double> lagged(7);
+  a.get("lagged_power", lagged);
+  external_power_right_ = lagged[0];
+  viscous_power_ = lagged[1];
+  silent_power_right_ = lagged[2];
+  damping_power_right_ = lagged[3];
+  viscous_power_right_ = lagged[4];
+  contact_power_right_ = lagged[5];
+  contact_seconds_ = lagged[6];
+  std::vector<double> p(3);
+  a.get("momentum", p);
+  for (int i = 0; i < 3; ++i) momentum_[i] = p[i];
+  for (std::size_t b = 0; b < model_.blocks.size(); ++b) a.get("block_" + std::to_string(b) + "_stress", model_.blocks[b].stress);
+  if (model_.contact) {
+    a.get("contact_x", x_);
+    a.get("contact_force", f_contact_);
+    totals_from_array(a.array("contact_totals"), contact_totals_);
+    contact::ContactManager::State s;
+    s.traction = a.array("contact_traction");
+    s.status = a.array("contact_status");
+    s.total_searches = static_cast<long>(a.integer("contact_total_searches"));
+    s.passes.resize(static_cast<std::size_t>(a.integer("contact_passes")));
+    for (std::size_t k = 0; k < s.passes.size(); ++k) {
+      const std::string q = "contact_pass_" + std::to_string(k) + "_";
+      a.get_ints(q + "candidate_offset", s.passes[k].candidate_offset);
+      a.get_ints(q + "candidates", s.passes[k].candidates);
+      a.get_ints(q + "last_face", s.passes[k].last_face);
+      s.passes[k].x_at_search = a.array(q + "x_at_search");
+      s.passes[k].gap = a.array(q + "gap");
+      s.passes[k].searched = a.integer(q + "searched") != 0;
+    }
+    try {
+      model_.contact->restore(s);
+    } catch (const std::invalid_argument& e) {
+      throw SetupError(std::string("the restart file does not fit the deck's contact definition: ") + e.what());
+    }
+  } else if (a.reals.count("contact_x")) {
+    throw SetupError("the restart file has contact state but the deck has no contact definition");
+  }
+}
+
+}  // namespace tribex::solver

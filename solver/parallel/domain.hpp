@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// One rank's share of a parallel run (physics of the decomposition in solver/README.md
+// "Parallel runs"): the elements METIS gave it, the nodes of those elements in local numbering
+// (ascending global number), which of them it owns (a node shared by several ranks is owned by the
+// lowest), and the communication the time loop needs:
+//   - sum_shared: partial nodal forces of shared nodes summed with the neighbour ranks
+//     (MPI_Isend/Irecv into buffers sized once), added in ascending rank order on every rank so
+//     that all copies of a shared node hold bit-identical sums;
+//   - gather_surface: positions, velocities and summed non-contact forces of the contact-surface
+//     nodes to every rank (the junction shear predicts the slip from the forces)
+//     (MPI_Allgatherv over the surface nodes only), so that each rank runs the whole contact
+//     search and enforcement on global node numbers;
+// results.h5 is written collectively (each rank its owned nodes and its elements, parallel HDF5).
+// On one rank every map is the identity and no message is sent.
+#pragma once
+
+#include <mpi.h>
+
+#include <vector>
+
+namespace tribex::solver {
+struct Model;
+}
+
+namespace tribex::solver::parallel {
+
+class Domain {
+ public:
+  int rank = 0, ranks = 1;
+  int global_node_count = 0, global_element_count = 0;
+  std::vector<int> global_node;     // [local node] global node index
+  std::vector<int> global_element;  // [local element] global element index
+  std::vector<double> owned;        // [local node] 1 owned here, 0 owned by a lower rank
+
+  bool serial() const { return ranks == 1; }
+  /// Wall time spent in sum_shared and gather_surface (messages and waiting), s; 0 on one rank.
+  double communication_seconds = 0.0;
+  /// The identity layout of a whole model on one rank (build_model sets it).
+  void init_serial(int nodes, int elements);
+  int owned_node_count() const { return owned_nodes_; }
+  /// Local indices of the owned nodes, ascending.
+  const std::vector<int>& owned_local_nodes() const { return owned_local_nodes_; }
+
+  /// Sums a nodal [local node][3] vector over the ranks that share each node.
+  void sum_shared(double* nodal);
+
+  /// Contact surfaces: `surface_nodes` the sorted global nodes of all surfaces (same on every rank).
+  void set_surface(const std::vector<int>& surface_nodes);
+  /// [k] local index of surface node k, -1 when this rank does not hold it.
+  const std::vector<int>& surface_local() const { return surface_local_; }
+  /// [k] 1 when this rank owns surface node k.
+  const std::vector<double>& surface_owned() const { return surface_owned_; }
+  /// Writes x and v of every surface node into the global-numbered arrays (other entries untouched).
+  void gather_surface(const double* x_local, const double* v_local, const double* f_local, double* x_global,
+                      double* v_global, double* f_global);
+  static constexpr int kSurfaceValues = 9;  // x, v, f per surface node
+
+ private:
+  friend Model localize(Model&& global, const std::vector<int>& part);
+
+  int owned_nodes_ = 0;
+  // halo
+  std::vector<int> neighbours_;        // ascending
+  std::vector<int> neighbour_offset_;  // [k + 1] into neighbour_nodes_
+  std::vector<int> neighbour_nodes_;   // local nodes shared with neighbour k, ascending
+  std::vector<int> neighbour_slot_;    // their index into shared_nodes_
+  std::vector<int> shared_nodes_;      // local nodes held by more than one rank, ascending
+  std::vector<double> send_, recv_, sum_;
+  std::vector<MPI_Request> requests_;
+  // contact surface gather
+  std::vector<int> surface_nodes_, surface_local_;
+  std::vector<double> surface_owned_;
+  std::vector<int> surface_send_index_;                  // local nodes of the owned surface nodes
+  std::vector<int> surface_order_;                       // [position in the gathered buffer] surface index k
+  std::vector<int> surface_counts_, surface_displs_;     // in doubles (6 per node)
+  std::vector<double> surface_send_, surface_recv_;
+  std::vector<int> node_owner_;        // [global node] owning rank
+  std::vector<int> owned_local_nodes_;  // ascending
+};
+
+/// This rank's part of the model built on every rank from the whole mesh: elements with
+/// part[e] == rank, their nodes, restricted sets, constraints, loads and dashpots, the global
+/// lumped mass (so no mass exchange is needed), and the contact manager (global numbering) with
+/// the surface gather. On one rank the model is returned unchanged with an identity Domain.
+Model localize(Model&& global, const std::vector<int>& part);
+
+}  // namespace tribex::solver::parallel

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#include "solver/parallel/partition.hpp"
+
+#include <metis.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace tribex::solver::parallel {
+
+std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts) {
+  const int ne = mesh.element_count();
+  std::vector<int> part(static_cast<std::size_t>(ne), 0);
+  if (parts <= 1 || ne == 0) return part;
+  if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
+  idx_t n_elements = ne, n_nodes = mesh.node_count(), n_common = 4, numbering = 0;
+  std::vector<idx_t> eptr(static_cast<std::size_t>(ne) + 1), eind(mesh.connectivity.begin(), mesh.connectivity.end());
+  for (int e = 0; e <= ne; ++e) eptr[e] = 8 * e;
+  idx_t *xadj = nullptr, *adjncy = nullptr;
+  if (METIS_MeshToDual(&n_elements, &n_nodes, eptr.data(), eind.data(), &n_common, &numbering, &xadj, &adjncy) != METIS_OK)
+    throw std::runtime_error("METIS_MeshToDual failed");
+  idx_t n_constraints = 1, n_parts = parts, cut = 0;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_SEED] = 1;         // the same partition on every rank and every run
+  std::vector<idx_t> result(static_cast<std::size_t>(ne));
+  const int status = METIS_PartGraphKway(&n_elements, &n_constraints, xadj, adjncy, nullptr, nullptr, nullptr, &n_parts,
+                                         nullptr, nullptr, options, &cut, result.data());
+  METIS_Free(xadj);
+  METIS_Free(adjncy);
+  if (status != METIS_OK) throw std::runtime_error("METIS_PartGraphKway failed (status " + std::to_string(status) + ")");
+  for (int e = 0; e < ne; ++e) part[e] = static_cast<int>(result[e]);
+  return part;
+}
+
+}  // namespace tribex::solver::parallel

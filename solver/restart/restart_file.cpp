@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: MIT
+// Restart files: HDF5, one group /rank_<r> per rank holding one 1-D dataset per archive entry
+// (float64 for reals, int64 for integers), attribute `ranks` on the root. The ranks write in
+// turn (token passing with barriers) with the serial driver: restart files are rare and small
+// next to results.h5, and this keeps every rank's arrays in its own group.
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include "solver/output/h5_handles.hpp"
+#include "solver/parallel/communicator.hpp"
+#include "solver/restart/state_archive.hpp"
+
+namespace tribex::solver {
+namespace {
+
+using output::H5Handle;
+
+// Bumped when the archive layout changes; a file of another version is refused (exit 2).
+constexpr double kRestartFormatVersion = 1;
+
+class QuietErrors {
+ public:
+  QuietErrors() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietErrors(const QuietErrors&) = delete;
+  QuietErrors& operator=(const QuietErrors&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+void write_group(hid_t file, const StateArchive& a, const std::string& path) {
+  H5Handle group = output::create_group(file, "rank_" + std::to_string(parallel::rank()), path);
+  for (const auto& [name, values] : a.reals) {
+    H5Handle d = output::create_dataset(group.get(), name, H5T_IEEE_F64LE, values.size(), 0, path);
+    output::write_rows(d.get(), H5T_NATIVE_DOUBLE, values.data(), 0, values.size(), 0, path + ":" + name);
+  }
+  for (const auto& [name, values] : a.integers) {
+    H5Handle d = output::create_dataset(group.get(), name, H5T_STD_I64LE, values.size(), 0, path);
+    output::write_rows(d.get(), H5T_NATIVE_LLONG, values.data(), 0, values.size(), 0, path + ":" + name);
+  }
+}
+
+struct ReadContext {
+  StateArchive* archive;
+  std::string path;
+  bool failed = false;
+};
+
+herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data) {
+  auto* ctx = static_cast<ReadContext*>(data);
+  H5Handle d(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
+  H5Handle space(d.valid() ? H5Dget_space(d.get()) : H5I_INVALID_HID, H5Sclose);
+  H5Handle type(d.valid() ? H5Dget_type(d.get()) : H5I_INVALID_HID, H5Tclose);
+  if (!space.valid() || !type.valid()) {
+    ctx->failed = true;
+    return -1;
+  }
+  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  herr_t status = 0;
+  if (H5Tget_class(type.get()) == H5T_FLOAT) {
+    auto& v = ctx->archive->reals[name];
+    v.resize(static_cast<std::size_t>(n));
+    if (n > 0) status = H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  } else {
+    auto& v = ctx->archive->integers[name];
+    v.resize(static_cast<std::size_t>(n));
+    if (n > 0) status = H5Dread(d.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  }
+  if (status < 0) ctx->failed = true;
+  return status < 0 ? -1 : 0;
+}
+
+}  // namespace
+
+void write_restart_file(const std::string& path, const StateArchive& archive) {
+  QuietErrors quiet;
+  const std::string part = path + ".part";
+  int failed = 0;
+  for (int r = 0; r < parallel::size(); ++r) {
+    if (r == parallel::rank()) {
+      try {
+        H5Handle file(r == 0 ? H5Fcreate(part.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
+                             : H5Fopen(part.c_str(), H5F_ACC_RDWR, H5P_DEFAULT),
+                      H5Fclose);
+        if (!file.valid()) throw std::runtime_error("cannot open " + part);
+        if (r == 0) {
+          output::write_double_attribute(file.get(), "ranks", parallel::size(), part);
+          output::write_double_attribute(file.get(), "format_version", kRestartFormatVersion, part);
+        }
+        write_group(file.get(), archive, part);
+      } catch (const std::exception&) {
+        failed = 1;
+      }
+    }
+    parallel::barrier();
+  }
+  double any = failed;
+  parallel::sum(&any, 1);
+  if (any > 0) throw NumericalFailure("could not write the restart file " + path + " (disk full?)");
+  if (parallel::is_root()) {
+    std::error_code ec;
+    std::filesystem::rename(part, path, ec);
+    if (ec) failed = 1;
+  }
+  parallel::barrier();
+}
+
+StateArchive read_restart_file(const std::string& path) {
+  QuietErrors quiet;
+  if (!std::filesystem::is_regular_file(path))
+    throw SetupError(path + ": error: no such restart file; give a restart_<k>.h5 or restart.h5 written by a run with "
+                            "'begin restart output'");
+  H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) throw SetupError(path + ": error: not a readable HDF5 restart file");
+  double ranks = 0;
+  {
+    H5Handle a(H5Aopen(file.get(), "ranks", H5P_DEFAULT), H5Aclose);
+    if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &ranks) < 0)
+      throw SetupError(path + ": error: not a tribex restart file (no 'ranks' attribute)");
+  }
+  double version = 0;
+  {
+    H5Handle a(H5Aopen(file.get(), "format_version", H5P_DEFAULT), H5Aclose);
+    if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &version) < 0 || version != kRestartFormatVersion)
+      throw SetupError(path + ": error: restart file format version " + std::to_string(static_cast<int>(version)) +
+                       ", this tribex reads version " + std::to_string(static_cast<int>(kRestartFormatVersion)) +
+                       "; restart with the tribex that wrote it");
+  }
+  if (static_cast<int>(ranks) != parallel::size())
+    throw SetupError(path + ": error: the restart file was written by " + std::to_string(static_cast<int>(ranks)) +
+                     " rank(s), this run has " + std::to_string(parallel::size()) + "; restart with mpirun -np " +
+                     std::to_string(static_cast<int>(ranks)));
+  StateArchive archive;
+  const std::string group_name = "rank_" + std::to_string(parallel::rank());
+  H5Handle group(H5Gopen2(file.get(), group_name.c_str(), H5P_DEFAULT), H5Gclose);
+  if (!group.valid()) throw SetupError(path + ": error: restart file has no group " + group_name);
+  ReadContext ctx{&archive, path};
+  if (H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, read_member, &ctx) < 0 || ctx.failed)
+    throw SetupError(path + ": error: restart file is damaged (a dataset of " + group_name + " cannot be read)");
+  return archive;
+}
+
+}  // namespace tribex::solver

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// The full state of a run as named flat arrays: what a restart file holds (one group per rank).
+// Every part of the solver that carries state between steps (integrator, element blocks, contact,
+// output schedules) writes its arrays here under its own prefix and reads them back; see
+// solver/README.md "Parallel runs and restart: rules for model authors".
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "solver/errors.hpp"
+
+namespace tribex::solver {
+
+struct StateArchive {
+  std::map<std::string, std::vector<double>> reals;
+  std::map<std::string, std::vector<long long>> integers;
+
+  void put(const std::string& name, const std::vector<double>& v) { reals[name] = v; }
+  void put(const std::string& name, double x) { reals[name] = {x}; }
+  void put_integers(const std::string& name, const std::vector<long long>& v) { integers[name] = v; }
+  void put_integer(const std::string& name, long long x) { integers[name] = {x}; }
+  template <class Int>
+  void put_ints(const std::string& name, const std::vector<Int>& v) {
+    integers[name] = std::vector<long long>(v.begin(), v.end());
+  }
+
+  const std::vector<double>& array(const std::string& name) const {
+    auto it = reals.find(name);
+    if (it == reals.end()) throw SetupError("restart file lacks '" + name + "' (written by another tribex version?)");
+    return it->second;
+  }
+  /// Copies array `name` into `out`, which must already have the size it had when written.
+  void get(const std::string& name, std::vector<double>& out) const {
+    const auto& a = array(name);
+    if (a.size() != out.size())
+      throw SetupError("restart file: '" + name + "' has " + std::to_string(a.size()) + " values, the model needs " +
+                       std::to_string(out.size()) + " (a different mesh or deck?)");
+    out = a;
+  }
+  double scalar(const std::string& name) const {
+    const auto& a = array(name);
+    if (a.size() != 1) throw SetupError("restart file: '" + name + "' is not a scalar");
+    return a[0];
+  }
+  const std::vector<long long>& integer_array(const std::string& name) const {
+    auto it = integers.find(name);
+    if (it == integers.end()) throw SetupError("restart file lacks '" + name + "' (written by another tribex version?)");
+    return it->second;
+  }
+  long long integer(const std::string& name) const {
+    const auto& a = integer_array(name);
+    if (a.size() != 1) throw SetupError("restart file: '" + name + "' is not a scalar");
+    return a[0];
+  }
+  template <class Int>
+  void get_ints(const std::string& name, std::vector<Int>& out) const {
+    const auto& a = integer_array(name);
+    out.assign(a.begin(), a.end());
+  }
+};
+
+/// Writes `archive` of this rank into group /rank_<rank> of `path` (rank 0 creates the file; the
+/// ranks then write one after the other), through `path`.part and a rename so that a crash never
+/// leaves a half-written restart file under its final name. Collective over the run's ranks.
+void write_restart_file(const std::string& path, const StateArchive& archive);
+
+/// Reads this rank's group. Throws SetupError (exit 2) when the file is missing or unreadable,
+/// or was written by a different number of ranks.
+StateArchive read_restart_file(const std::string& path);
+
+}  // namespace tribex::solver

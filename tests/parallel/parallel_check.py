@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Checks of parallel runs and restarts (tests/parallel/README.md), run by CTest (label mpi).
+
+  parallel_check.py agree TRIBEX DECK OUT --ranks N --rtol R [--columns c1,c2,...] [--fields]
+      runs DECK on 1 and N ranks; every history column (or the listed ones) must agree:
+      max |a - b| over the rows <= R * max |a| of the column (of the vector, for a component
+      NAME_x/_y/_z; of all energies, for an energy; absolute for energy_error); --fields also compares every
+      dataset of results.h5 (gathered fields must land in global order).
+  parallel_check.py restart TRIBEX DECK OUT --ranks N --stop STEP
+      runs DECK uninterrupted, then stopped after STEP (exit 130, restart file) and resumed with
+      --restart OUT/restart.h5 into the same folder: history.csv must be byte-identical.
+  parallel_check.py failure TRIBEX DECK OUT --ranks N --expect-code C --expect TEXT
+      runs DECK (meant to fail; not quiet, so that rank 0 prints its log); exit code C, TEXT printed
+      exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
+      ranks) from a restart file written by a one-rank run stopped after STEP.
+"""
+import argparse
+import csv
+import os
+import shutil
+import subprocess
+import sys
+
+
+def launcher(ranks):
+    if ranks == 1:
+        return []
+    cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"]
+    if os.geteuid() == 0:
+        cmd.append("--allow-run-as-root")
+    return cmd
+
+
+def run(tribex, deck, out, ranks, *extra, check=True, quiet=True):
+    cmd = launcher(ranks) + [tribex, "run", deck, "-o", out, *(["--quiet"] if quiet else []), *extra]
+    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
+    if check and p.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
+    return p
+
+
+def read(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    return rows[0], [[float(x) for x in r] for r in rows[1:]]
+
+
+def agree(a):
+    serial, parallel = os.path.join(a.out, "np1"), os.path.join(a.out, f"np{a.ranks}")
+    for d in (serial, parallel):
+        shutil.rmtree(d, ignore_errors=True)
+    run(a.tribex, a.deck, serial, 1)
+    run(a.tribex, a.deck, parallel, a.ranks)
+    h1, r1 = read(os.path.join(serial, "history.csv"))
+    h2, r2 = read(os.path.join(parallel, "history.csv"))
+    if h1 != h2 or len(r1) != len(r2):
+        sys.exit(f"FAIL: histories differ in shape ({len(r1)} vs {len(r2)} rows)")
+    columns = a.columns.split(",") if a.columns else h1[1:]
+    worst, worst_name = 0.0, ""
+    for name in columns:
+        j = h1.index(name)
+        # A vector component (NAME_x/_y/_z) is measured against the largest component of its
+        # vector: a zero-by-symmetry component holds only round-off, relative to itself noise.
+        # Energies are measured against the largest energy of the run (a term that is zero up to
+        # round-off, like the hourglass energy of a uniaxial wave, has no scale of its own), and
+        # energy_error, itself a relative number, absolutely.
+        group = [name]
+        energy = ("_energy", "_work", "_dissipation")
+        if name == "energy_error":
+            group = []
+        elif name.endswith(energy):
+            group = [c for c in h1 if c.endswith(energy)]
+        elif name[-2:] in ("_x", "_y", "_z"):
+            group = [c for c in h1 if c[:-2] == name[:-2] and c[-2:] in ("_x", "_y", "_z")]
+        scale = max((abs(r[h1.index(c)]) for c in group for r in r1), default=1.0)
+        if scale == 0.0:
+            scale = 1.0
+        err = max(abs(x[j] - y[j]) for x, y in zip(r1, r2)) / scale
+        if err > worst:
+            worst, worst_name = err, name
+    print(f"{len(columns)} history columns, {len(r1)} rows, 1 vs {a.ranks} ranks: "
+          f"largest relative difference {worst:.3e} ({worst_name or 'none'}), tolerance {a.rtol:g}")
+    if worst > a.rtol:
+        sys.exit("FAIL: history differs beyond the tolerance")
+    if a.fields:
+        import h5py
+        import numpy as np
+        with h5py.File(os.path.join(serial, "results.h5")) as f1, h5py.File(os.path.join(parallel, "results.h5")) as f2:
+            names = []
+            f1.visit(lambda n: names.append(n) if isinstance(f1[n], h5py.Dataset) else None)
+            fworst = 0.0
+            for n in names:
+                x, y = np.asarray(f1[n], dtype=float), np.asarray(f2[n], dtype=float)
+                if x.shape != y.shape:
+                    sys.exit(f"FAIL: results.h5 {n}: shape {x.shape} vs {y.shape}")
+                scale = np.max(np.abs(x)) if x.size else 0.0
+                err = np.max(np.abs(x - y)) / (scale if scale > 0 else 1.0) if x.size else 0.0
+                fworst = max(fworst, err)
+            print(f"results.h5: {len(names)} datasets, largest relative difference {fworst:.3e}")
+            if fworst > a.rtol:
+                sys.exit("FAIL: results.h5 differs beyond the tolerance")
+    print("PASS")
+
+
+def restart(a):
+    full, resumed = os.path.join(a.out, "full"), os.path.join(a.out, "resumed")
+    for d in (full, resumed):
+        shutil.rmtree(d, ignore_errors=True)
+    run(a.tribex, a.deck, full, a.ranks)
+    p = run(a.tribex, a.deck, resumed, a.ranks, "--stop-at-step", str(a.stop), check=False)
+    if p.returncode != 130:
+        sys.exit(f"FAIL: the stopped run exited {p.returncode}, expected 130\n{p.stderr}")
+    run(a.tribex, a.deck, resumed, a.ranks, "--restart", os.path.join(resumed, "restart.h5"))
+    with open(os.path.join(full, "history.csv"), "rb") as f:
+        x = f.read()
+    with open(os.path.join(resumed, "history.csv"), "rb") as f:
+        y = f.read()
+    rows = x.count(b"\n") - 1
+    print(f"{a.ranks} rank(s): stopped after step {a.stop}, resumed; history.csv {len(y)} bytes vs {len(x)} "
+          f"uninterrupted ({rows} rows): {'identical' if x == y else 'DIFFERENT'}")
+    if x != y:
+        sys.exit("FAIL: the resumed history is not bitwise identical")
+    print("PASS")
+
+
+def failure(a):
+    shutil.rmtree(a.out, ignore_errors=True)
+    extra = []
+    if a.serial_restart_at >= 0:  # a restart file written by one rank, resumed on a.ranks
+        first = os.path.join(a.out, "serial")
+        run(a.tribex, a.deck, first, 1, "--stop-at-step", str(a.serial_restart_at), check=False)
+        extra = ["--restart", os.path.join(first, "restart.h5")]
+    p = run(a.tribex, a.deck, a.out, a.ranks, *extra, check=False, quiet=False)
+    text = p.stdout + p.stderr
+    count = text.count(a.expect)
+    print(f"{a.ranks} ranks: exit code {p.returncode} (expected {a.expect_code}); '{a.expect}' printed {count} time(s)")
+    if p.returncode != a.expect_code or count != 1:
+        sys.exit(f"FAIL\n{text}")
+    print("PASS")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("mode", choices=["agree", "restart", "failure"])
+    ap.add_argument("tribex")
+    ap.add_argument("deck")
+    ap.add_argument("out")
+    ap.add_argument("--ranks", type=int, default=2)
+    ap.add_argument("--rtol", type=float, default=1e-10)
+    ap.add_argument("--columns", default="")
+    ap.add_argument("--fields", action="store_true")
+    ap.add_argument("--stop", type=int, default=100)
+    ap.add_argument("--expect-code", type=int, default=3)
+    ap.add_argument("--expect", default="")
+    ap.add_argument("--serial-restart-at", type=int, default=-1)
+    a = ap.parse_args()
+    {"agree": agree, "restart": restart, "failure": failure}[a.mode](a)
+
+
+if __name__ == "__main__":
+    main()
