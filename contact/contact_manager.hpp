@@ -135,6 +135,7 @@ class ContactManager {
     std::vector<int> candidate_offset, candidates, last_face;
     std::vector<double> x_at_search, gap;
     bool searched = false;
+    double stable_dt = INFINITY;  // rough_surface: the contact's critical step, read before the next force pass
   };
   struct State {
     std::vector<PassState> passes;

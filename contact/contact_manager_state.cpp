@@ -9,7 +9,7 @@ namespace tribex::contact {
 ContactManager::State ContactManager::state() const {
   State s;
   for (const auto& p : passes_)
-    s.passes.push_back({p.candidate_offset, p.candidates, p.last_face, p.x_at_search, p.gap, p.searched});
+    s.passes.push_back({p.candidate_offset, p.candidates, p.last_face, p.x_at_search, p.gap, p.searched, p.stable_dt});
   s.traction = traction_;
   s.status = status_;
   s.total_searches = total_searches_;
@@ -31,6 +31,7 @@ void ContactManager::restore(const State& s) {
     p.x_at_search = q.x_at_search;
     p.gap = q.gap;
     p.searched = q.searched;
+    p.stable_dt = q.stable_dt;
   }
   traction_ = s.traction;
   status_ = s.status;

@@ -96,6 +96,7 @@ void CentralDifference::save_state(StateArchive& a) const {
       a.put(p + "x_at_search", s.passes[k].x_at_search);
       a.put(p + "gap", s.passes[k].gap);
       a.put_integer(p + "searched", s.passes[k].searched ? 1 : 0);
+      a.put(p + "stable_dt", std::vector<double>{s.passes[k].stable_dt});
     }
   }
 }
@@ -156,6 +157,7 @@ void CentralDifference::restore_state(const StateArchive& a) {
       s.passes[k].x_at_search = a.array(q + "x_at_search");
       s.passes[k].gap = a.array(q + "gap");
       s.passes[k].searched = a.integer(q + "searched") != 0;
+      s.passes[k].stable_dt = a.array(q + "stable_dt").at(0);
     }
     try {
       model_.contact->restore(s);
