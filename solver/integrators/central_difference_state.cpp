@@ -33,10 +33,13 @@ void energies_from_array(const std::vector<double>& a, Energies& e) {
 std::vector<double> totals_to_array(const contact::ContactTotals& c) {
   return {c.normal_force,   c.tangential_force, c.compressive_force, c.adhesive_force, c.adhesion_energy,
           c.junction_capacity, c.friction_power, c.area,            double(c.nodes),  c.max_penetration,
-          c.radius_max,     c.radius_edge,      double(c.searches)};
+          c.radius_max,     c.radius_edge,      double(c.searches), c.radius_pressure_fit, c.real_area,
+          c.asperity_contacts, c.nominal_area};
 }
 void totals_from_array(const std::vector<double>& a, contact::ContactTotals& c) {
-  if (a.size() != 13) throw SetupError("restart file: contact totals have " + std::to_string(a.size()) + " terms, expected 13");
+  // Every ContactTotals member: a new member must be added here and in totals_to_array (the
+  // history row after a resume is written from the restored totals).
+  if (a.size() != 17) throw SetupError("restart file: contact totals have " + std::to_string(a.size()) + " terms, expected 17");
   c.normal_force = a[0];
   c.tangential_force = a[1];
   c.compressive_force = a[2];
@@ -50,6 +53,10 @@ void totals_from_array(const std::vector<double>& a, contact::ContactTotals& c) 
   c.radius_max = a[10];
   c.radius_edge = a[11];
   c.searches = static_cast<int>(a[12]);
+  c.radius_pressure_fit = a[13];
+  c.real_area = a[14];
+  c.asperity_contacts = a[15];
+  c.nominal_area = a[16];
 }
 
 }  // namespace
