@@ -116,6 +116,11 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
       g.coating_thickness = a.coating_thickness;
       g.coating_layers = a.coating_layers;
       g.quarter = a.quarter;
+      g.tip_only = a.tip_only;
+      if (a.apex) {
+        g.place_apex = true;
+        g.apex = *a.apex;
+      }
       try {
         mesh::append(m, mesh::generate_asperity(g));
       } catch (const mesh::MeshError& e) {
