@@ -10,7 +10,7 @@ Variants: reduced (CI: 1 nm elements, 40 x 36 nm window, 3 nm of sliding) and fu
     /usr/bin/python3 inputs/examples/afm_sliding/make_decks.py
 
 The load and the sliding use cycloidal ramps (zero acceleration jump at both ends) written as
-piecewise-linear tables at 5 ps, as verification/sphere_sliding/make_decks.py.
+piecewise-linear tables at 5 ps over the ramps, as verification/sphere_sliding/make_decks.py.
 """
 import math
 import os
@@ -39,10 +39,11 @@ def load_fraction(t):
     return 1.0 if t >= LOAD_RAMP else 0.5 * (1 - math.cos(math.pi * t / LOAD_RAMP))
 
 
-def table(func, t_end, scale, step=5 * PS):
-    times = [i * step for i in range(int(t_end / step + 1e-9) + 1)]
-    if t_end - times[-1] > 1e-15:
-        times.append(t_end)
+def table(func, t_end, scale, ramp_start, ramp_end, step=5 * PS):
+    """Table of func: every `step` over the ramp [ramp_start, ramp_end], then the end point (func is
+    constant or linear outside the ramp, so the piecewise-linear table is exact there)."""
+    n = int((ramp_end - ramp_start) / step + 1e-9)
+    times = ([0.0] if ramp_start > 0 else []) + [ramp_start + i * step for i in range(n + 1)] + [t_end]
     return "\n".join(f"      {t / PS:8.1f}  {func(t) * scale:.5f}" for t in times)
 
 
@@ -225,8 +226,8 @@ def main():
                 name=name, title=c["title"], variant=vname, tip_width=v["tip_width"], load=LOAD,
                 distance=v["distance"], speed=SPEED, tau_note=c["tau_note"], t_load=LOAD_RAMP / PS,
                 t_slide=t_slide / PS, t_end=t_end / PS,
-                load_table=table(load_fraction, t_end, 1.0),
-                slide_table=table(lambda t: ramped(t, SPEED, t_slide), t_end, 1e9),
+                load_table=table(load_fraction, t_end, 1.0, 0.0, LOAD_RAMP),
+                slide_table=table(lambda t: ramped(t, SPEED, t_slide), t_end, 1e9, t_slide, t_slide + RAMP),
                 sam_material=SAM if c["coating"] else "",
                 window=v["window"], track=v["track"], h=v["h"], depth=v["depth"],
                 coating=(f"\n      coating thickness = 2 nm\n      coating layers = {v['coating_layers']}"
