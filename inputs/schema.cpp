@@ -155,7 +155,11 @@ std::vector<BlockSchema> build_table() {
                 real("coating thickness", dim::length, non_negative(), false, "0", "bonded coating (block coating)"),
                 integer("coating layers", at_least(1), false, "6", "elements through the coating"),
                 choice("symmetry", ValueKind::enumeration, {"none", "quarter"}, false, "none",
-                       "quarter: mesh x, y >= 0 only (node sets symmetry_x, symmetry_y; forces and areas are 1/4)")},
+                       "quarter: mesh x, y >= 0 only (node sets symmetry_x, symmetry_y; forces and areas are 1/4)"),
+                choice("substrate", ValueKind::enumeration, {"generated", "none"}, false, "generated",
+                       "none: the tip only (block tip), e.g. above an 'afm surface' in the same model"),
+                reals("apex position", dim::length, 3, Range{}, false, "",
+                      "x y z of the apex (default 0 0 gap); the substrate top is then at z - gap")},
                {},
                false, "sphere-tipped asperity above a substrate (blocks tip, substrate, coating)"});
 

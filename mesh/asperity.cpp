@@ -121,6 +121,7 @@ Mesh generate_asperity(const AsperitySpec& s) {
   require(s.coating_thickness >= 0 && (s.coating_thickness == 0 || s.coating_layers >= 1),
           "coating thickness must be >= 0 with at least one layer");
   require(s.coating_thickness < s.substrate_depth, "the coating must be thinner than the substrate depth");
+  require(!(s.tip_only && s.quarter), "a tip-only asperity cannot be a quarter model (its symmetry planes need the substrate)");
 
   const double h = s.element_size, r = s.grading_ratio;
   // Substrate (and coating): z from -depth to 0, fine near the top.
@@ -183,8 +184,19 @@ Mesh generate_asperity(const AsperitySpec& s) {
     keep_symmetry_plane(tip, "tip", "_ymin", "tip_symmetry_y");
   }
 
-  Mesh mesh = std::move(sub);
-  append(mesh, tip);
+  Mesh mesh;
+  if (s.tip_only) {
+    mesh = std::move(tip);
+  } else {
+    mesh = std::move(sub);
+    append(mesh, tip);
+  }
+  if (s.place_apex) {
+    // Rigid translation of the whole generated mesh: (0, 0, gap) -> apex.
+    const double shift[3] = {s.apex[0], s.apex[1], s.apex[2] - s.gap};
+    for (int n = 0; n < mesh.node_count(); ++n)
+      for (int i = 0; i < 3; ++i) mesh.coordinates[3 * n + i] += shift[i];
+  }
   if (s.quarter) {
     for (const char* axis : {"x", "y"}) {
       const std::string tip_set = std::string("tip_symmetry_") + axis;

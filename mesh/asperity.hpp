@@ -23,6 +23,8 @@
 // quarter of the full problem's.
 #pragma once
 
+#include <array>
+
 #include "mesh/mesh.hpp"
 
 namespace tribex::mesh {
@@ -41,6 +43,9 @@ struct AsperitySpec {
   double coating_thickness = 0.0;   // bonded coating on the substrate (block `coating`), m; 0: none
   int coating_layers = 6;           // elements through the coating
   bool quarter = false;             // mesh x >= 0, y >= 0 only (symmetry planes: node sets symmetry_x, symmetry_y)
+  bool tip_only = false;            // no substrate block: the tip over another mesh's surface (e.g. an AFM one)
+  bool place_apex = false;          // translate the mesh so that the apex sits at `apex` (else at (0, 0, gap))
+  std::array<double, 3> apex{};     // m; the substrate top, when there is one, is then at apex z - gap
 };
 
 /// Throws MeshError for inconsistent sizes (naming the parameter and the fix).

@@ -116,10 +116,17 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
       g.coating_thickness = a.coating_thickness;
       g.coating_layers = a.coating_layers;
       g.quarter = a.quarter;
+      g.tip_only = a.tip_only;
+      if (a.apex) {
+        g.place_apex = true;
+        g.apex = *a.apex;
+      }
       try {
         mesh::append(m, mesh::generate_asperity(g));
       } catch (const mesh::MeshError& e) {
-        throw SetupError(a.where.str() + ": error: " + e.what());
+        const bool clash = spec.afm_surface && !a.tip_only;  // both would make block `substrate`
+        throw SetupError(a.where.str() + ": error: " + e.what() +
+                         (clash ? " (over an 'afm surface' the asperity needs 'substrate = none')" : ""));
       }
     }
     mesh::validate(m, "generated mesh of finite element model '" + spec.name + "'");

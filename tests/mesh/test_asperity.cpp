@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // generate_asperity: the quarter model (symmetry = quarter) against the full one, the symmetry
 // node sets, the coating block (layers, thickness, bonded to the substrate), and a fine depth
-// smaller than the coating (no zero-thickness layer below it).
+// smaller than the coating (no zero-thickness layer below it); the tip alone placed at an apex position
+// (substrate = none, apex position: the tip over an AFM surface).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <set>
 
 #include "mesh/asperity.hpp"
+#include "mesh/mesh_error.hpp"
 
 namespace tribex::mesh {
 namespace {
@@ -123,6 +125,50 @@ TEST(Asperity, CoatingLayersAndTheSpacingBelowWhenTheFineDepthIsInsideTheCoating
   EXPECT_NEAR(levels[6] - levels[7], 0.5e-9, 1e-18);
   EXPECT_NEAR((levels[7] - levels[8]) / (levels[6] - levels[7]), 1.3, 1e-9);
   for (std::size_t i = 1; i < levels.size(); ++i) EXPECT_GT(levels[i - 1] - levels[i], 1e-11) << i;
+}
+
+
+TEST(Asperity, TipOnlyPlacedAtTheApexIsTheFullTipTranslated) {
+  AsperitySpec full = coated(false);
+  full.coating_thickness = 0.0;
+  full.gap = 0.3e-9;
+  AsperitySpec alone = full;
+  alone.tip_only = true;
+  alone.place_apex = true;
+  alone.apex = {210e-9, 205e-9, 4.5e-9};
+  const Mesh a = generate_asperity(full);
+  const Mesh b = generate_asperity(alone);
+  ASSERT_EQ(b.blocks.size(), 1u);
+  EXPECT_EQ(b.blocks[0].name, "tip");
+  const Block* tip = a.find_block("tip");
+  ASSERT_NE(tip, nullptr);
+  EXPECT_EQ(b.element_count(), tip->element_count);
+  for (const char* gone : {"substrate_top", "substrate_bottom", "substrate_sides", "substrate_axis_top"}) {
+    EXPECT_EQ(b.node_sets.count(gone), 0u) << gone;
+    EXPECT_EQ(b.side_sets.count(gone), 0u) << gone;
+  }
+  for (const char* kept : {"tip_surface", "tip_top", "tip_sides"}) EXPECT_EQ(b.side_sets.count(kept), 1u) << kept;
+  // The apex node lands on the requested point; every tip node is the full mesh's tip node moved by
+  // (apex x, apex y, apex z - gap), in the same order (the tip's nodes follow the substrate's in a).
+  const double* apex = &b.coordinates[3 * b.node_sets.at("tip_apex").at(0)];
+  EXPECT_NEAR(apex[0], 210e-9, 1e-18);
+  EXPECT_NEAR(apex[1], 205e-9, 1e-18);
+  EXPECT_NEAR(apex[2], 4.5e-9, 1e-18);
+  const int offset = a.node_count() - b.node_count();
+  ASSERT_GT(offset, 0);
+  const double shift[3] = {210e-9, 205e-9, 4.5e-9 - 0.3e-9};
+  double worst = 0;
+  for (int n = 0; n < b.node_count(); ++n)
+    for (int i = 0; i < 3; ++i)
+      worst = std::max(worst, std::abs(b.coordinates[3 * n + i] - a.coordinates[3 * (n + offset) + i] - shift[i]));
+  EXPECT_LT(worst, 1e-18);
+  EXPECT_NEAR(block_volume(b, "tip"), block_volume(a, "tip"), 1e-12 * block_volume(a, "tip"));
+}
+
+TEST(Asperity, TipOnlyQuarterModelIsRefused) {
+  AsperitySpec s = coated(true);
+  s.tip_only = true;
+  EXPECT_THROW(generate_asperity(s), MeshError);
 }
 
 }  // namespace

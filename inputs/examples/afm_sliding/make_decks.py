@@ -1,0 +1,247 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Writes the AFM sliding decks (the report's Section 3.5, Fig. 3.9) from one template: a silicon
+sphere (R = 50 nm) pressed with 500 nN into a track on the di-3 AFM scan (10 um polysilicon scan, as
+in the report), then slid along the track (+y) at 7.5 m/s.
+Cases: (a) silicon on silicon; (b) silicon on a 2 nm SAM layer (E = 8 GPa, nu = 0.4, tau* = 194 MPa).
+Variants: reduced (CI: 1 nm elements, 40 x 36 nm window, 3 nm of sliding) and full (0.5 nm elements,
+100 x 100 nm window with the 35 x 100 nm track, 70 nm of sliding). Run it after editing the template:
+
+    /usr/bin/python3 inputs/examples/afm_sliding/make_decks.py
+
+The load and the sliding use cycloidal ramps (zero acceleration jump at both ends) written as
+piecewise-linear tables at 5 ps over the ramps, as verification/sphere_sliding/make_decks.py.
+"""
+import math
+import os
+
+PS = 1e-12
+NM = 1e-9
+RAMP = 40 * PS        # sliding speed ramp
+LOAD_RAMP = 80 * PS   # 0 -> 500 nN
+HOLD = 60 * PS        # settle at 500 nN before sliding
+SPEED = 7.5           # m/s
+LOAD = 500            # nN
+
+
+def ramped(t, speed, t_start):
+    """Displacement of a move at `speed` from t_start (cycloidal ramp up over RAMP), zero before."""
+    s = t - t_start
+    if s <= 0:
+        return 0.0
+    if s <= RAMP:
+        return speed / 2 * (s - RAMP / math.pi * math.sin(math.pi * s / RAMP))
+    return speed * RAMP / 2 + speed * (s - RAMP)
+
+
+def load_fraction(t):
+    """0 -> 1 over LOAD_RAMP, (1 - cos) / 2: no jump in the load rate at either end."""
+    return 1.0 if t >= LOAD_RAMP else 0.5 * (1 - math.cos(math.pi * t / LOAD_RAMP))
+
+
+def table(func, t_end, scale, ramp_start, ramp_end, step=5 * PS):
+    """Table of func: every `step` over the ramp [ramp_start, ramp_end], then the end point (func is
+    constant or linear outside the ramp, so the piecewise-linear table is exact there)."""
+    n = int((ramp_end - ramp_start) / step + 1e-9)
+    times = ([0.0] if ramp_start > 0 else []) + [ramp_start + i * step for i in range(n + 1)] + [t_end]
+    return "\n".join(f"      {t / PS:8.1f}  {func(t) * scale:.5f}" for t in times)
+
+
+# Tip start (x, y) on the map and the apex height there: the apex z at which the sphere first touches
+# the spline surface (found on `tribex mesh afm ../shared/data/afm/di-3.di --window 100nm,100nm,
+# 100nm,100nm --element-size 2nm`, max over the footprint of s(x, y) - (R - sqrt(R^2 - r^2)))
+# plus 0.3 nm (z0): the tip starts just out of contact and the load brings it down.
+VARIANTS = {
+    "reduced": dict(window="102 153 40 36", track="106 156 28 30", h=1.0, depth=15, start=(120, 170),
+                    touch=37.6126, distance=3.0, tip_width=26, tip_height=8, fine_half_width=11,
+                    tip_fine_depth=2, coating_layers=3, hist=2, fields=100),
+    "full": dict(window="100 100 100 100", track="102.5 100 35 100", h=0.5, depth=40, start=(120, 115),
+                 touch=34.3498, distance=70.0, tip_width=30, tip_height=12, fine_half_width=13,
+                 tip_fine_depth=3, coating_layers=6, hist=5, fields=1000),
+}
+CASES = {
+    "a_si": dict(title="(a) silicon on silicon", coating=False, tau=195,
+                 tau_note="tau* = 195 MPa (Si on Si, as verification/sphere_sliding)"),
+    "b_sam": dict(title="(b) silicon on a 2 nm SAM layer", coating=True, tau=194,
+                  tau_note="tau* = 194 MPa (Si on CH3-thiol SAM, the report's Section 3.5)"),
+}
+
+TEMPLATE = """\
+# {name}.i -- written by make_decks.py (edit that, not this file).
+# AFM sliding example {title}, {variant} variant (the report's Section 3.5, Fig. 3.9): a silicon sphere
+# (R = 50 nm, a {tip_width} nm wide die) pressed with {load} nN into the di-3 AFM surface (10 um polysilicon
+# scan, levelled, bicubic spline) and slid {distance:g} nm along the track (+y) at {speed} m/s.
+# Junction model: W = 0.05 J/m^2, z0 = 0.3 nm, cutoff 6 nm, {tau_note}.
+#
+# Run:    build/bin/tribex run inputs/examples/afm_sliding/{name}.i -o {name}_output
+# Plot:   /usr/bin/python3 inputs/examples/afm_sliding/afm_sliding.py {name}_output ...  (see README.md)
+#
+# Time line: 0 - {t_load:.0f} ps load ramp to {load} nN (load control on tip_top z: a total force shared by
+# its nodes; the tip starts 0.3 nm above first touch), {t_load:.0f} - {t_slide:.0f} ps hold, then tip_top
+# moves in +y at {speed} m/s (cycloidal 40 ps ramp) to {t_end:.0f} ps; tip_top x is fixed.
+# Substrate: bottom fixed (it carries the {load} nN; a dashpot alone cannot hold a static load), silent
+# boundaries on the four sides (absorb the waves of the load and the sliding).
+# Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
+# stiffness); the check is kinetic / internal energy at the end of the hold (afm_sliding.py).
+begin sierra {name}
+  begin function load
+    type = piecewise linear
+    abscissa unit = ps
+    begin values
+{load_table}
+    end values
+  end function load
+  begin function slide
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+{slide_table}
+    end values
+  end function slide
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+{sam_material}
+  # Fully integrated at GPa contact pressures (verification/hertz/README.md).
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+
+  begin finite element model afm_track
+    begin afm surface
+      file = ../../../../shared/data/afm/di-3.di
+      channel = 0
+      window = {window} nm
+      track = {track} nm
+      element size = {h} nm
+      depth = {depth} nm{coating}
+      grading ratio = 1.3
+    end afm surface
+    begin generated asperity
+      substrate = none
+      radius = 50 nm
+      tip width = {tip_width} nm
+      tip height = {tip_height} nm
+      element size = {h} nm
+      fine half width = {fine_half_width} nm
+      fine depth = {tip_fine_depth} nm
+      grading ratio = 1.3
+      apex position = {x0} {y0} {apex_z:.4f} nm
+    end generated asperity
+    begin parameters for block tip
+      material = silicon
+      section = hex8
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8
+    end parameters for block substrate{coating_block}
+  end finite element model afm_track
+
+  begin presto procedure press_and_slide
+    begin time control
+      termination time = {t_end:.1f} ps
+    end time control
+    begin presto region main
+      use finite element model afm_track
+      mass damping coefficient = 5e11 1/s
+      begin fixed displacement
+        node set = substrate_bottom
+        components = x y z
+      end fixed displacement
+      begin silent boundary
+        side set = substrate_sides
+      end silent boundary
+      begin fixed displacement
+        node set = tip_top
+        components = x
+      end fixed displacement
+      begin prescribed force
+        node set = tip_top
+        component = z
+        function = load
+        scale factor = -{load} nN
+      end prescribed force
+      begin prescribed displacement
+        node set = tip_top
+        component = y
+        function = slide
+      end prescribed displacement
+      begin contact definition tip_on_track
+        contact surface tip contains tip_surface
+        contact surface track contains substrate_top
+        contact axis = {x0} {y0} 0 0 0 1 nm
+        begin interaction junction
+          surfaces = tip track
+          model = junction
+          work of adhesion = 0.05 J/m^2
+          equilibrium separation = 0.3 nm
+          adhesion cutoff = 6 nm
+          junction strength = {tau} MPa
+          junction reference speed = 0.1 m/s   # backward Euler: tanh(V/v_ref) = 1 in sliding
+          junction gap tolerance = 0 nm
+        end interaction junction
+      end contact definition tip_on_track
+      begin history output hist
+        time increment = {hist} ps
+        reaction force = substrate_bottom
+        mean displacement = tip_top tip_apex
+      end history output hist
+      begin results output fields
+        time increment = {fields} ps
+        nodal variables = displacement contact_traction contact_status
+      end results output fields
+    end presto region main
+  end presto procedure press_and_slide
+end sierra {name}
+"""
+
+SAM = """
+  # CH3-thiol SAM (the report's Section 3.5: E = 8 GPa, nu = 0.4); density of an alkanethiol
+  # monolayer, about 1000 kg/m^3 (not given in the report; it only sets the coating's wave speed).
+  begin property specification for material sam
+    density = 1000 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 8 GPa
+      poissons ratio = 0.4
+    end parameters for model elastic
+  end property specification for material sam
+"""
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    for vname, v in VARIANTS.items():
+        for cname, c in CASES.items():
+            name = f"afm_sliding_{vname}_{cname}"
+            t_slide = LOAD_RAMP + HOLD
+            t_end = t_slide + (v["distance"] * NM + SPEED * RAMP / 2) / SPEED
+            text = TEMPLATE.format(
+                name=name, title=c["title"], variant=vname, tip_width=v["tip_width"], load=LOAD,
+                distance=v["distance"], speed=SPEED, tau_note=c["tau_note"], t_load=LOAD_RAMP / PS,
+                t_slide=t_slide / PS, t_end=t_end / PS,
+                load_table=table(load_fraction, t_end, 1.0, 0.0, LOAD_RAMP),
+                slide_table=table(lambda t: ramped(t, SPEED, t_slide), t_end, 1e9, t_slide, t_slide + RAMP),
+                sam_material=SAM if c["coating"] else "",
+                window=v["window"], track=v["track"], h=v["h"], depth=v["depth"],
+                coating=(f"\n      coating thickness = 2 nm\n      coating layers = {v['coating_layers']}"
+                         if c["coating"] else ""),
+                tip_height=v["tip_height"], fine_half_width=v["fine_half_width"],
+                tip_fine_depth=v["tip_fine_depth"], x0=v["start"][0], y0=v["start"][1],
+                apex_z=v["touch"] + 0.3,
+                coating_block=("\n    begin parameters for block coating\n      material = sam\n"
+                               "      section = hex8\n    end parameters for block coating" if c["coating"] else ""),
+                tau=c["tau"], hist=v["hist"], fields=v["fields"])
+            with open(os.path.join(here, name + ".i"), "w") as f:
+                f.write(text)
+            print("wrote", name + ".i")
+
+
+if __name__ == "__main__":
+    main()
