@@ -98,6 +98,7 @@ struct GeneratedAsperitySpec {
   int coating_layers = 6;
   bool quarter = false;  // `symmetry = quarter`: x, y >= 0 only, node sets symmetry_x, symmetry_y
   bool tip_only = false;  // `substrate = none`: blocks and sets of the tip only (over an `afm surface`)
+  bool paraboloid = false;  // `tip profile = paraboloid`: z = r^2/(2R) instead of the sphere
   std::optional<std::array<double, 3>> apex;  // `apex position`: where the apex goes, m (default (0, 0, gap))
   SourceLocation where;
 };

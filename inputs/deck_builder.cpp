@@ -201,6 +201,7 @@ class Builder {
       g.coating_layers = static_cast<int>(real(*a, "coating layers"));
       g.quarter = word(*a, "symmetry") == "quarter";
       g.tip_only = word(*a, "substrate") == "none";
+      g.paraboloid = word(*a, "tip profile") == "paraboloid";
       if (auto v = get(*a, "apex position"); v && v->numbers.size() == 3) g.apex = {{v->numbers[0], v->numbers[1], v->numbers[2]}};
       m.asperity = g;
     }

@@ -143,6 +143,8 @@ std::vector<BlockSchema> build_table() {
 
   t.push_back({"generated asperity", NameRule::none, {}, {}, true,
                {real("radius", dim::length, positive(), true, "", "R of the spherical tip"),
+                choice("tip profile", ValueKind::enumeration, {"sphere", "paraboloid"}, false, "sphere",
+                       "bottom face: sphere z = R - sqrt(R^2 - r^2), or Hertz's paraboloid z = r^2/(2R)"),
                 real("tip width", dim::length, positive(), false, "20 nm", "side of the square tip column"),
                 real("tip height", dim::length, positive(), false, "15 nm", "column height above the apex"),
                 real("substrate width", dim::length, positive(), false, "40 nm", "side of the square substrate"),

@@ -74,6 +74,12 @@ void keep_symmetry_plane(Mesh& m, const std::string& prefix, const char* face, c
   m.side_sets.erase(prefix + face);
 }
 
+/// Height of the tip's bottom face above the apex at distance r from the axis, m.
+double tip_profile_height(const AsperitySpec& s, double r) {
+  if (s.paraboloid) return r * r / (2.0 * s.radius);  // Hertz's profile
+  return s.radius - std::sqrt(s.radius * s.radius - r * r);
+}
+
 }  // namespace
 
 std::vector<double> graded_axis(double lo, double hi, double h, double fine, double ratio) {
@@ -110,10 +116,10 @@ Mesh generate_asperity(const AsperitySpec& s) {
   require(s.grading_ratio >= 1.0 && s.grading_ratio <= 2.0, "grading ratio must be in [1, 2]");
   require(s.gap >= 0.0, "gap must be >= 0");
   const double corner = s.tip_width / std::sqrt(2.0);
-  require(corner < 0.9 * s.radius, "tip width too large for the radius: the column corners (at " +
+  require(s.paraboloid || corner < 0.9 * s.radius, "tip width too large for the radius: the column corners (at " +
                                        std::to_string(corner * 1e9) + " nm from the axis) must stay within 0.9 R; "
                                        "reduce the tip width");
-  const double sag = s.radius - std::sqrt(s.radius * s.radius - corner * corner);
+  const double sag = tip_profile_height(s, corner);
   require(sag < 0.5 * s.tip_height, "tip height too small for the curvature of its bottom face; make it at least " +
                                         std::to_string(2 * sag * 1e9) + " nm");
   require(s.fine_half_width < 0.5 * std::min(s.tip_width, s.substrate_width),
@@ -165,8 +171,8 @@ Mesh generate_asperity(const AsperitySpec& s) {
   const double top = s.gap + s.tip_height;
   for (int n = 0; n < tip.node_count(); ++n) {
     double* x = &tip.coordinates[3 * n];
-    const double zb = s.gap + s.radius - std::sqrt(s.radius * s.radius - x[0] * x[0] - x[1] * x[1]);
-    // z' in [0, H] -> [zb, top], so fine layers stay fine next to the spherical face.
+    const double zb = s.gap + tip_profile_height(s, std::hypot(x[0], x[1]));
+    // z' in [0, H] -> [zb, top], so fine layers stay fine next to the curved face.
     x[2] = zb + x[2] / s.tip_height * (top - zb);
   }
   rename(tip, "tip_zmin", "tip_surface");

@@ -44,6 +44,9 @@ struct AsperitySpec {
   int coating_layers = 6;           // elements through the coating
   bool quarter = false;             // mesh x >= 0, y >= 0 only (symmetry planes: node sets symmetry_x, symmetry_y)
   bool tip_only = false;            // no substrate block: the tip over another mesh's surface (e.g. an AFM one)
+  // Shape of the tip's bottom face: the sphere z = R - sqrt(R^2 - r^2), or Hertz's paraboloid
+  // z = r^2 / (2R) (the profile for which Hertz's solution is exact; verification/hertz/README.md).
+  bool paraboloid = false;
   bool place_apex = false;          // translate the mesh so that the apex sits at `apex` (else at (0, 0, gap))
   std::array<double, 3> apex{};     // m; the substrate top, when there is one, is then at apex z - gap
 };

@@ -117,6 +117,7 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
       g.coating_layers = a.coating_layers;
       g.quarter = a.quarter;
       g.tip_only = a.tip_only;
+      g.paraboloid = a.paraboloid;
       if (a.apex) {
         g.place_apex = true;
         g.apex = *a.apex;

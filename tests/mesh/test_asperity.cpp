@@ -2,7 +2,7 @@
 // generate_asperity: the quarter model (symmetry = quarter) against the full one, the symmetry
 // node sets, the coating block (layers, thickness, bonded to the substrate), and a fine depth
 // smaller than the coating (no zero-thickness layer below it); the tip alone placed at an apex position
-// (substrate = none, apex position: the tip over an AFM surface).
+// (substrate = none, apex position: the tip over an AFM surface); the paraboloid tip profile.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -163,6 +163,30 @@ TEST(Asperity, TipOnlyPlacedAtTheApexIsTheFullTipTranslated) {
       worst = std::max(worst, std::abs(b.coordinates[3 * n + i] - a.coordinates[3 * (n + offset) + i] - shift[i]));
   EXPECT_LT(worst, 1e-18);
   EXPECT_NEAR(block_volume(b, "tip"), block_volume(a, "tip"), 1e-12 * block_volume(a, "tip"));
+}
+
+TEST(Asperity, TipProfileIsTheSphereOrHertzsParaboloid) {
+  // Every tip_surface node lies on the chosen profile above the apex (gap 0.3 nm): the sphere
+  // z = R - sqrt(R^2 - r^2) by default, Hertz's z = r^2/(2R) with `paraboloid`. The two differ by
+  // about r^4/(8R^3) (0.057 nm at the column corner here), far above the 1e-18 m tolerance.
+  for (const bool paraboloid : {false, true}) {
+    AsperitySpec s = coated(false);
+    s.gap = 0.3e-9;
+    s.paraboloid = paraboloid;
+    const Mesh m = generate_asperity(s);
+    const auto& surface = m.node_sets.at("tip_surface");
+    ASSERT_GT(surface.size(), 100u);
+    double worst = 0, largest_r = 0;
+    for (const int n : surface) {
+      const double* x = &m.coordinates[3 * n];
+      const double r2 = x[0] * x[0] + x[1] * x[1], R = s.radius;
+      const double z = paraboloid ? r2 / (2 * R) : R - std::sqrt(R * R - r2);
+      worst = std::max(worst, std::abs(x[2] - s.gap - z));
+      largest_r = std::max(largest_r, std::sqrt(r2));
+    }
+    EXPECT_LT(worst, 1e-18) << (paraboloid ? "paraboloid" : "sphere");
+    EXPECT_NEAR(largest_r, 7e-9 * std::sqrt(2.0), 1e-15);
+  }
 }
 
 TEST(Asperity, TipOnlyQuarterModelIsRefused) {
