@@ -290,8 +290,10 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     slab.element_rows = static_cast<long long>(domain.global_element.size());
     std::exception_ptr error;
     try {
+      // A restarted run continues the folder's results.h5 (the steps up to the restart time stay).
       results = std::make_unique<ResultsWriter>(out.string(), whole_mesh ? *whole_mesh : model.mesh,
-                                                ranks > 1 ? &slab : nullptr);
+                                                ranks > 1 ? &slab : nullptr,
+                                                resume ? std::optional<double>(integrator.time()) : std::nullopt);
     } catch (...) {
       error = std::current_exception();
     }

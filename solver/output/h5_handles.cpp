@@ -14,8 +14,12 @@ namespace {
 
 }  // namespace
 
-H5Handle create_group(hid_t loc, const std::string& name, const std::string& file) {
-  H5Handle g(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+H5Handle create_group(hid_t loc, const std::string& name, const std::string& file, bool track_order) {
+  H5Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+  if (!gcpl.valid() ||
+      (track_order && H5Pset_link_creation_order(gcpl.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED) < 0))
+    fail(file, "prepare group '" + name + "'");
+  H5Handle g(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
   if (!g.valid()) fail(file, "create group '" + name + "'");
   return g;
 }

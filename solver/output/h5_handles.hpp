@@ -48,7 +48,9 @@ class H5Handle {
 };
 
 /// Creates group `name` under `loc`; throws std::runtime_error naming `file` on failure.
-H5Handle create_group(hid_t loc, const std::string& name, const std::string& file);
+/// track_order: the group records the order its links are made in (H5_INDEX_CRT_ORDER), so that
+/// a reader can list them in that order rather than by name.
+H5Handle create_group(hid_t loc, const std::string& name, const std::string& file, bool track_order = false);
 
 /// Creates a contiguous dataset of `rows` x `cols` (cols == 0: one-dimensional) elements of
 /// `file_type`, allocated late and never filled (every byte is written by write_rows).

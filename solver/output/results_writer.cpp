@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
@@ -91,7 +92,111 @@ struct ResultsWriter::Impl {
   void check_fields(std::span<const FieldView> fields, long long entities, const char* kind,
                     const std::vector<FieldSpec>& spec, std::set<std::string>& seen) const;
   void write_field(hid_t group, const FieldView& f, long long entities, const std::string& path, bool nodal);
+  bool open_for_resume(hid_t fapl, double resume_time);
 };
+
+namespace {
+
+// Rows and columns of a dataset (columns 0 for a one-dimensional one); {-1, -1} if it is not there.
+std::array<long long, 2> dataset_shape(hid_t loc, const std::string& path) {
+  if (H5Lexists(loc, path.c_str(), H5P_DEFAULT) <= 0) return {-1, -1};
+  H5Handle d(H5Dopen2(loc, path.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!d.valid()) return {-1, -1};
+  H5Handle space(H5Dget_space(d.get()), H5Sclose);
+  hsize_t dims[2] = {0, 0};
+  const int rank = space.valid() ? H5Sget_simple_extent_dims(space.get(), dims, nullptr) : -1;
+  if (rank == 1) return {static_cast<long long>(dims[0]), 0};
+  if (rank == 2) return {static_cast<long long>(dims[0]), static_cast<long long>(dims[1])};
+  return {-1, -1};
+}
+
+// Names of the links in a group in the order they were made (in name order for a group that did
+// not track it: files written before the order was recorded).
+std::vector<std::string> link_names(hid_t group) {
+  std::vector<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+    static_cast<std::vector<std::string>*>(out)->push_back(name);
+    return 0;
+  };
+  if (H5Literate(group, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect, &names) < 0) {
+    names.clear();
+    H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names);
+  }
+  return names;
+}
+
+// Field lists compare as sets: a resumed run may rebuild the earlier steps' list in name order.
+bool same_fields(std::vector<FieldSpec> a, std::vector<FieldSpec> b) {
+  const auto by_name = [](const FieldSpec& x, const FieldSpec& y) { return x.name < y.name; };
+  std::sort(a.begin(), a.end(), by_name);
+  std::sort(b.begin(), b.end(), by_name);
+  return a == b;
+}
+
+}  // namespace
+
+// A restarted run continues the results.h5 already in its output folder: the steps before the
+// restart time are kept, the later ones (the stopped run's last state, or steps of a run that
+// went on past its restart file and then failed) are unlinked, and the XDMF is rebuilt from what
+// is left. Returns false when there is no results.h5 to continue (a new one is then created).
+bool ResultsWriter::Impl::open_for_resume(hid_t fapl, double resume_time) {
+  if (!std::filesystem::exists(h5_path)) return false;
+  file = H5Handle(H5Fopen(h5_path.c_str(), H5F_ACC_RDWR, fapl), H5Fclose);
+  const hid_t f = file.get();
+  const bool matches = file.valid() && dataset_shape(f, "/mesh/coordinates") == std::array<long long, 2>{nodes, 3} &&
+                       dataset_shape(f, "/mesh/connectivity") == std::array<long long, 2>{elements, 8} &&
+                       H5Lexists(f, "/steps", H5P_DEFAULT) > 0;
+  if (!matches)
+    throw SetupError("cannot continue '" + h5_path + "': it is not the results file of this mesh (" +
+                     std::to_string(nodes) + " nodes, " + std::to_string(elements) +
+                     " elements); move it away or resume into another output folder (-o)");
+  H5Handle steps(H5Gopen2(f, "/steps", H5P_DEFAULT), H5Gclose);
+  for (int k = 0;; ++k) {
+    const std::string name = output::XdmfDocument::step_name(k);
+    if (H5Lexists(steps.get(), name.c_str(), H5P_DEFAULT) <= 0) break;
+    H5Handle g(H5Gopen2(steps.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+    double time = NAN;
+    H5Handle attr(H5Aopen(g.get(), "time", H5P_DEFAULT), H5Aclose);
+    if (!attr.valid() || H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &time) < 0)
+      throw SetupError("cannot continue '" + h5_path + "': step '" + name + "' has no time; move the file away");
+    // Kept: the steps before the restart time. The step at it (written by the stopped run as its
+    // last state) is written again by the resumed run when its schedule has one there, as
+    // history.csv's row (HistoryWriter keeps the rows before the restart step).
+    if (!(time < resume_time) || (doc.step_count() > 0 && !(time > last_time))) {
+      g.reset();
+      attr.reset();
+      for (int j = k;; ++j) {  // this step and every later one
+        const std::string later = output::XdmfDocument::step_name(j);
+        if (H5Lexists(steps.get(), later.c_str(), H5P_DEFAULT) <= 0) break;
+        if (H5Ldelete(steps.get(), later.c_str(), H5P_DEFAULT) < 0)
+          throw SetupError("cannot continue '" + h5_path + "': HDF5 could not remove step '" + later + "'");
+      }
+      break;
+    }
+    std::vector<output::XdmfAttribute> attributes;
+    std::vector<FieldSpec> nodal, element;
+    for (const char* kind : {"nodal", "element"}) {
+      if (H5Lexists(g.get(), kind, H5P_DEFAULT) <= 0) continue;
+      H5Handle sub(H5Gopen2(g.get(), kind, H5P_DEFAULT), H5Gclose);
+      const bool is_nodal = kind[0] == 'n';
+      for (const std::string& field : link_names(sub.get())) {
+        const auto shape = dataset_shape(sub.get(), field);
+        const int stored = shape[1] == 0 ? 1 : static_cast<int>(shape[1]);
+        const std::string path = "/steps/" + name + "/" + kind + "/" + field;
+        attributes.push_back({field, is_nodal ? Center::node : Center::cell, stored, path});
+        // A stored 3x3 tensor was written from the 6 Voigt components (stored_components).
+        (is_nodal ? nodal : element).push_back({field, stored == 9 ? 6 : stored});
+      }
+    }
+    if (doc.step_count() == 0) {
+      nodal_spec = nodal;
+      element_spec = element;
+    }
+    doc.add_step(time, attributes);
+    last_time = time;
+  }
+  return true;
+}
 
 void ResultsWriter::Impl::check_fields(std::span<const FieldView> fields, long long entities,
                                        const char* kind, const std::vector<FieldSpec>& spec,
@@ -113,12 +218,11 @@ void ResultsWriter::Impl::check_fields(std::span<const FieldView> fields, long l
                                   std::to_string(f.components) + " = " + std::to_string(expected));
   }
   if (doc.step_count() == 0) return;
-  bool same = spec.size() == fields.size();
-  for (std::size_t i = 0; same && i < fields.size(); ++i)
-    same = spec[i] == FieldSpec{fields[i].name, fields[i].components};
-  if (!same)
+  std::vector<FieldSpec> given;
+  for (const auto& f : fields) given.push_back({f.name, f.components});
+  if (!same_fields(spec, given))
     throw std::invalid_argument(where + "list differs from the first step's; every step must write the "
-                                        "same fields (names, components, order)");
+                                        "same fields (names and components)");
 }
 
 void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long entities,
@@ -144,7 +248,8 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
     output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols, h5_path + ":" + path);
 }
 
-ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab) {
+ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab,
+                             std::optional<double> resume_time) {
   if (mesh.coordinates.size() % 3 != 0 || mesh.connectivity.size() % 8 != 0)
     throw std::invalid_argument("ResultsWriter: mesh arrays are not [n][3] and [e][8]");
   const long long n = mesh.node_count();
@@ -179,7 +284,8 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     status[0] = !ec && std::filesystem::is_directory(directory);
     if (!status[0]) reason = ec ? ec.message() : std::string("a file of that name exists");
     // fopen first: HDF5's own failure message is a multi-line stack without the errno text.
-    std::FILE* probe = status[0] ? std::fopen(impl_->h5_path.c_str(), "wb") : nullptr;
+    // A resumed run appends to an existing file ("ab" creates none and truncates nothing).
+    std::FILE* probe = status[0] ? std::fopen(impl_->h5_path.c_str(), resume_time ? "ab" : "wb") : nullptr;
     if (probe) std::fclose(probe);
     status[1] = probe != nullptr;
     if (status[0] && !status[1]) reason = std::strerror(errno);
@@ -196,6 +302,10 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
                      "; choose another output directory or fix its permissions");
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   if (impl_->parallel) H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL);
+  if (resume_time && std::filesystem::file_size(impl_->h5_path) > 0 && impl_->open_for_resume(fapl.get(), *resume_time)) {
+    flush();
+    return;
+  }
   impl_->file = H5Handle(H5Fcreate(impl_->h5_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!impl_->file.valid())
     throw SetupError("cannot create results file '" + impl_->h5_path +
@@ -259,7 +369,8 @@ void ResultsWriter::write_step(double time, std::span<const FieldView> nodal,
     long long entities;
   } kinds[2] = {{nodal, "nodal", Center::node, m.nodes}, {element, "element", Center::cell, m.elements}};
   for (const auto& k : kinds) {
-    H5Handle sub = output::create_group(g.get(), k.group, m.h5_path);
+    // Creation order tracked: a resumed run lists the fields as they were written (open_for_resume).
+    H5Handle sub = output::create_group(g.get(), k.group, m.h5_path, true);
     for (const auto& f : k.fields) {
       const std::string path = base + "/" + k.group + "/" + f.name;
       m.write_field(sub.get(), f, k.entities, path, k.center == Center::node);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 #include <span>
 #include <string>
@@ -42,7 +43,10 @@ class ResultsWriter {
   /// Creates DIR (and parents) and the two files, truncating old ones; writes coordinates [n][3],
   /// connectivity [e][8] (0-based int32), block_id [e] (-1 for elements in no block) and the block
   /// names. Throws SetupError (one line, path and reason) when a file or directory cannot be made.
-  ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab = nullptr);
+  /// resume_time (a restarted run, s): continue DIR/results.h5 when it exists, keeping its steps
+  /// before that time and removing the others; SetupError if it is not this mesh's file.
+  ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab = nullptr,
+                std::optional<double> resume_time = std::nullopt);
   ~ResultsWriter();  // closes; the files stay valid
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;

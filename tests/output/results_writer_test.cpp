@@ -295,3 +295,78 @@ TEST(ResultsWriter, BadStepsAreRejectedBeforeAnythingIsWritten) {
   EXPECT_EQ(w.step_count(), 2);
   fs::remove_all(dir);
 }
+
+TEST(ResultsWriter, ResumedRunContinuesTheFileFromItsRestartTime) {
+  // Three steps at t = 0, 1, 2 written, then a run resumed at t = 1.5 keeps t = 0 and 1, drops
+  // t = 2 and appends t = 2.5: the file and the XDMF read as those of one run through 0, 1, 2.5.
+  const fs::path one = fresh_dir("resume_one"), two = fresh_dir("resume_two");
+  const auto mesh = make_hand_box(2, 2, 1);
+  SampleFields f;
+  const auto write = [&](ResultsWriter& w, double t) {
+    f.fill(mesh, t);
+    auto nodal = f.nodal();
+    auto element = f.element();
+    w.write_step(t, nodal, element);
+  };
+  {
+    ResultsWriter w(one.string(), mesh);
+    for (double t : {0.0, 1.0, 2.0}) write(w, t);
+  }
+  {
+    ResultsWriter w(one.string(), mesh, nullptr, 1.5);
+    EXPECT_EQ(w.step_count(), 2);
+    write(w, 2.5);
+    EXPECT_EQ(w.step_count(), 3);
+  }
+  {
+    ResultsWriter w(two.string(), mesh);  // the uninterrupted run
+    for (double t : {0.0, 1.0, 2.5}) write(w, t);
+  }
+  EXPECT_EQ(slurp(one / "results.xdmf"), slurp(two / "results.xdmf"));
+  const hid_t a = H5Fopen((one / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t b = H5Fopen((two / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(a, 0);
+  ASSERT_GE(b, 0);
+  for (const char* g : {"/steps/step_000000", "/steps/step_000001", "/steps/step_000002"}) {
+    EXPECT_EQ(read_time(a, g), read_time(b, g)) << g;
+    for (const char* d : {"/nodal/displacement", "/nodal/temperature", "/element/stress", "/element/slip"})
+      EXPECT_EQ(read_dataset(a, std::string(g) + d).values, read_dataset(b, std::string(g) + d).values) << g << d;
+  }
+  EXPECT_FALSE(h5_path_exists(a, "/steps/step_000003"));
+  H5Fclose(a);
+  H5Fclose(b);
+  fs::remove_all(one);
+  fs::remove_all(two);
+}
+
+TEST(ResultsWriter, ResumingIntoAnotherMeshsFileIsASetupErrorAndLeavesItAlone) {
+  const fs::path dir = fresh_dir("resume_other");
+  const auto small = make_hand_box(2, 2, 1), large = make_hand_box(3, 2, 2);
+  {
+    ResultsWriter w(dir.string(), small);
+    SampleFields f;
+    f.fill(small, 0.0);
+    auto nodal = f.nodal();
+    auto element = f.element();
+    w.write_step(0.0, nodal, element);
+  }
+  const std::string before = slurp(dir / "results.xdmf");
+  const auto size = fs::file_size(dir / "results.h5");
+  try {
+    ResultsWriter w(dir.string(), large, nullptr, 1.0);
+    FAIL() << "no error";
+  } catch (const SetupError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("results.h5"), std::string::npos) << what;
+    EXPECT_NE(what.find("not the results file of this mesh"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  EXPECT_EQ(fs::file_size(dir / "results.h5"), size);
+  EXPECT_EQ(slurp(dir / "results.xdmf"), before);
+  // No file to continue: a resumed run starts a new one.
+  const fs::path fresh = fresh_dir("resume_fresh");
+  ResultsWriter w(fresh.string(), small, nullptr, 1.0);
+  EXPECT_EQ(w.step_count(), 0);
+  fs::remove_all(dir);
+  fs::remove_all(fresh);
+}

@@ -9,7 +9,9 @@
       dataset of results.h5 (gathered fields must land in global order).
   parallel_check.py restart TRIBEX DECK OUT --ranks N --stop STEP
       runs DECK uninterrupted, then stopped after STEP (exit 130, restart file) and resumed with
-      --restart OUT/restart.h5 into the same folder: history.csv must be byte-identical.
+      --restart OUT/restart.h5 into the same folder: history.csv must be byte-identical; where the
+      deck writes fields, the resumed results.h5 (continued, not restarted) must hold the same steps
+      with bitwise the same times and datasets, and results.xdmf must be byte-identical.
   parallel_check.py failure TRIBEX DECK OUT --ranks N --expect-code C --expect TEXT
       runs DECK (meant to fail; not quiet, so that rank 0 prints its log); exit code C, TEXT printed
       exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
@@ -122,6 +124,28 @@ def restart(a):
           f"uninterrupted ({rows} rows): {'identical' if x == y else 'DIFFERENT'}")
     if x != y:
         sys.exit("FAIL: the resumed history is not bitwise identical")
+    if os.path.exists(os.path.join(full, "results.h5")):
+        import h5py
+        import numpy as np
+        with h5py.File(os.path.join(full, "results.h5")) as f1, h5py.File(os.path.join(resumed, "results.h5")) as f2:
+            s1, s2 = sorted(f1["steps"].keys()), sorted(f2["steps"].keys())
+            if s1 != s2:
+                sys.exit(f"FAIL: results.h5 steps: {len(s2)} resumed vs {len(s1)} uninterrupted")
+            names = []
+            f1.visit(lambda n: names.append(n) if isinstance(f1[n], h5py.Dataset) else None)
+            differ = [n for n in names if n not in f2 or not np.array_equal(f1[n][()], f2[n][()])]
+            differ += [k for k in s1 if f1["steps"][k].attrs["time"] != f2["steps"][k].attrs["time"]]
+            print(f"results.h5: {len(s1)} steps, {len(names)} datasets; {len(differ)} differ"
+                  + (f" (first: {differ[0]})" if differ else " (bitwise identical)"))
+            if differ:
+                sys.exit("FAIL: the resumed results.h5 differs from the uninterrupted one")
+        with open(os.path.join(full, "results.xdmf"), "rb") as f:
+            x = f.read()
+        with open(os.path.join(resumed, "results.xdmf"), "rb") as f:
+            y = f.read()
+        print(f"results.xdmf: {'identical' if x == y else 'DIFFERENT'}")
+        if x != y:
+            sys.exit("FAIL: the resumed results.xdmf differs")
     print("PASS")
 
 
