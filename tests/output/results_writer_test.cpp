@@ -105,6 +105,16 @@ std::vector<std::string> h5_references(const std::string& xml) {
   return refs;
 }
 
+/// Writes the sample fields at time t as one step.
+template <class Mesh>
+void write_sample_step(ResultsWriter& w, const Mesh& mesh, double t) {
+  SampleFields f;
+  f.fill(mesh, t);
+  auto nodal = f.nodal();
+  auto element = f.element();
+  w.write_step(t, nodal, element);
+}
+
 int count(const std::string& s, const std::string& what) {
   int n = 0;
   for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
@@ -301,13 +311,7 @@ TEST(ResultsWriter, ResumedRunContinuesTheFileFromItsRestartTime) {
   // t = 2 and appends t = 2.5: the file and the XDMF read as those of one run through 0, 1, 2.5.
   const fs::path one = fresh_dir("resume_one"), two = fresh_dir("resume_two");
   const auto mesh = make_hand_box(2, 2, 1);
-  SampleFields f;
-  const auto write = [&](ResultsWriter& w, double t) {
-    f.fill(mesh, t);
-    auto nodal = f.nodal();
-    auto element = f.element();
-    w.write_step(t, nodal, element);
-  };
+  const auto write = [&](ResultsWriter& w, double t) { write_sample_step(w, mesh, t); };
   {
     ResultsWriter w(one.string(), mesh);
     for (double t : {0.0, 1.0, 2.0}) write(w, t);
@@ -344,11 +348,7 @@ TEST(ResultsWriter, ResumingIntoAnotherMeshsFileIsASetupErrorAndLeavesItAlone) {
   const auto small = make_hand_box(2, 2, 1), large = make_hand_box(3, 2, 2);
   {
     ResultsWriter w(dir.string(), small);
-    SampleFields f;
-    f.fill(small, 0.0);
-    auto nodal = f.nodal();
-    auto element = f.element();
-    w.write_step(0.0, nodal, element);
+    write_sample_step(w, small, 0.0);
   }
   const std::string before = slurp(dir / "results.xdmf");
   const auto size = fs::file_size(dir / "results.h5");
