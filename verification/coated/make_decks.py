@@ -12,10 +12,14 @@ adhesion, limit runs) are in RUNS below; the template is the only deck text.
 """
 import math
 import os
+import pathlib
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1  # noqa: E402
+from deck_templates import (HEX8_FULLY_INTEGRATED, block_parameters, cycloid_travel, elastic_material,  # noqa: E402
+                            piecewise_linear_function, values_lines, write_deck)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -65,36 +69,15 @@ TEMPLATE = """\
 # Tip top pushed {depth:.3f} nm: 3 m/s, slowing to {v_fit:.2f} m/s at {d_fit:.3f} nm (first fitted load), then
 # v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra {name}
-  begin function push
-    type = piecewise linear
-    abscissa unit = ps
-    ordinate unit = nm
-    begin values
-{values}
-    end values
-  end function push
+{push_function}
 
-  begin property specification for material silicon
-    density = 2330 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = {E:g} GPa
-      poissons ratio = {nu}
-    end parameters for model elastic
-  end property specification for material silicon
+{silicon}
 
-  begin property specification for material coating
-    density = {rho_c:g} kg/m^3
-    begin parameters for model elastic
-      youngs modulus = {Ec:g} GPa
-      poissons ratio = {nu_c}
-    end parameters for model elastic
-  end property specification for material coating
+{coating_material}
 
   # Fully integrated: penalty point forces excite the hourglass modes of one-point elements at the
   # surface (verification/hertz/README.md).
-  begin solid section hex8
-    formulation = fully_integrated
-  end solid section hex8
+{hex8}
 
   begin finite element model asperity
     begin generated asperity
@@ -111,18 +94,7 @@ begin sierra {name}
       coating thickness = {hc:g} nm
       coating layers = {layers}
     end generated asperity
-    begin parameters for block tip
-      material = silicon
-      section = hex8
-    end parameters for block tip
-    begin parameters for block substrate
-      material = {substrate}
-      section = hex8
-    end parameters for block substrate
-    begin parameters for block coating
-      material = coating
-      section = hex8
-    end parameters for block coating
+{blocks}
   end finite element model asperity
 
   begin presto procedure indent
@@ -203,7 +175,7 @@ def drive_times(depth, d_fit, v_fit, v_fast=3.0, v_max=10.0, ramp=10.0):
     pts = []
     t = 0.0
     while t < ramp:  # cycloidal start: v = V (1 - cos(pi t/T))/2
-        pts.append((t, 0.5 * v0 * (t - ramp / math.pi * math.sin(math.pi * t / ramp))))
+        pts.append((t, cycloid_travel(t, v0, ramp)))
         t += 2.5
     s, t = 0.5 * v0 * ramp, ramp
     pts.append((t, s))
@@ -216,7 +188,7 @@ def drive_times(depth, d_fit, v_fit, v_fast=3.0, v_max=10.0, ramp=10.0):
         if t >= next_out or s >= depth - 1e-12:
             pts.append((t, s))
             next_out = t + 5.0
-    return "\n".join(f"      {t:9.2f}  {x:.5f}" for t, x in pts), t
+    return values_lines(pts, "9.2f"), t
 
 
 TIP_QUARTER_MASS = 6e-9 * 6e-9 * 3.3e-9 * 2330.0  # kg: quarter of the 12 x 12 nm column, 4 nm above the apex
@@ -253,15 +225,19 @@ def write(name, run):
             "limit_thin": "Limit h_c -> 0: a 0.02 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), "
                           "coating density scaled to 137,500 kg/m^3 (mass scaling, KE/IE checked)."}.get(
         name, f"Table B.1 case {run['case']}, element size {run['h']:g} nm" + (f", W = {W:g} J/m^2." if W else "."))
+    substrate = run.get("substrate", "silicon")
+    blocks = "\n".join([block_parameters("tip", "silicon"), block_parameters("substrate", substrate),
+                        block_parameters("coating", "coating")])
     text = TEMPLATE.format(name=name, what=what, E=E, Ec=Ec, nu=NU, nu_c=NU_C, hc=hc, layers=layers, R=R,
-                           depth=depth, d_fit=d_fit, v_fit=v_fit, values=values, rho_c=rho_c, h=run["h"],
+                           depth=depth, d_fit=d_fit, v_fit=v_fit, push_function=piecewise_linear_function("push", values),
+                           silicon=elastic_material("silicon", 2330, E, NU),
+                           coating_material=elastic_material("coating", rho_c, Ec, NU_C), hex8=HEX8_FULLY_INTEGRATED,
+                           blocks=blocks, h=run["h"],
                            fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
-                           substrate=run.get("substrate", "silicon"), block_width=run.get("block", (36, 18))[0],
+                           block_width=run.get("block", (36, 18))[0],
                            block_depth=run.get("block", (36, 18))[1], t_end=math.ceil(t_end), adhesion=adhesion,
                            hist=1.0 if run["h"] <= 0.4 else 2.0)
-    os.makedirs(os.path.join(HERE, "decks"), exist_ok=True)
-    with open(os.path.join(HERE, "decks", name + ".i"), "w") as f:
-        f.write(text)
+    write_deck(os.path.join(HERE, "decks"), name, text)
 
 
 def main():

@@ -13,10 +13,13 @@ The load and the sliding use cycloidal ramps (zero acceleration jump at both end
 piecewise-linear tables at 5 ps over the ramps, as verification/sphere_sliding/make_decks.py.
 """
 import math
-import os
+import pathlib
+import sys
 
-PS = 1e-12
-NM = 1e-9
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
+from deck_templates import (HEX8_FULLY_INTEGRATED, NM, PS, block_parameters, elastic_material,  # noqa: E402
+                            function_table, piecewise_linear_function, ramped_travel, table_times, write_deck)
+
 RAMP = 40 * PS        # sliding speed ramp
 LOAD_RAMP = 80 * PS   # 0 -> 500 nN
 HOLD = 60 * PS        # settle at 500 nN before sliding
@@ -24,27 +27,9 @@ SPEED = 7.5           # m/s
 LOAD = 500            # nN
 
 
-def ramped(t, speed, t_start):
-    """Displacement of a move at `speed` from t_start (cycloidal ramp up over RAMP), zero before."""
-    s = t - t_start
-    if s <= 0:
-        return 0.0
-    if s <= RAMP:
-        return speed / 2 * (s - RAMP / math.pi * math.sin(math.pi * s / RAMP))
-    return speed * RAMP / 2 + speed * (s - RAMP)
-
-
 def load_fraction(t):
     """0 -> 1 over LOAD_RAMP, (1 - cos) / 2: no jump in the load rate at either end."""
     return 1.0 if t >= LOAD_RAMP else 0.5 * (1 - math.cos(math.pi * t / LOAD_RAMP))
-
-
-def table(func, t_end, scale, ramp_start, ramp_end, step=5 * PS):
-    """Table of func: every `step` over the ramp [ramp_start, ramp_end], then the end point (func is
-    constant or linear outside the ramp, so the piecewise-linear table is exact there)."""
-    n = int((ramp_end - ramp_start) / step + 1e-9)
-    times = ([0.0] if ramp_start > 0 else []) + [ramp_start + i * step for i in range(n + 1)] + [t_end]
-    return "\n".join(f"      {t / PS:8.1f}  {func(t) * scale:.5f}" for t in times)
 
 
 # Tip start (x, y) on the map and the apex height there: the apex z at which the sphere first touches
@@ -84,34 +69,13 @@ TEMPLATE = """\
 # Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
 # stiffness); the check is kinetic / internal energy at the end of the hold (afm_sliding.py).
 begin sierra {name}
-  begin function load
-    type = piecewise linear
-    abscissa unit = ps
-    begin values
-{load_table}
-    end values
-  end function load
-  begin function slide
-    type = piecewise linear
-    abscissa unit = ps
-    ordinate unit = nm
-    begin values
-{slide_table}
-    end values
-  end function slide
+{load_function}
+{slide_function}
 
-  begin property specification for material silicon
-    density = 2330 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 161 GPa
-      poissons ratio = 0.23
-    end parameters for model elastic
-  end property specification for material silicon
+{silicon}
 {sam_material}
   # Fully integrated at GPa contact pressures (verification/hertz/README.md).
-  begin solid section hex8
-    formulation = fully_integrated
-  end solid section hex8
+{hex8}
 
   begin finite element model afm_track
     begin afm surface
@@ -134,14 +98,7 @@ begin sierra {name}
       grading ratio = 1.3
       apex position = {x0} {y0} {apex_z:.4f} nm
     end generated asperity
-    begin parameters for block tip
-      material = silicon
-      section = hex8
-    end parameters for block tip
-    begin parameters for block substrate
-      material = silicon
-      section = hex8
-    end parameters for block substrate{coating_block}
+{blocks}
   end finite element model afm_track
 
   begin presto procedure press_and_slide
@@ -205,41 +162,38 @@ end sierra {name}
 SAM = """
   # CH3-thiol SAM (the report's Section 3.5: E = 8 GPa, nu = 0.4); density of an alkanethiol
   # monolayer, about 1000 kg/m^3 (not given in the report; it only sets the coating's wave speed).
-  begin property specification for material sam
-    density = 1000 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 8 GPa
-      poissons ratio = 0.4
-    end parameters for model elastic
-  end property specification for material sam
-"""
+""" + elastic_material("sam", 1000, 8, 0.4) + "\n"
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
+    here = pathlib.Path(__file__).resolve().parent
     for vname, v in VARIANTS.items():
         for cname, c in CASES.items():
             name = f"afm_sliding_{vname}_{cname}"
             t_slide = LOAD_RAMP + HOLD
             t_end = t_slide + (v["distance"] * NM + SPEED * RAMP / 2) / SPEED
+            blocks = [block_parameters("tip", "silicon"), block_parameters("substrate", "silicon")]
+            if c["coating"]:
+                blocks.append(block_parameters("coating", "sam"))
+            load_table = function_table(load_fraction, table_times(t_end, 0.0, LOAD_RAMP), "8.1f", scale=1.0)
+            slide_table = function_table(lambda t: ramped_travel(t, SPEED, t_slide, ramp=RAMP),
+                                         table_times(t_end, t_slide, t_slide + RAMP), "8.1f")
             text = TEMPLATE.format(
                 name=name, title=c["title"], variant=vname, tip_width=v["tip_width"], load=LOAD,
                 distance=v["distance"], speed=SPEED, tau_note=c["tau_note"], t_load=LOAD_RAMP / PS,
                 t_slide=t_slide / PS, t_end=t_end / PS,
-                load_table=table(load_fraction, t_end, 1.0, 0.0, LOAD_RAMP),
-                slide_table=table(lambda t: ramped(t, SPEED, t_slide), t_end, 1e9, t_slide, t_slide + RAMP),
+                load_function=piecewise_linear_function("load", load_table, ordinate_unit=None),
+                slide_function=piecewise_linear_function("slide", slide_table),
+                silicon=elastic_material("silicon", 2330, 161, 0.23), hex8=HEX8_FULLY_INTEGRATED,
                 sam_material=SAM if c["coating"] else "",
                 window=v["window"], track=v["track"], h=v["h"], depth=v["depth"],
                 coating=(f"\n      coating thickness = 2 nm\n      coating layers = {v['coating_layers']}"
                          if c["coating"] else ""),
                 tip_height=v["tip_height"], fine_half_width=v["fine_half_width"],
                 tip_fine_depth=v["tip_fine_depth"], x0=v["start"][0], y0=v["start"][1],
-                apex_z=v["touch"] + 0.3,
-                coating_block=("\n    begin parameters for block coating\n      material = sam\n"
-                               "      section = hex8\n    end parameters for block coating" if c["coating"] else ""),
+                apex_z=v["touch"] + 0.3, blocks="\n".join(blocks),
                 tau=c["tau"], hist=v["hist"], fields=v["fields"])
-            with open(os.path.join(here, name + ".i"), "w") as f:
-                f.write(text)
+            write_deck(here, name, text)
             print("wrote", name + ".i")
 
 
