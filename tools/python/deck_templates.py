@@ -101,3 +101,33 @@ def write_deck(folder, name, text):
     with open(path, "w") as f:
         f.write(text)
     return path
+
+
+def fixed_displacement(node_set, components):
+    """A `begin fixed displacement` block (inside `begin presto region`); components e.g. "x y z"."""
+    return (f"      begin fixed displacement\n        node set = {node_set}\n        components = {components}\n"
+            f"      end fixed displacement")
+
+
+def prescribed(kind, node_set, component, function, scale_factor=None):
+    """A `begin prescribed displacement` (kind "displacement") or `begin prescribed force` block
+    driven by `function`, optionally scaled (scale_factor as written, e.g. "-1", "-500 nN")."""
+    scale = f"        scale factor = {scale_factor}\n" if scale_factor is not None else ""
+    return (f"      begin prescribed {kind}\n        node set = {node_set}\n        component = {component}\n"
+            f"        function = {function}\n{scale}      end prescribed {kind}")
+
+
+def history_output(increment_ps, reactions, displacements):
+    """The `hist` history output: reaction forces of the node sets `reactions` and mean
+    displacements of `displacements` (space-separated names) every increment_ps ps."""
+    return (f"      begin history output hist\n        time increment = {increment_ps} ps\n"
+            f"        reaction force = {reactions}\n        mean displacement = {displacements}\n"
+            f"      end history output hist")
+
+
+def results_output(increment_ps, element_variables=None):
+    """The `fields` results output: displacement and contact fields every increment_ps ps."""
+    element = f"        element variables = {element_variables}\n" if element_variables else ""
+    return (f"      begin results output fields\n        time increment = {increment_ps} ps\n"
+            f"        nodal variables = displacement contact_traction contact_status\n{element}"
+            f"      end results output fields")

@@ -19,7 +19,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1  # noqa: E402
 from deck_templates import (HEX8_FULLY_INTEGRATED, block_parameters, cycloid_travel, elastic_material,  # noqa: E402
-                            piecewise_linear_function, values_lines, write_deck)
+                            fixed_displacement, history_output, piecewise_linear_function, prescribed,
+                            results_output, values_lines, write_deck)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -106,24 +107,7 @@ begin sierra {name}
       mass damping coefficient = 5e11 1/s
       # Symmetry planes hold x (y); with them no rigid lateral motion or spin is left, so the
       # bottom is a roller (z) and the tip top is only driven in z (a node is constrained once).
-      begin fixed displacement
-        node set = symmetry_x
-        components = x
-      end fixed displacement
-      begin fixed displacement
-        node set = symmetry_y
-        components = y
-      end fixed displacement
-      begin fixed displacement
-        node set = substrate_bottom
-        components = z
-      end fixed displacement
-      begin prescribed displacement
-        node set = tip_top
-        component = z
-        function = push
-        scale factor = -1
-      end prescribed displacement
+{boundary_conditions}
       begin contact definition tip_on_coating
         contact surface tip contains tip_surface
         contact surface flat contains substrate_top
@@ -132,20 +116,15 @@ begin sierra {name}
           surfaces = tip flat
 {adhesion}        end interaction sphere_flat
       end contact definition tip_on_coating
-      begin history output hist
-        time increment = {hist:g} ps
-        reaction force = tip_top substrate_bottom
-        mean displacement = tip_top tip_apex substrate_axis_top
-      end history output hist
-      begin results output fields
-        time increment = {t_end:g} ps
-        nodal variables = displacement contact_traction contact_status
-        element variables = stress
-      end results output fields
+{outputs}
     end presto region main
   end presto procedure indent
 end sierra {name}
 """
+
+BOUNDARY_CONDITIONS = "\n".join([fixed_displacement("symmetry_x", "x"), fixed_displacement("symmetry_y", "y"),
+                                 fixed_displacement("substrate_bottom", "z"),
+                                 prescribed("displacement", "tip_top", "z", "push", "-1")])
 
 
 def drive_depth(case):
@@ -226,17 +205,21 @@ def write(name, run):
                           "coating density scaled to 137,500 kg/m^3 (mass scaling, KE/IE checked)."}.get(
         name, f"Table B.1 case {run['case']}, element size {run['h']:g} nm" + (f", W = {W:g} J/m^2." if W else "."))
     substrate = run.get("substrate", "silicon")
+    hist = 1.0 if run["h"] <= 0.4 else 2.0
     blocks = "\n".join([block_parameters("tip", "silicon"), block_parameters("substrate", substrate),
                         block_parameters("coating", "coating")])
     text = TEMPLATE.format(name=name, what=what, E=E, Ec=Ec, nu=NU, nu_c=NU_C, hc=hc, layers=layers, R=R,
                            depth=depth, d_fit=d_fit, v_fit=v_fit, push_function=piecewise_linear_function("push", values),
                            silicon=elastic_material("silicon", 2330, E, NU),
                            coating_material=elastic_material("coating", rho_c, Ec, NU_C), hex8=HEX8_FULLY_INTEGRATED,
-                           blocks=blocks, h=run["h"],
+                           blocks=blocks, h=run["h"], boundary_conditions=BOUNDARY_CONDITIONS,
+                           outputs=history_output(format(hist, "g"), "tip_top substrate_bottom",
+                                                  "tip_top tip_apex substrate_axis_top")
+                           + "\n" + results_output(format(math.ceil(t_end), "g"), "stress"),
                            fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
                            block_width=run.get("block", (36, 18))[0],
                            block_depth=run.get("block", (36, 18))[1], t_end=math.ceil(t_end), adhesion=adhesion,
-                           hist=1.0 if run["h"] <= 0.4 else 2.0)
+)
     write_deck(os.path.join(HERE, "decks"), name, text)
 
 

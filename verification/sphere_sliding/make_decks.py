@@ -14,7 +14,8 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from deck_templates import (HEX8_FULLY_INTEGRATED, PS, block_parameters, elastic_material,  # noqa: E402
-                            function_table, piecewise_linear_function, ramped_travel, table_times, write_deck)
+                            fixed_displacement, function_table, history_output, piecewise_linear_function,
+                            prescribed, ramped_travel, results_output, table_times, write_deck)
 
 RAMP = 40 * PS
 SILICON = elastic_material("silicon", 2330, 161, 0.23)
@@ -76,25 +77,7 @@ begin sierra {name}
     begin presto region main
       use finite element model asperity
       mass damping coefficient = {damping} 1/s
-      begin fixed displacement
-        node set = substrate_bottom
-        components = x y z
-      end fixed displacement
-      begin fixed displacement
-        node set = tip_top
-        components = y
-      end fixed displacement
-      begin prescribed displacement
-        node set = tip_top
-        component = z
-        function = push
-        scale factor = -1
-      end prescribed displacement
-      begin prescribed displacement
-        node set = tip_top
-        component = x
-        function = slide
-      end prescribed displacement
+{boundary_conditions}
       begin contact definition tip_on_flat
         contact surface tip contains tip_surface
         contact surface flat contains substrate_top
@@ -110,15 +93,7 @@ begin sierra {name}
           junction gap tolerance = 0 nm
         end interaction sphere_flat
       end contact definition tip_on_flat
-      begin history output hist
-        time increment = {history} ps
-        reaction force = tip_top substrate_bottom
-        mean displacement = tip_top tip_apex
-      end history output hist
-      begin results output fields
-        time increment = {fields} ps
-        nodal variables = displacement contact_traction contact_status
-      end results output fields
+{outputs}
     end presto region main
   end presto procedure indent_hold_slide
 end sierra {name}
@@ -141,6 +116,9 @@ VARIANTS = {
 def main():
     here = pathlib.Path(__file__).resolve().parent
     blocks = block_parameters("tip", "silicon") + "\n" + block_parameters("substrate", "silicon")
+    boundary_conditions = "\n".join([
+        fixed_displacement("substrate_bottom", "x y z"), fixed_displacement("tip_top", "y"),
+        prescribed("displacement", "tip_top", "z", "push", "-1"), prescribed("displacement", "tip_top", "x", "slide")])
     for name, v in VARIANTS.items():
         depth = v["depth"] * 1e-9
         t_indent = depth / v["v_indent"] + RAMP
@@ -153,7 +131,10 @@ def main():
         slide = function_table(lambda t: ramped_travel(t, v["v_slide"], t_slide), table_times(t_end, t_slide), "7.1f")
         text = TEMPLATE.format(name=name, push_function=piecewise_linear_function("push", push),
                                slide_function=piecewise_linear_function("slide", slide), silicon=SILICON,
-                               hex8=HEX8_FULLY_INTEGRATED, blocks=blocks, t_indent=t_indent / PS,
+                               hex8=HEX8_FULLY_INTEGRATED, blocks=blocks,
+                               boundary_conditions=boundary_conditions,
+                               outputs=history_output(v["history"], "tip_top substrate_bottom", "tip_top tip_apex")
+                               + "\n" + results_output(v["fields"]), t_indent=t_indent / PS,
                                t_slide=t_slide / PS, t_end=t_end / PS, **v)
         write_deck(here, name, text)
         print(f"{name}.i: indent to {t_indent / PS:.0f} ps, slide from {t_slide / PS:.0f} ps, end {t_end / PS:.0f} ps")

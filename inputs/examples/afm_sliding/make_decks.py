@@ -18,7 +18,8 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
 from deck_templates import (HEX8_FULLY_INTEGRATED, NM, PS, block_parameters, elastic_material,  # noqa: E402
-                            function_table, piecewise_linear_function, ramped_travel, table_times, write_deck)
+                            fixed_displacement, function_table, history_output, piecewise_linear_function,
+                            prescribed, ramped_travel, results_output, table_times, write_deck)
 
 RAMP = 40 * PS        # sliding speed ramp
 LOAD_RAMP = 80 * PS   # 0 -> 500 nN
@@ -108,28 +109,11 @@ begin sierra {name}
     begin presto region main
       use finite element model afm_track
       mass damping coefficient = 5e11 1/s
-      begin fixed displacement
-        node set = substrate_bottom
-        components = x y z
-      end fixed displacement
+{substrate_bottom}
       begin silent boundary
         side set = substrate_sides
       end silent boundary
-      begin fixed displacement
-        node set = tip_top
-        components = x
-      end fixed displacement
-      begin prescribed force
-        node set = tip_top
-        component = z
-        function = load
-        scale factor = -{load} nN
-      end prescribed force
-      begin prescribed displacement
-        node set = tip_top
-        component = y
-        function = slide
-      end prescribed displacement
+{tip_top}
       begin contact definition tip_on_track
         contact surface tip contains tip_surface
         contact surface track contains substrate_top
@@ -145,15 +129,7 @@ begin sierra {name}
           junction gap tolerance = 0 nm
         end interaction junction
       end contact definition tip_on_track
-      begin history output hist
-        time increment = {hist} ps
-        reaction force = substrate_bottom
-        mean displacement = tip_top tip_apex
-      end history output hist
-      begin results output fields
-        time increment = {fields} ps
-        nodal variables = displacement contact_traction contact_status
-      end results output fields
+{outputs}
     end presto region main
   end presto procedure press_and_slide
 end sierra {name}
@@ -192,7 +168,12 @@ def main():
                 tip_height=v["tip_height"], fine_half_width=v["fine_half_width"],
                 tip_fine_depth=v["tip_fine_depth"], x0=v["start"][0], y0=v["start"][1],
                 apex_z=v["touch"] + 0.3, blocks="\n".join(blocks),
-                tau=c["tau"], hist=v["hist"], fields=v["fields"])
+                substrate_bottom=fixed_displacement("substrate_bottom", "x y z"),
+                tip_top="\n".join([fixed_displacement("tip_top", "x"),
+                                   prescribed("force", "tip_top", "z", "load", f"-{LOAD} nN"),
+                                   prescribed("displacement", "tip_top", "y", "slide")]),
+                outputs=history_output(v["hist"], "substrate_bottom", "tip_top tip_apex") + "\n" + results_output(v["fields"]),
+                tau=c["tau"])
             write_deck(here, name, text)
             print("wrote", name + ".i")
 
