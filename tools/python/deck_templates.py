@@ -131,3 +131,15 @@ def results_output(increment_ps, element_variables=None):
     return (f"      begin results output fields\n        time increment = {increment_ps} ps\n"
             f"        nodal variables = displacement contact_traction contact_status\n{element}"
             f"      end results output fields")
+
+
+def contact_definition(name, surfaces, axis, interaction, body):
+    """A `begin contact definition` with one interaction between all its surfaces: surfaces = [(surface,
+    side or node set), ...]; axis = the contact axis (point and direction, nm) as written; body = the
+    interaction's model lines (10 spaces of indentation, each ending in a newline; "" for plain
+    penalty contact)."""
+    lines = [f"      begin contact definition {name}"]
+    lines += [f"        contact surface {surface} contains {where}" for surface, where in surfaces]
+    lines += [f"        contact axis = {axis} nm", f"        begin interaction {interaction}",
+              f"          surfaces = {' '.join(surface for surface, _ in surfaces)}"]
+    return "\n".join(lines) + f"\n{body}        end interaction {interaction}\n      end contact definition {name}"

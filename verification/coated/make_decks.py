@@ -19,7 +19,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1  # noqa: E402
 from deck_templates import (HEX8_FULLY_INTEGRATED, block_parameters, cycloid_travel, elastic_material,  # noqa: E402
-                            fixed_displacement, history_output, piecewise_linear_function, prescribed,
+                            contact_definition, fixed_displacement, history_output, piecewise_linear_function, prescribed,
                             results_output, values_lines, write_deck)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -108,14 +108,7 @@ begin sierra {name}
       # Symmetry planes hold x (y); with them no rigid lateral motion or spin is left, so the
       # bottom is a roller (z) and the tip top is only driven in z (a node is constrained once).
 {boundary_conditions}
-      begin contact definition tip_on_coating
-        contact surface tip contains tip_surface
-        contact surface flat contains substrate_top
-        contact axis = 0 0 0 0 0 1 nm
-        begin interaction sphere_flat
-          surfaces = tip flat
-{adhesion}        end interaction sphere_flat
-      end contact definition tip_on_coating
+{contact}
 {outputs}
     end presto region main
   end presto procedure indent
@@ -218,7 +211,8 @@ def write(name, run):
                            + "\n" + results_output(format(math.ceil(t_end), "g"), "stress"),
                            fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
                            block_width=run.get("block", (36, 18))[0],
-                           block_depth=run.get("block", (36, 18))[1], t_end=math.ceil(t_end), adhesion=adhesion,
+                           block_depth=run.get("block", (36, 18))[1], t_end=math.ceil(t_end), contact=contact_definition("tip_on_coating", [("tip", "tip_surface"), ("flat", "substrate_top")],
+                                                      "0 0 0 0 0 1", "sphere_flat", adhesion),
 )
     write_deck(os.path.join(HERE, "decks"), name, text)
 

@@ -14,7 +14,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from deck_templates import (HEX8_FULLY_INTEGRATED, PS, block_parameters, elastic_material,  # noqa: E402
-                            fixed_displacement, function_table, history_output, piecewise_linear_function,
+                            contact_definition, fixed_displacement, function_table, history_output, piecewise_linear_function,
                             prescribed, ramped_travel, results_output, table_times, write_deck)
 
 RAMP = 40 * PS
@@ -78,12 +78,15 @@ begin sierra {name}
       use finite element model asperity
       mass damping coefficient = {damping} 1/s
 {boundary_conditions}
-      begin contact definition tip_on_flat
-        contact surface tip contains tip_surface
-        contact surface flat contains substrate_top
-        contact axis = 0 0 0 0 0 1 nm
-        begin interaction sphere_flat
-          surfaces = tip flat
+{contact}
+{outputs}
+    end presto region main
+  end presto procedure indent_hold_slide
+end sierra {name}
+"""
+
+# Junction model on the tip-flat pair (the same in both variants).
+JUNCTION = """\
           model = junction
           work of adhesion = 0.05 J/m^2
           equilibrium separation = 0.3 nm
@@ -91,12 +94,6 @@ begin sierra {name}
           junction strength = 195 MPa
           junction reference speed = 0.1 m/s   # no stability floor (backward Euler): tanh(V/v_ref) = 1 in sliding
           junction gap tolerance = 0 nm
-        end interaction sphere_flat
-      end contact definition tip_on_flat
-{outputs}
-    end presto region main
-  end presto procedure indent_hold_slide
-end sierra {name}
 """
 
 VARIANTS = {
@@ -133,6 +130,8 @@ def main():
                                slide_function=piecewise_linear_function("slide", slide), silicon=SILICON,
                                hex8=HEX8_FULLY_INTEGRATED, blocks=blocks,
                                boundary_conditions=boundary_conditions,
+                               contact=contact_definition("tip_on_flat", [("tip", "tip_surface"), ("flat", "substrate_top")],
+                                                          "0 0 0 0 0 1", "sphere_flat", JUNCTION),
                                outputs=history_output(v["history"], "tip_top substrate_bottom", "tip_top tip_apex")
                                + "\n" + results_output(v["fields"]), t_indent=t_indent / PS,
                                t_slide=t_slide / PS, t_end=t_end / PS, **v)

@@ -18,7 +18,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
 from deck_templates import (HEX8_FULLY_INTEGRATED, NM, PS, block_parameters, elastic_material,  # noqa: E402
-                            fixed_displacement, function_table, history_output, piecewise_linear_function,
+                            contact_definition, fixed_displacement, function_table, history_output, piecewise_linear_function,
                             prescribed, ramped_travel, results_output, table_times, write_deck)
 
 RAMP = 40 * PS        # sliding speed ramp
@@ -114,12 +114,15 @@ begin sierra {name}
         side set = substrate_sides
       end silent boundary
 {tip_top}
-      begin contact definition tip_on_track
-        contact surface tip contains tip_surface
-        contact surface track contains substrate_top
-        contact axis = {x0} {y0} 0 0 0 1 nm
-        begin interaction junction
-          surfaces = tip track
+{contact}
+{outputs}
+    end presto region main
+  end presto procedure press_and_slide
+end sierra {name}
+"""
+
+# Junction model on the tip-track pair ({tau}: tau* in MPa, per case).
+JUNCTION = """\
           model = junction
           work of adhesion = 0.05 J/m^2
           equilibrium separation = 0.3 nm
@@ -127,12 +130,6 @@ begin sierra {name}
           junction strength = {tau} MPa
           junction reference speed = 0.1 m/s   # backward Euler: tanh(V/v_ref) = 1 in sliding
           junction gap tolerance = 0 nm
-        end interaction junction
-      end contact definition tip_on_track
-{outputs}
-    end presto region main
-  end presto procedure press_and_slide
-end sierra {name}
 """
 
 SAM = """
@@ -173,7 +170,9 @@ def main():
                                    prescribed("force", "tip_top", "z", "load", f"-{LOAD} nN"),
                                    prescribed("displacement", "tip_top", "y", "slide")]),
                 outputs=history_output(v["hist"], "substrate_bottom", "tip_top tip_apex") + "\n" + results_output(v["fields"]),
-                tau=c["tau"])
+                contact=contact_definition("tip_on_track", [("tip", "tip_surface"), ("track", "substrate_top")],
+                                           f"{v['start'][0]} {v['start'][1]} 0 0 0 1", "junction",
+                                           JUNCTION.format(tau=c["tau"])))
             write_deck(here, name, text)
             print("wrote", name + ".i")
 
