@@ -8,7 +8,8 @@ Each deck: the generated asperity (quarter model, symmetry planes x = 0 and y = 
 coating block of thickness h_c = 2 nm (6 element layers) on a silicon substrate, no adhesion unless
 the run names a work of adhesion, the tip top pushed down quasi-statically (cycloidal start, then a
 speed growing with the travel), mass damping. The per-run values (case of Table B.1, element size, drive depth,
-adhesion, limit runs) are in RUNS below; the template is the only deck text.
+adhesion, limit runs) are in RUNS below; the template is the only deck text (with the blocks of
+tools/python/deck_templates.py, shared with the other make_decks.py).
 """
 import math
 import os

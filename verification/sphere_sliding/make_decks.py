@@ -6,7 +6,8 @@ the two variants differ only in the mesh and the sliding schedule. Run it after 
     /usr/bin/python3 verification/sphere_sliding/make_decks.py
 
 The tip top follows cycloidal velocity ramps (v = V (1 - cos(pi t / T)) / 2 over T = 40 ps, zero
-acceleration jump at both ends) written as piecewise-linear tables at 5 ps.
+acceleration jump at both ends) written as piecewise-linear tables at 5 ps (tools/python/deck_templates.py
+holds the ramps, the tables and the deck blocks shared with the other make_decks.py).
 """
 import math
 import pathlib

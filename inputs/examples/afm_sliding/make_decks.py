@@ -10,7 +10,8 @@ Variants: reduced (CI: 1 nm elements, 40 x 36 nm window, 3 nm of sliding) and fu
     /usr/bin/python3 inputs/examples/afm_sliding/make_decks.py
 
 The load and the sliding use cycloidal ramps (zero acceleration jump at both ends) written as
-piecewise-linear tables at 5 ps over the ramps, as verification/sphere_sliding/make_decks.py.
+piecewise-linear tables at 5 ps over the ramps; the tables and the deck blocks come from
+tools/python/deck_templates.py (shared with the other make_decks.py).
 """
 import math
 import pathlib
