@@ -21,6 +21,13 @@ def rows_between(rows, lo, hi, key="time"):
     return [r for r in rows if lo <= r[key] <= hi]
 
 
+def deepest_index(rows, key="tip_top_displacement_z"):
+    """Index of the row where the tip top is deepest (most negative key): the end of the loading
+    branch of an indentation (rows[: i + 1]) and the start of the withdrawal (rows[i:])."""
+    z = [r[key] for r in rows]
+    return min(range(len(z)), key=lambda i: z[i])
+
+
 def mean(rows, key):
     """Mean of row[key] over rows."""
     return sum(r[key] for r in rows) / len(rows)

@@ -25,7 +25,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from contact_theory import RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius  # noqa: E402
-from history_checks import max_and_mean, pyplot, read_history, relative_errors, save_figure  # noqa: E402
+from history_checks import deepest_index, max_and_mean, pyplot, read_history, relative_errors, save_figure  # noqa: E402
 
 E, NU, R = 161e9, 0.23, 27e-9
 ESTAR = effective_modulus(E, NU)
@@ -47,8 +47,7 @@ def main():
     rows = read_history(a.output)
     h = a.element_size * 1e-9
     # Loading branch: up to the deepest tip position.
-    z = [r["tip_top_displacement_z"] for r in rows]
-    deepest = min(range(len(z)), key=lambda i: z[i])
+    deepest = deepest_index(rows)
     column = f"contact_radius_{a.radius}"
     radius = lambda P: dmt_radius(P, R, W, ESTAR)  # noqa: E731
     used = [r for r in rows[: deepest + 1]
