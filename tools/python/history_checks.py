@@ -9,8 +9,8 @@ import os
 
 def read_history(path):
     """The rows of a tribex history.csv as dicts of floats (column name -> value, SI). `path` is the
-    file or the run's output folder."""
-    if os.path.isdir(path):
+    file (a name ending in .csv) or the run's output folder."""
+    if os.path.isdir(path) or not path.endswith(".csv"):
         path = os.path.join(path, "history.csv")
     with open(path) as f:
         return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
