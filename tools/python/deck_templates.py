@@ -5,12 +5,14 @@ tables, and the deck blocks every generated deck spells the same way.
 Drive functions. A cycloidal speed ramp v = V (1 - cos(pi s / T)) / 2 over T has no acceleration jump
 at either end; its travel after s seconds is V/2 (s - T/pi sin(pi s / T)) (`cycloid_travel`).
 `ramped_travel` is a move at constant speed started (and optionally stopped) with such ramps;
-`table_times` (on `sample_times`) and `values_lines` turn a function of time into the `begin values` lines of a
-`type = piecewise linear` function (`piecewise_linear_function`), times in ps.
+`table_times` (on `sample_times`), `function_table` and `values_lines` turn a function of time into
+the `begin values` lines of a `type = piecewise linear` function (`piecewise_linear_function`),
+times in ps.
 
-Deck blocks (`elastic_material`, `block_parameters`, HEX8_FULLY_INTEGRATED) are the text of the
-inputs/ deck language at the indentation the generators use (two spaces a level, inside
-`begin sierra`).
+Deck blocks (`elastic_material`, HEX8_FULLY_INTEGRATED, `block_parameters`, `fixed_displacement`,
+`prescribed`, `contact_definition`, `history_output`, `results_output`) are the text of the inputs/
+deck language at the indentation the generators use (two spaces a level, inside `begin sierra`).
+A change here changes every generated deck: rerun the three make_decks.py and check the diff.
 """
 import math
 import os
