@@ -198,23 +198,22 @@ def write(name, run):
             "limit_thin": "Limit h_c -> 0: a 0.02 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), "
                           "coating density scaled to 137,500 kg/m^3 (mass scaling, KE/IE checked)."}.get(
         name, f"Table B.1 case {run['case']}, element size {run['h']:g} nm" + (f", W = {W:g} J/m^2." if W else "."))
-    substrate = run.get("substrate", "silicon")
-    hist = 1.0 if run["h"] <= 0.4 else 2.0
-    blocks = "\n".join([block_parameters("tip", "silicon"), block_parameters("substrate", substrate),
+    t_end = math.ceil(t_end)
+    blocks = "\n".join([block_parameters("tip", "silicon"), block_parameters("substrate", run.get("substrate", "silicon")),
                         block_parameters("coating", "coating")])
+    outputs = "\n".join([history_output(format(1.0 if run["h"] <= 0.4 else 2.0, "g"), "tip_top substrate_bottom",
+                                        "tip_top tip_apex substrate_axis_top"),
+                         results_output(format(t_end, "g"), "stress")])
+    contact = contact_definition("tip_on_coating", [("tip", "tip_surface"), ("flat", "substrate_top")], "0 0 0 0 0 1",
+                                 "sphere_flat", adhesion)
     text = TEMPLATE.format(name=name, what=what, E=E, Ec=Ec, nu=NU, nu_c=NU_C, hc=hc, layers=layers, R=R,
                            depth=depth, d_fit=d_fit, v_fit=v_fit, push_function=piecewise_linear_function("push", values),
                            silicon=elastic_material("silicon", 2330, E, NU),
                            coating_material=elastic_material("coating", rho_c, Ec, NU_C), hex8=HEX8_FULLY_INTEGRATED,
-                           blocks=blocks, h=run["h"], boundary_conditions=BOUNDARY_CONDITIONS,
-                           outputs=history_output(format(hist, "g"), "tip_top substrate_bottom",
-                                                  "tip_top tip_apex substrate_axis_top")
-                           + "\n" + results_output(format(math.ceil(t_end), "g"), "stress"),
-                           fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
-                           block_width=run.get("block", (36, 18))[0],
-                           block_depth=run.get("block", (36, 18))[1], t_end=math.ceil(t_end), contact=contact_definition("tip_on_coating", [("tip", "tip_surface"), ("flat", "substrate_top")],
-                                                      "0 0 0 0 0 1", "sphere_flat", adhesion),
-)
+                           h=run["h"], fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
+                           block_width=run.get("block", (36, 18))[0], block_depth=run.get("block", (36, 18))[1],
+                           blocks=blocks, boundary_conditions=BOUNDARY_CONDITIONS, contact=contact, outputs=outputs,
+                           t_end=t_end)
     write_deck(os.path.join(HERE, "decks"), name, text)
 
 
