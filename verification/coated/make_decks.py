@@ -8,14 +8,20 @@ Each deck: the generated asperity (quarter model, symmetry planes x = 0 and y = 
 coating block of thickness h_c = 2 nm (6 element layers) on a silicon substrate, no adhesion unless
 the run names a work of adhesion, the tip top pushed down quasi-statically (cycloidal start, then a
 speed growing with the travel), mass damping. The per-run values (case of Table B.1, element size, drive depth,
-adhesion, limit runs) are in RUNS below; the template is the only deck text.
+adhesion, limit runs) are in RUNS below; the template is the only deck text (with the blocks of
+tools/python/deck_templates.py, shared with the other make_decks.py).
 """
 import math
 import os
+import pathlib
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1  # noqa: E402
+from deck_templates import (HEX8_FULLY_INTEGRATED, block_parameters, cycloid_travel, elastic_material,  # noqa: E402
+                            contact_definition, fixed_displacement, history_output, piecewise_linear_function, prescribed,
+                            results_output, values_lines, write_deck)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -65,36 +71,15 @@ TEMPLATE = """\
 # Tip top pushed {depth:.3f} nm: 3 m/s, slowing to {v_fit:.2f} m/s at {d_fit:.3f} nm (first fitted load), then
 # v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra {name}
-  begin function push
-    type = piecewise linear
-    abscissa unit = ps
-    ordinate unit = nm
-    begin values
-{values}
-    end values
-  end function push
+{push_function}
 
-  begin property specification for material silicon
-    density = 2330 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = {E:g} GPa
-      poissons ratio = {nu}
-    end parameters for model elastic
-  end property specification for material silicon
+{silicon}
 
-  begin property specification for material coating
-    density = {rho_c:g} kg/m^3
-    begin parameters for model elastic
-      youngs modulus = {Ec:g} GPa
-      poissons ratio = {nu_c}
-    end parameters for model elastic
-  end property specification for material coating
+{coating_material}
 
   # Fully integrated: penalty point forces excite the hourglass modes of one-point elements at the
   # surface (verification/hertz/README.md).
-  begin solid section hex8
-    formulation = fully_integrated
-  end solid section hex8
+{hex8}
 
   begin finite element model asperity
     begin generated asperity
@@ -111,18 +96,7 @@ begin sierra {name}
       coating thickness = {hc:g} nm
       coating layers = {layers}
     end generated asperity
-    begin parameters for block tip
-      material = silicon
-      section = hex8
-    end parameters for block tip
-    begin parameters for block substrate
-      material = {substrate}
-      section = hex8
-    end parameters for block substrate
-    begin parameters for block coating
-      material = coating
-      section = hex8
-    end parameters for block coating
+{blocks}
   end finite element model asperity
 
   begin presto procedure indent
@@ -134,46 +108,17 @@ begin sierra {name}
       mass damping coefficient = 5e11 1/s
       # Symmetry planes hold x (y); with them no rigid lateral motion or spin is left, so the
       # bottom is a roller (z) and the tip top is only driven in z (a node is constrained once).
-      begin fixed displacement
-        node set = symmetry_x
-        components = x
-      end fixed displacement
-      begin fixed displacement
-        node set = symmetry_y
-        components = y
-      end fixed displacement
-      begin fixed displacement
-        node set = substrate_bottom
-        components = z
-      end fixed displacement
-      begin prescribed displacement
-        node set = tip_top
-        component = z
-        function = push
-        scale factor = -1
-      end prescribed displacement
-      begin contact definition tip_on_coating
-        contact surface tip contains tip_surface
-        contact surface flat contains substrate_top
-        contact axis = 0 0 0 0 0 1 nm
-        begin interaction sphere_flat
-          surfaces = tip flat
-{adhesion}        end interaction sphere_flat
-      end contact definition tip_on_coating
-      begin history output hist
-        time increment = {hist:g} ps
-        reaction force = tip_top substrate_bottom
-        mean displacement = tip_top tip_apex substrate_axis_top
-      end history output hist
-      begin results output fields
-        time increment = {t_end:g} ps
-        nodal variables = displacement contact_traction contact_status
-        element variables = stress
-      end results output fields
+{boundary_conditions}
+{contact}
+{outputs}
     end presto region main
   end presto procedure indent
 end sierra {name}
 """
+
+BOUNDARY_CONDITIONS = "\n".join([fixed_displacement("symmetry_x", "x"), fixed_displacement("symmetry_y", "y"),
+                                 fixed_displacement("substrate_bottom", "z"),
+                                 prescribed("displacement", "tip_top", "z", "push", "-1")])
 
 
 def drive_depth(case):
@@ -203,7 +148,7 @@ def drive_times(depth, d_fit, v_fit, v_fast=3.0, v_max=10.0, ramp=10.0):
     pts = []
     t = 0.0
     while t < ramp:  # cycloidal start: v = V (1 - cos(pi t/T))/2
-        pts.append((t, 0.5 * v0 * (t - ramp / math.pi * math.sin(math.pi * t / ramp))))
+        pts.append((t, cycloid_travel(t, v0, ramp)))
         t += 2.5
     s, t = 0.5 * v0 * ramp, ramp
     pts.append((t, s))
@@ -216,7 +161,7 @@ def drive_times(depth, d_fit, v_fit, v_fast=3.0, v_max=10.0, ramp=10.0):
         if t >= next_out or s >= depth - 1e-12:
             pts.append((t, s))
             next_out = t + 5.0
-    return "\n".join(f"      {t:9.2f}  {x:.5f}" for t, x in pts), t
+    return values_lines(pts, "9.2f"), t
 
 
 TIP_QUARTER_MASS = 6e-9 * 6e-9 * 3.3e-9 * 2330.0  # kg: quarter of the 12 x 12 nm column, 4 nm above the apex
@@ -253,15 +198,23 @@ def write(name, run):
             "limit_thin": "Limit h_c -> 0: a 0.02 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), "
                           "coating density scaled to 137,500 kg/m^3 (mass scaling, KE/IE checked)."}.get(
         name, f"Table B.1 case {run['case']}, element size {run['h']:g} nm" + (f", W = {W:g} J/m^2." if W else "."))
+    t_end = math.ceil(t_end)
+    blocks = "\n".join([block_parameters("tip", "silicon"), block_parameters("substrate", run.get("substrate", "silicon")),
+                        block_parameters("coating", "coating")])
+    outputs = "\n".join([history_output(format(1.0 if run["h"] <= 0.4 else 2.0, "g"), "tip_top substrate_bottom",
+                                        "tip_top tip_apex substrate_axis_top"),
+                         results_output(format(t_end, "g"), "stress")])
+    contact = contact_definition("tip_on_coating", [("tip", "tip_surface"), ("flat", "substrate_top")], "0 0 0 0 0 1",
+                                 "sphere_flat", adhesion)
     text = TEMPLATE.format(name=name, what=what, E=E, Ec=Ec, nu=NU, nu_c=NU_C, hc=hc, layers=layers, R=R,
-                           depth=depth, d_fit=d_fit, v_fit=v_fit, values=values, rho_c=rho_c, h=run["h"],
-                           fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
-                           substrate=run.get("substrate", "silicon"), block_width=run.get("block", (36, 18))[0],
-                           block_depth=run.get("block", (36, 18))[1], t_end=math.ceil(t_end), adhesion=adhesion,
-                           hist=1.0 if run["h"] <= 0.4 else 2.0)
-    os.makedirs(os.path.join(HERE, "decks"), exist_ok=True)
-    with open(os.path.join(HERE, "decks", name + ".i"), "w") as f:
-        f.write(text)
+                           depth=depth, d_fit=d_fit, v_fit=v_fit, push_function=piecewise_linear_function("push", values),
+                           silicon=elastic_material("silicon", 2330, E, NU),
+                           coating_material=elastic_material("coating", rho_c, Ec, NU_C), hex8=HEX8_FULLY_INTEGRATED,
+                           h=run["h"], fine=run.get("fine_half_width", 5.0), fine_depth=1.2,
+                           block_width=run.get("block", (36, 18))[0], block_depth=run.get("block", (36, 18))[1],
+                           blocks=blocks, boundary_conditions=BOUNDARY_CONDITIONS, contact=contact, outputs=outputs,
+                           t_end=t_end)
+    write_deck(os.path.join(HERE, "decks"), name, text)
 
 
 def main():

@@ -26,9 +26,12 @@ import csv
 import json
 import math
 import os
+import pathlib
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import deepest_index, pyplot, read_history  # noqa: E402
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1, ebar, f_deep, hertz_area  # noqa: E402
 from make_decks import RUNS  # noqa: E402
 
@@ -38,16 +41,14 @@ QUARTER = 4.0
 
 
 def read_run(folder):
-    rows = list(csv.DictReader(open(os.path.join(folder, "history.csv"))))
+    rows = read_history(folder)
     summary = json.load(open(os.path.join(folder, "summary.json")))
     return rows, summary
 
 
 def loading_rows(rows):
     """Rows up to the deepest tip position (the loading branch)."""
-    z = [float(r["tip_top_displacement_z"]) for r in rows]
-    deepest = min(range(len(z)), key=lambda i: z[i])
-    return rows[: deepest + 1]
+    return rows[: deepest_index(rows) + 1]
 
 
 def measure(name, folder):
@@ -60,14 +61,14 @@ def measure(name, folder):
     rows, summary = read_run(folder)
     pts = []
     for r in loading_rows(rows):
-        P = QUARTER * float(r["contact_normal_force"])
-        a = float(r["contact_radius_edge"])
+        P = QUARTER * r["contact_normal_force"]
+        a = r["contact_radius_edge"]
         if P <= 0 or a <= 0:
             continue
-        ie = float(r["internal_energy"])
-        pts.append(dict(P=P, a=a, area=math.pi * a * a, area_nodes=QUARTER * float(r["contact_area"]),
+        ie = r["internal_energy"]
+        pts.append(dict(P=P, a=a, area=math.pi * a * a, area_nodes=QUARTER * r["contact_area"],
                         Peff=P + 2 * math.pi * R * W,
-                        ke_ie=float(r["kinetic_energy"]) / ie if ie > 0 else float("inf")))
+                        ke_ie=r["kinetic_energy"] / ie if ie > 0 else float("inf")))
     for p in pts:
         p["f"] = p["area"] / hertz_area(p["Peff"], R, E, Ec)
         p["Pn"] = p["Peff"] / (ebar(Ec, NU_C) * hc * hc)
@@ -208,9 +209,7 @@ def mesh_text(m):
 
 
 def plot_case(m, fit, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(5, 3.6))
     all_pts = [p for p in m["pts"] if p["Pn"] > 0.005]
     used = fitted_rows(m)
@@ -244,9 +243,7 @@ def plot_case(m, fit, path):
 
 
 def plot_collapse(ref, adh, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 3.8))
     for m in [ref] + adh:
         pts = [p for p in m["pts"] if p["a"] >= MIN_RINGS * m["h"]]

@@ -19,12 +19,16 @@ adhesive and junction forces, so the adhesive energy and any frictional dissipat
 stay within --energy-tolerance (1 %) at every recorded time of the run, loading and withdrawal.
 """
 import argparse
-import csv
 import math
+import pathlib
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from contact_theory import RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius  # noqa: E402
+from history_checks import deepest_index, max_and_mean, pyplot, read_history, relative_errors, save_figure  # noqa: E402
+
 E, NU, R = 161e9, 0.23, 27e-9
-ESTAR = E / (2 * (1 - NU * NU))
+ESTAR = effective_modulus(E, NU)
 
 
 def main():
@@ -33,71 +37,63 @@ def main():
     p.add_argument("--element-size", type=float, required=True, help="nm")
     p.add_argument("--work-of-adhesion", type=float, default=0.05, help="J/m^2")
     p.add_argument("--tolerance", type=float, default=0.05)
-    p.add_argument("--radius", choices=["pressure_fit", "edge"], default="pressure_fit",
+    p.add_argument("--radius", choices=RADIUS_ESTIMATORS, default="pressure_fit",
                    help="contact-radius estimator checked (history column contact_radius_<this>)")
     p.add_argument("--energy-tolerance", type=float, default=0.01, help="largest |energy_error| allowed")
     p.add_argument("--plot")
     p.add_argument("--hertz-output", help="output folder of the W = 0 run (verification/hertz) to draw beside")
     a = p.parse_args()
     W = a.work_of_adhesion
-    rows = list(csv.DictReader(open(f"{a.output}/history.csv")))
-    f = lambda r, k: float(r[k])  # noqa: E731
+    rows = read_history(a.output)
     h = a.element_size * 1e-9
     # Loading branch: up to the deepest tip position.
-    z = [f(r, "tip_top_displacement_z") for r in rows]
-    deepest = min(range(len(z)), key=lambda i: z[i])
+    deepest = deepest_index(rows)
     column = f"contact_radius_{a.radius}"
-    dmt_radius = lambda P: (3 * R * max(P + 2 * math.pi * W * R, 0.0) / (4 * ESTAR)) ** (1 / 3)  # noqa: E731
+    radius = lambda P: dmt_radius(P, R, W, ESTAR)  # noqa: E731
     used = [r for r in rows[: deepest + 1]
-            if 5 * h <= dmt_radius(f(r, "contact_normal_force")) <= 0.25 * R]
+            if 5 * h <= radius(r["contact_normal_force"]) <= 0.25 * R]
     if len(used) < 5:
         print(f"FAIL: only {len(used)} usable loading rows (need loads whose DMT radius is between 5 element sizes and R/4)")
         return 1
-    P = [f(r, "contact_normal_force") for r in used]
-    aFE = [f(r, column) for r in used]
-    aD = [dmt_radius(x) for x in P]
-    ea = [abs(x - y) / y for x, y in zip(aFE, aD)]
+    P = [r["contact_normal_force"] for r in used]
+    aFE = [r[column] for r in used]
+    aD = [radius(x) for x in P]
+    ea = relative_errors(aFE, aD)
     worst = max(range(len(ea)), key=lambda i: ea[i])
-    pull_off = min(f(r, "contact_normal_force") for r in rows[deepest:])
+    pull_off = min(r["contact_normal_force"] for r in rows[deepest:])
     Pc = -2 * math.pi * W * R
     ep = abs(pull_off - Pc) / abs(Pc) if W > 0 else 0.0
-    energy_error = max(abs(f(r, "energy_error")) for r in rows)
+    energy_error = max(abs(r["energy_error"]) for r in rows)
     ok = len(used) >= 5 and max(ea) <= a.tolerance and ep <= a.tolerance and energy_error <= a.energy_tolerance
     print(f"W = {W} J/m^2, 2 pi W R = {-Pc * 1e9:.3f} nN; {len(used)} loads from {P[0] * 1e9:.1f} to {P[-1] * 1e9:.1f} nN")
-    print(f"contact radius ({column}) vs DMT at P + 2 pi W R: max error {max(ea):.2%} at {P[worst] * 1e9:.1f} nN "
-          f"(a_D = {aD[worst] * 1e9:.2f} nm), mean {sum(ea) / len(ea):.2%}; tolerance {a.tolerance:.0%}")
-    other = "contact_radius_edge" if a.radius == "pressure_fit" else "contact_radius_pressure_fit"
-    eo = [abs(f(r, other) - y) / y for r, y in zip(used, aD)]
-    print(f"  (not checked: {other} max error {max(eo):.2%}, mean {sum(eo) / len(eo):.2%})")
+    max_ea, mean_ea = max_and_mean(ea)
+    print(f"contact radius ({column}) vs DMT at P + 2 pi W R: max error {max_ea:.2%} at {P[worst] * 1e9:.1f} nN "
+          f"(a_D = {aD[worst] * 1e9:.2f} nm), mean {mean_ea:.2%}; tolerance {a.tolerance:.0%}")
+    print_unchecked_radius(used, aD, a.radius)
     if W > 0:
         print(f"pull-off {pull_off * 1e9:.3f} nN vs -2 pi W R = {Pc * 1e9:.3f} nN: error {ep:.2%}; tolerance {a.tolerance:.0%}")
     print(f"energy balance: max |energy_error| {energy_error:.3%} over the run (adhesion energy at the end "
-          f"{f(rows[-1], 'adhesion_energy'):.3g} J, contact work {f(rows[-1], 'contact_work'):.3g} J); "
+          f"{rows[-1]['adhesion_energy']:.3g} J, contact work {rows[-1]['contact_work']:.3g} J); "
           f"tolerance {a.energy_tolerance:.0%}")
     print("PASS" if ok else "FAIL")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(6, 4.5))
+        fig, ax = pyplot().subplots(figsize=(6, 4.5))
         grid = [Pc + (max(P) - Pc) * i / 300 for i in range(301)]
-        ax.plot([x * 1e9 for x in grid], [(3 * R * max(x - Pc, 0) / (4 * ESTAR)) ** (1 / 3) * 1e9 for x in grid],
+        ax.plot([x * 1e9 for x in grid], [radius(x) * 1e9 for x in grid],
                 "k-", label="DMT, W = %.2f J/m$^2$" % W)
         gh = [x for x in grid if x >= 0]
-        ax.plot([x * 1e9 for x in gh], [(3 * R * x / (4 * ESTAR)) ** (1 / 3) * 1e9 for x in gh], "k--", label="Hertz (W = 0)")
+        ax.plot([x * 1e9 for x in gh], [dmt_radius(x, R, 0.0, ESTAR) * 1e9 for x in gh], "k--", label="Hertz (W = 0)")
         ax.plot([x * 1e9 for x in P], [x * 1e9 for x in aFE], "o", ms=3, label=f"FE, W = {W:.2f} J/m$^2$")
         if a.hertz_output:
-            hr = list(csv.DictReader(open(f"{a.hertz_output}/history.csv")))
-            pts = [(f(r, "contact_normal_force"), f(r, column)) for r in hr
-                   if 5 * h <= f(r, column) <= 0.25 * R and 0 < f(r, "contact_normal_force") <= max(P)]
+            hr = read_history(a.hertz_output)
+            pts = [(r["contact_normal_force"], r[column]) for r in hr
+                   if 5 * h <= r[column] <= 0.25 * R and 0 < r["contact_normal_force"] <= max(P)]
             ax.plot([x * 1e9 for x, _ in pts], [y * 1e9 for _, y in pts], "s", ms=3, mfc="none", label="FE, W = 0")
         ax.axvline(pull_off * 1e9, color="r", lw=0.8, label=f"FE pull-off {pull_off * 1e9:.2f} nN")
         ax.set_xlabel("applied load P (nN)")
         ax.set_ylabel("contact radius a (nm)")
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-        print(f"plot: {a.plot}")
+        save_figure(fig, a.plot)
     return 0 if ok else 1
 
 

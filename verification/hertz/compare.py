@@ -21,12 +21,16 @@ measured radius, keeps the estimator under test out of the choice of rows.
 Quasi-static check: kinetic energy below 2 % of internal energy on those rows.
 """
 import argparse
-import csv
-import math
+import pathlib
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from contact_theory import RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius  # noqa: E402
+from history_checks import (max_and_mean, max_kinetic_over_stored, pyplot, read_history,  # noqa: E402
+                            relative_errors, save_figure)
+
 E, NU, R = 161e9, 0.23, 27e-9
-ESTAR = E / (2 * (1 - NU * NU))
+ESTAR = effective_modulus(E, NU)
 
 
 def main():
@@ -36,20 +40,19 @@ def main():
     p.add_argument("--tolerance", type=float, default=0.03)
     p.add_argument("--min-radius", type=float,
                    help="nm: compare loads whose Hertz radius is at least this (default 5 element sizes)")
-    p.add_argument("--radius", choices=["pressure_fit", "edge"], default="pressure_fit",
+    p.add_argument("--radius", choices=RADIUS_ESTIMATORS, default="pressure_fit",
                    help="FE contact radius compared: contact_radius_pressure_fit or contact_radius_edge")
     p.add_argument("--plot", help="PNG to write")
     a = p.parse_args()
-    rows = list(csv.DictReader(open(f"{a.output}/history.csv")))
-    f = lambda r, k: float(r[k])  # noqa: E731
+    rows = read_history(a.output)
     h = a.element_size * 1e-9
     min_radius = (a.min_radius if a.min_radius is not None else 5 * a.element_size) * 1e-9
     column = f"contact_radius_{a.radius}"
-    hertz_radius = lambda P: (3 * max(P, 0.0) * R / (4 * ESTAR)) ** (1 / 3)  # noqa: E731
+    hertz_radius = lambda P: dmt_radius(P, R, 0.0, ESTAR)  # noqa: E731  (DMT with W = 0)
     used = []
     peak = 0.0
     for r in rows:
-        P = f(r, "contact_normal_force")
+        P = r["contact_normal_force"]
         if P < peak:  # loading branch only
             break
         peak = P
@@ -58,55 +61,50 @@ def main():
     if len(used) < 5:
         print(f"FAIL: only {len(used)} usable rows (need loads with a Hertz radius between {min_radius * 1e9:.2f} nm and R/4)")
         return 1
-    P = [f(r, "contact_normal_force") for r in used]
-    aFE = [f(r, column) for r in used]
+    P = [r["contact_normal_force"] for r in used]
+    aFE = [r[column] for r in used]
     aH = [hertz_radius(x) for x in P]
     dH = [x * x / R for x in aH]
-    dtot = [-f(r, "tip_top_displacement_z") - f(r, "contact_max_penetration") for r in used]
+    dtot = [-r["tip_top_displacement_z"] - r["contact_max_penetration"] for r in used]
     C = sum((dt - dh) * x for dt, dh, x in zip(dtot, dH, P)) / sum(x * x for x in P)
     dFE = [dt - C * x for dt, x in zip(dtot, P)]
-    ea = [abs(x - y) / y for x, y in zip(aFE, aH)]
-    ed = [abs(x - y) / y for x, y in zip(dFE, dH)]
-    ke = max(f(r, "kinetic_energy") / f(r, "internal_energy") for r in used)
+    ea = relative_errors(aFE, aH)
+    ed = relative_errors(dFE, dH)
+    ke = max_kinetic_over_stored(used)
     ok = max(ea) <= a.tolerance and max(ed) <= a.tolerance and ke < 0.02
     print(f"E* = {ESTAR / 1e9:.2f} GPa, R = {R * 1e9:.0f} nm; {len(used)} loads from {P[0] * 1e9:.1f} to {P[-1] * 1e9:.1f} nN "
           f"(a from {aFE[0] * 1e9:.2f} to {aFE[-1] * 1e9:.2f} nm, a/R up to {aFE[-1] / R:.3f})")
+    max_ea, mean_ea = max_and_mean(ea)
     print(f"contact radius ({column}, loads with a_H >= {min_radius * 1e9:.2f} nm = {min_radius / h:.1f} element sizes): "
-          f"max error {max(ea):.2%} (mean {sum(ea) / len(ea):.2%}); tolerance {a.tolerance:.1%}")
-    other = "contact_radius_edge" if a.radius == "pressure_fit" else "contact_radius_pressure_fit"
-    eo = [abs(f(r, other) - y) / y for r, y in zip(used, aH)]
-    print(f"  (not checked: {other} max error {max(eo):.2%}, mean {sum(eo) / len(eo):.2%})")
+          f"max error {max_ea:.2%} (mean {mean_ea:.2%}); tolerance {a.tolerance:.1%}")
+    print_unchecked_radius(used, aH, a.radius)
     print(f"approach: far-field compliance C = {C * 1e9 * 1e-9:.4g} m/N ({C:.4g}); max error of delta - C P vs a^2/R "
           f"{max(ed):.2%}; tolerance {a.tolerance:.1%}")
     print(f"quasi-static: max kinetic/internal energy {ke:.2%} (limit 2 %)")
     print("PASS" if ok else "FAIL")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        allP = [f(r, "contact_normal_force") * 1e9 for r in rows if f(r, "contact_normal_force") > 0]
+        plt = pyplot()
+        allP = [r["contact_normal_force"] * 1e9 for r in rows if r["contact_normal_force"] > 0]
         fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
         Ps = [x * 1e9 for x in P]
         grid = [max(allP) * i / 200 for i in range(1, 201)]
-        ax1.plot(grid, [(3 * x * 1e-9 * R / (4 * ESTAR)) ** (1 / 3) * 1e9 for x in grid], "k-", label="Hertz")
-        ax1.plot(Ps, [f(r, "contact_radius_pressure_fit") * 1e9 for r in used], "o", ms=3,
+        ax1.plot(grid, [hertz_radius(x * 1e-9) * 1e9 for x in grid], "k-", label="Hertz")
+        ax1.plot(Ps, [r["contact_radius_pressure_fit"] * 1e9 for r in used], "o", ms=3,
                  label="FE, elliptic fit of the nodal pressures" + (" (checked)" if a.radius == "pressure_fit" else ""))
-        ax1.plot(Ps, [f(r, "contact_radius_edge") * 1e9 for r in used], "^", ms=3,
+        ax1.plot(Ps, [r["contact_radius_edge"] * 1e9 for r in used], "^", ms=3,
                  label="FE, gap sign change on edges" + (" (checked)" if a.radius == "edge" else ""))
-        ax1.plot([f(r, "contact_normal_force") * 1e9 for r in used],
-                 [f(r, "contact_radius") * 1e9 for r in used], "x", ms=3, label="FE sqrt(area/pi) (node rings)")
+        ax1.plot([r["contact_normal_force"] * 1e9 for r in used],
+                 [r["contact_radius"] * 1e9 for r in used], "x", ms=3, label="FE sqrt(area/pi) (node rings)")
         ax1.set_xlabel("contact force P (nN)")
         ax1.set_ylabel("contact radius a (nm)")
         ax1.legend(fontsize=8)
-        ax2.plot(grid, [((3 * x * 1e-9 * R / (4 * ESTAR)) ** (2 / 3) / R) * 1e9 for x in grid], "k-", label="Hertz a^2/R")
+        ax2.plot(grid, [hertz_radius(x * 1e-9) ** 2 / R * 1e9 for x in grid], "k-", label="Hertz a^2/R")
         ax2.plot(Ps, [x * 1e9 for x in dFE], "o", ms=3, label="FE approach - C P")
         ax2.set_xlabel("contact force P (nN)")
         ax2.set_ylabel("approach (nm)")
         ax2.legend(fontsize=8)
         fig.suptitle(f"Hertz, Si on Si, R = 27 nm, element {a.element_size} nm: max errors a {max(ea):.1%}, delta {max(ed):.1%}")
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-        print(f"plot: {a.plot}")
+        save_figure(fig, a.plot)
     return 0 if ok else 1
 
 

@@ -7,8 +7,11 @@ with the sliding direction (base reaction in x changes sign).
 usage: compare.py HISTORY.csv [--plot OUT.png]
 """
 import argparse
-import csv
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import mean, pyplot, read_history, report_failures, rows_between, save_figure  # noqa: E402
 
 TAU_STAR = 10e6          # Pa, junction strength in the deck
 AREA = 10e-9 * 10e-9     # m^2, the upper block's face
@@ -21,22 +24,17 @@ def main():
     ap.add_argument("history")
     ap.add_argument("--plot", help="PNG: friction force and tau* x area versus sliding distance")
     a = ap.parse_args()
-    with open(a.history) as f:
-        rows = list(csv.DictReader(f))
+    rows = read_history(a.history)
     failures = []
-
-    def window(lo, hi):
-        return [r for r in rows if lo <= float(r["time"]) <= hi]
-
     for name, (lo, hi), sign in (("forward", FORWARD, -1.0), ("backward", BACKWARD, 1.0)):
-        w = window(lo, hi)
+        w = rows_between(rows, lo, hi)
         if not w:
             failures.append(f"{name}: no rows in {lo:g}-{hi:g} s")
             continue
-        worst = max(abs(float(r["friction_force"]) / float(r["tau_star_times_area"]) - 1) for r in w)
-        area = min(float(r["contact_area"]) for r in w)
-        base = sum(float(r["lower_zmin_reaction_x"]) for r in w) / len(w)
-        friction = sum(float(r["friction_force"]) for r in w) / len(w)
+        worst = max(abs(r["friction_force"] / r["tau_star_times_area"] - 1) for r in w)
+        area = min(r["contact_area"] for r in w)
+        base = mean(w, "lower_zmin_reaction_x")
+        friction = mean(w, "friction_force")
         print(f"{name}: friction {friction:.5g} N vs tau* A {TAU_STAR * AREA:.5g} N; worst |F/(tau* A_real) - 1| "
               f"{100 * worst:.3f} %; min contact area {area:.5g} m^2; mean base reaction x {base:.4g} N")
         if worst > 0.01:
@@ -49,22 +47,17 @@ def main():
             failures.append(f"{name}: base reaction x {base:.4g} N does not oppose the friction on the lower block")
 
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        t = [float(r["time"]) * 1e12 for r in rows]
+        plt = pyplot()
+        t = [r["time"] * 1e12 for r in rows]
         fig, ax = plt.subplots(figsize=(6, 3.5))
-        ax.plot(t, [float(r["friction_force"]) * 1e9 for r in rows], label="friction force (FE)")
-        ax.plot(t, [float(r["tau_star_times_area"]) * 1e9 for r in rows], "--", label="tau* x contact area")
-        ax.plot(t, [float(r["lower_zmin_reaction_x"]) * 1e9 for r in rows], ":", label="base reaction x")
+        ax.plot(t, [r["friction_force"] * 1e9 for r in rows], label="friction force (FE)")
+        ax.plot(t, [r["tau_star_times_area"] * 1e9 for r in rows], "--", label="tau* x contact area")
+        ax.plot(t, [r["lower_zmin_reaction_x"] * 1e9 for r in rows], ":", label="base reaction x")
         ax.set_xlabel("time (ps): press 0-20, slide +x 30-60, -x 60-120")
         ax.set_ylabel("force (nN)")
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-    for f in failures:
-        print("FAIL:", f)
-    return 1 if failures else 0
+        save_figure(fig, a.plot, announce=None)
+    return report_failures(failures)
 
 
 if __name__ == "__main__":

@@ -10,11 +10,15 @@ translates rigidly at 1.4 and 5 m/s, and that kinetic energy is the drive, not a
 usage: compare.py HISTORY.csv [--plot OUT.png]
 """
 import argparse
-import csv
 import math
+import pathlib
 import sys
 
 from scipy import integrate
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import (max_kinetic_over_stored, mean, pyplot, read_history, report_failures,  # noqa: E402
+                            rows_between, save_figure)
 
 # The deck's parameters (rough_flats.i)
 ETA, R, SIGMA = 26.14e12, 192.9e-9, 35.01e-9       # 1/m^2, m, m
@@ -46,23 +50,21 @@ def main():
     ap.add_argument("history")
     ap.add_argument("--plot", help="PNG: apparent pressure against d (FE and GW), friction against time")
     a = ap.parse_args()
-    with open(a.history) as f:
-        rows = list(csv.DictReader(f))
+    rows = read_history(a.history)
     failures = []
-    press = [r for r in rows if PRESS[0] <= float(r["time"]) <= PRESS[1] and float(r["apparent_pressure"]) > 1e3]
+    press = [r for r in rows if PRESS[0] <= r["time"] <= PRESS[1] and r["apparent_pressure"] > 1e3]
     if not press:
         failures.append("no pressing rows with an apparent pressure above 1 kPa")
-    worst_p = worst_a = worst_ke = 0.0
+    worst_p = worst_a = 0.0
     points = []
     for r in press:
-        d = OFFSET + float(r["upper_zmin_displacement_z"])
+        d = OFFSET + r["upper_zmin_displacement_z"]
         p_gw, frac_gw = gw(d)
-        p_fe, area_fe = float(r["apparent_pressure"]), float(r["real_contact_area"])
+        p_fe, area_fe = r["apparent_pressure"], r["real_contact_area"]
         worst_p = max(worst_p, abs(p_fe / p_gw - 1))
         worst_a = max(worst_a, abs(area_fe / (frac_gw * A0) - 1))
-        if HOLD[0] <= float(r["time"]) <= HOLD[1]:
-            worst_ke = max(worst_ke, float(r["kinetic_energy"]) / max(float(r["internal_energy"]), 1e-300))
         points.append((d, p_fe, p_gw))
+    worst_ke = max_kinetic_over_stored(rows_between(press, *HOLD), default=0.0)
     if press:
         dmin = min(p[0] for p in points)
         print(f"press: {len(press)} rows, d from {max(p[0] for p in points) * 1e9:.1f} to {dmin * 1e9:.1f} nm "
@@ -75,24 +77,22 @@ def main():
             failures.append(f"real contact area differs from the direct GW integral by {100 * worst_a:.3f} % (> 0.5 %)")
         if worst_ke > 0.02:
             failures.append(f"kinetic energy reaches {100 * worst_ke:.2f} % of internal energy (> 2 %): not quasi-static")
-    slide = [r for r in rows if SLIDE[0] <= float(r["time"]) <= SLIDE[1]]
+    slide = rows_between(rows, *SLIDE)
     if not slide:
         failures.append("no rows in the sliding window")
     else:
         worst_f = 0.0
         for r in slide:
-            d = OFFSET + float(r["upper_zmin_displacement_z"])
+            d = OFFSET + r["upper_zmin_displacement_z"]
             _, frac_gw = gw(d)
-            worst_f = max(worst_f, abs(float(r["friction_force"]) / (TAU * frac_gw * A0) - 1))
-        mean_f = sum(float(r["friction_force"]) for r in slide) / len(slide)
+            worst_f = max(worst_f, abs(r["friction_force"] / (TAU * frac_gw * A0) - 1))
+        mean_f = mean(slide, "friction_force")
         print(f"slide: {len(slide)} rows, mean friction {mean_f:.5g} N; worst |F / (tau* A_c,GW) - 1| = {100 * worst_f:.4f} % "
               f"(tolerance {100 * TOL:.1f} %)")
         if worst_f > TOL:
             failures.append(f"friction differs from tau* x the GW real area by {100 * worst_f:.3f} % (> 0.5 %)")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        plt = pyplot()
         fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 3.8))
         ds = [OFFSET * 0.25 + i * (OFFSET * 0.8) / 120 for i in range(121)]
         ax1.semilogy([d * 1e9 for d in ds], [max(gw(d)[0], 1e-3) / 1e6 for d in ds], "-", label="GW integral (direct)")
@@ -100,17 +100,14 @@ def main():
         ax1.set_xlabel("mean-plane separation d (nm)")
         ax1.set_ylabel("apparent pressure (MPa)")
         ax1.legend(fontsize=8)
-        t = [float(r["time"]) * 1e9 for r in rows]
-        ax2.plot(t, [float(r["friction_force"]) * 1e6 for r in rows], label="friction force (FE)")
-        ax2.plot(t, [TAU * float(r["real_contact_area"]) * 1e6 for r in rows], "--", label="tau* x real area")
+        t = [r["time"] * 1e9 for r in rows]
+        ax2.plot(t, [r["friction_force"] * 1e6 for r in rows], label="friction force (FE)")
+        ax2.plot(t, [TAU * r["real_contact_area"] * 1e6 for r in rows], "--", label="tau* x real area")
         ax2.set_xlabel("time (ns): press 0-100, hold, slide 150-200")
         ax2.set_ylabel("force (uN)")
         ax2.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-    for f in failures:
-        print("FAIL:", f)
-    return 1 if failures else 0
+        save_figure(fig, a.plot, announce=None)
+    return report_failures(failures)
 
 
 if __name__ == "__main__":

@@ -7,10 +7,13 @@ mean-plane separation read back from the run, within 1 %.
 usage: compare_discrete.py HISTORY.csv [--plot OUT.png]
 """
 import argparse
-import csv
 import math
 import os
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import pyplot, read_history, report_failures, rows_between, save_figure  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 E_STAR, W = 84.1e9, 0.05                      # Pa, J/m^2 (rough_flats_discrete.i)
@@ -49,15 +52,14 @@ def main():
     ap.add_argument("--plot")
     a = ap.parse_args()
     pop = summits()
-    with open(a.history) as f:
-        rows = [r for r in csv.DictReader(f) if PRESS[0] <= float(r["time"]) <= PRESS[1]]
+    rows = rows_between(read_history(a.history), *PRESS)
     points, worst_load, worst_area, contacts = [], 0.0, 0.0, set()
     for r in rows:
-        d = OFFSET + float(r["upper_zmin_displacement_z"])
+        d = OFFSET + r["upper_zmin_displacement_z"]
         load, area, count = direct_sum(pop, d)
         if count == 0:
             continue
-        fe_load, fe_area = float(r["contact_normal_force"]), float(r["real_contact_area"])
+        fe_load, fe_area = r["contact_normal_force"], r["real_contact_area"]
         worst_load = max(worst_load, abs(fe_load - load) / abs(load))
         worst_area = max(worst_area, abs(fe_area / area - 1))
         contacts.add(count)
@@ -72,20 +74,14 @@ def main():
     if worst_area > TOL:
         failures.append(f"real area differs from the direct summit sum by {100 * worst_area:.3f} % (> 1 %)")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(5.5, 4))
+        fig, ax = pyplot().subplots(figsize=(5.5, 4))
         ax.plot([p[4] * 1e12 for p in points], [p[2] * 1e6 for p in points], "-", label="direct sum over the summits")
         ax.plot([p[3] * 1e12 for p in points], [p[1] * 1e6 for p in points], "o", ms=3, label="FE (discrete rough-surface model)")
         ax.set_xlabel("real contact area (um^2)")
         ax.set_ylabel("normal load (uN)")
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-    for f in failures:
-        print("FAIL:", f)
-    return 1 if failures else 0
+        save_figure(fig, a.plot, announce=None)
+    return report_failures(failures)
 
 
 if __name__ == "__main__":

@@ -8,8 +8,11 @@ Tolerances (issue "Foundation", physics.md 4.4): silent boundary R < 2 % and at 
 input in silent_boundary_dissipation; fixed end R > 95 % (so that the test can fail).
 """
 import argparse
-import csv
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import pyplot, read_history, save_figure  # noqa: E402
 
 
 def main():
@@ -18,14 +21,13 @@ def main():
     p.add_argument("--case", required=True, help="p_silent, p_half, p_fixed, s_silent or s_fixed")
     p.add_argument("--plot", help="write a PNG of the energies against time")
     a = p.parse_args()
-    with open(a.history) as f:
-        rows = list(csv.DictReader(f))
-    t = [float(r["time"]) for r in rows]
-    ke = [float(r["kinetic_energy"]) for r in rows]
-    ie = [float(r["internal_energy"]) for r in rows]
-    wext = [float(r["external_work"]) for r in rows]
-    sil = [float(r["silent_boundary_dissipation"]) for r in rows]
-    err = max(float(r["energy_error"]) for r in rows)
+    rows = read_history(a.history)
+    t = [r["time"] for r in rows]
+    ke = [r["kinetic_energy"] for r in rows]
+    ie = [r["internal_energy"] for r in rows]
+    wext = [r["external_work"] for r in rows]
+    sil = [r["silent_boundary_dissipation"] for r in rows]
+    err = max(r["energy_error"] for r in rows)
     reflected = (ke[-1] + ie[-1]) / wext[-1]
     absorbed = sil[-1] / wext[-1]
     ok = True
@@ -47,11 +49,8 @@ def main():
     ok &= err < 1e-3
     print(f"  energy balance error {err:.2e} < 1e-3 -> {'PASS' if err < 1e-3 else 'FAIL'}")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
         ps = [x * 1e12 for x in t]
-        fig, ax = plt.subplots(figsize=(6, 4))
+        fig, ax = pyplot().subplots(figsize=(6, 4))
         ax.plot(ps, [x * 1e21 for x in wext], label="external work")
         ax.plot(ps, [(k + i) * 1e21 for k, i in zip(ke, ie)], label="kinetic + internal")
         ax.plot(ps, [x * 1e21 for x in sil], label="absorbed by silent boundary")
@@ -59,9 +58,7 @@ def main():
         ax.set_ylabel("energy (zJ)")
         ax.set_title(f"{a.case}: reflected fraction {reflected:.2%}")
         ax.legend()
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-        print(f"  plot: {a.plot}")
+        save_figure(fig, a.plot, announce="  plot: ")
     return 0 if ok else 1
 
 

@@ -6,34 +6,20 @@ the two variants differ only in the mesh and the sliding schedule. Run it after 
     /usr/bin/python3 verification/sphere_sliding/make_decks.py
 
 The tip top follows cycloidal velocity ramps (v = V (1 - cos(pi t / T)) / 2 over T = 40 ps, zero
-acceleration jump at both ends) written as piecewise-linear tables at 5 ps.
+acceleration jump at both ends) written as piecewise-linear tables at 5 ps (tools/python/deck_templates.py
+holds the ramps, the tables and the deck blocks shared with the other make_decks.py).
 """
 import math
-import os
+import pathlib
+import sys
 
-PS = 1e-12
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from deck_templates import (HEX8_FULLY_INTEGRATED, PS, block_parameters, elastic_material,  # noqa: E402
+                            contact_definition, fixed_displacement, function_table, history_output, piecewise_linear_function,
+                            prescribed, ramped_travel, results_output, table_times, write_deck)
+
 RAMP = 40 * PS
-
-
-def ramped(t, speed, t_start, t_end=None):
-    """Displacement of a move at `speed` from t_start (ramp up over RAMP) to t_end (ramp down over
-    RAMP; None: no stop), zero before t_start."""
-    def up(s):  # displacement after s seconds of the up-ramp
-        return speed / 2 * (s - RAMP / math.pi * math.sin(math.pi * s / RAMP))
-    s = t - t_start
-    if s <= 0:
-        return 0.0
-    if t_end is None or t <= t_end - RAMP:
-        return up(s) if s <= RAMP else speed * RAMP / 2 + speed * (s - RAMP)
-    total = speed * (t_end - t_start - RAMP)
-    return total - up(min(t_end - t, RAMP)) if t < t_end else total
-
-
-def table(func, t_end, step=5 * PS):
-    times = [i * step for i in range(int(t_end / step + 1e-9) + 1)]
-    if t_end - times[-1] > 1e-15:
-        times.append(t_end)
-    return "\n".join(f"      {t / PS:7.1f}  {func(t) * 1e9:.5f}" for t in times)
+SILICON = elastic_material("silicon", 2330, 161, 0.23)
 
 
 TEMPLATE = """\
@@ -61,37 +47,14 @@ TEMPLATE = """\
 # verification/hertz); compare.py checks kinetic / internal energy below 2 % in the steady window. The
 # damping drags the sliding tip (c M V); the driver carries it, the interface shear does not.
 begin sierra {name}
-  begin function push
-    type = piecewise linear
-    abscissa unit = ps
-    ordinate unit = nm
-    begin values
-{push}
-{t_end:9.1f}  {depth:.5f}
-    end values
-  end function push
-  begin function slide
-    type = piecewise linear
-    abscissa unit = ps
-    ordinate unit = nm
-    begin values
-{slide}
-    end values
-  end function slide
+{push_function}
+{slide_function}
 
-  begin property specification for material silicon
-    density = 2330 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 161 GPa
-      poissons ratio = 0.23
-    end parameters for model elastic
-  end property specification for material silicon
+{silicon}
 
   # Fully integrated at GPa contact pressures (verification/hertz/README.md: penalty point forces
   # excite the hourglass modes of one-point elements).
-  begin solid section hex8
-    formulation = fully_integrated
-  end solid section hex8
+{hex8}
 
   begin finite element model asperity
     begin generated asperity
@@ -105,14 +68,7 @@ begin sierra {name}
       fine depth = {fine_depth} nm
       grading ratio = {grading}
     end generated asperity
-    begin parameters for block tip
-      material = silicon
-      section = hex8
-    end parameters for block tip
-    begin parameters for block substrate
-      material = silicon
-      section = hex8
-    end parameters for block substrate
+{blocks}
   end finite element model asperity
 
   begin presto procedure indent_hold_slide
@@ -122,31 +78,16 @@ begin sierra {name}
     begin presto region main
       use finite element model asperity
       mass damping coefficient = {damping} 1/s
-      begin fixed displacement
-        node set = substrate_bottom
-        components = x y z
-      end fixed displacement
-      begin fixed displacement
-        node set = tip_top
-        components = y
-      end fixed displacement
-      begin prescribed displacement
-        node set = tip_top
-        component = z
-        function = push
-        scale factor = -1
-      end prescribed displacement
-      begin prescribed displacement
-        node set = tip_top
-        component = x
-        function = slide
-      end prescribed displacement
-      begin contact definition tip_on_flat
-        contact surface tip contains tip_surface
-        contact surface flat contains substrate_top
-        contact axis = 0 0 0 0 0 1 nm
-        begin interaction sphere_flat
-          surfaces = tip flat
+{boundary_conditions}
+{contact}
+{outputs}
+    end presto region main
+  end presto procedure indent_hold_slide
+end sierra {name}
+"""
+
+# Junction model on the tip-flat pair (the same in both variants).
+JUNCTION = """\
           model = junction
           work of adhesion = 0.05 J/m^2
           equilibrium separation = 0.3 nm
@@ -154,20 +95,6 @@ begin sierra {name}
           junction strength = 195 MPa
           junction reference speed = 0.1 m/s   # no stability floor (backward Euler): tanh(V/v_ref) = 1 in sliding
           junction gap tolerance = 0 nm
-        end interaction sphere_flat
-      end contact definition tip_on_flat
-      begin history output hist
-        time increment = {history} ps
-        reaction force = tip_top substrate_bottom
-        mean displacement = tip_top tip_apex
-      end history output hist
-      begin results output fields
-        time increment = {fields} ps
-        nodal variables = displacement contact_traction contact_status
-      end results output fields
-    end presto region main
-  end presto procedure indent_hold_slide
-end sierra {name}
 """
 
 VARIANTS = {
@@ -185,7 +112,11 @@ VARIANTS = {
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
+    here = pathlib.Path(__file__).resolve().parent
+    blocks = block_parameters("tip", "silicon") + "\n" + block_parameters("substrate", "silicon")
+    boundary_conditions = "\n".join([
+        fixed_displacement("substrate_bottom", "x y z"), fixed_displacement("tip_top", "y"),
+        prescribed("displacement", "tip_top", "z", "push", "-1"), prescribed("displacement", "tip_top", "x", "slide")])
     for name, v in VARIANTS.items():
         depth = v["depth"] * 1e-9
         t_indent = depth / v["v_indent"] + RAMP
@@ -193,15 +124,19 @@ def main():
         # constant speed after the up-ramp; the slide ends at `distance`
         t_end = t_slide + RAMP + (v["distance"] * 1e-9 - v["v_slide"] * RAMP / 2) / v["v_slide"]
         t_end = math.ceil(t_end / PS)  * PS
-        push = table(lambda t: ramped(t, v["v_indent"], 0.0, t_indent), t_indent)
-        slide_times = [0.0, t_slide] + [t_slide + i * 5 * PS for i in range(1, int((t_end - t_slide) / (5 * PS)) + 1)]
-        if t_end - slide_times[-1] > 1e-15:
-            slide_times.append(t_end)
-        slide = "\n".join(f"      {t / PS:7.1f}  {ramped(t, v['v_slide'], t_slide) * 1e9:.5f}" for t in slide_times)
-        text = TEMPLATE.format(name=name, push=push, slide=slide, t_indent=t_indent / PS, t_slide=t_slide / PS,
-                               t_end=t_end / PS, **v)
-        with open(os.path.join(here, name + ".i"), "w") as f:
-            f.write(text)
+        push = function_table(lambda t: ramped_travel(t, v["v_indent"], 0.0, t_indent), table_times(t_indent), "7.1f")
+        push += f"\n{t_end / PS:9.1f}  {v['depth']:.5f}"
+        slide = function_table(lambda t: ramped_travel(t, v["v_slide"], t_slide), table_times(t_end, t_slide), "7.1f")
+        text = TEMPLATE.format(name=name, push_function=piecewise_linear_function("push", push),
+                               slide_function=piecewise_linear_function("slide", slide), silicon=SILICON,
+                               hex8=HEX8_FULLY_INTEGRATED, blocks=blocks,
+                               boundary_conditions=boundary_conditions,
+                               contact=contact_definition("tip_on_flat", [("tip", "tip_surface"), ("flat", "substrate_top")],
+                                                          "0 0 0 0 0 1", "sphere_flat", JUNCTION),
+                               outputs=history_output(v["history"], "tip_top substrate_bottom", "tip_top tip_apex")
+                               + "\n" + results_output(v["fields"]), t_indent=t_indent / PS,
+                               t_slide=t_slide / PS, t_end=t_end / PS, **v)
+        write_deck(here, name, text)
         print(f"{name}.i: indent to {t_indent / PS:.0f} ps, slide from {t_slide / PS:.0f} ps, end {t_end / PS:.0f} ps")
 
 

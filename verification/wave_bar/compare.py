@@ -10,9 +10,12 @@ Tolerances: arrival time within 1 % of L/c_d (wave speed within 1 %), plateaus w
 energy-balance error below 0.5 % (physics.md 1.5 verification handle).
 """
 import argparse
-import csv
 import math
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import pyplot, read_history, save_figure  # noqa: E402
 
 E, NU, RHO = 160e9, 0.22, 2330.0
 L, A, V0, T_RAMP = 100e-9, 1e-18, 1.0, 1e-12
@@ -23,12 +26,11 @@ def main():
     p.add_argument("history")
     p.add_argument("--plot")
     a = p.parse_args()
-    with open(a.history) as f:
-        rows = list(csv.DictReader(f))
-    t = [float(r["time"]) for r in rows]
-    bottom = [float(r["bar_zmin_reaction_z"]) for r in rows]
-    top = [-float(r["bar_zmax_reaction_z"]) for r in rows]  # force the piston applies, downward
-    err = max(float(r["energy_error"]) for r in rows)
+    rows = read_history(a.history)
+    t = [r["time"] for r in rows]
+    bottom = [r["bar_zmin_reaction_z"] for r in rows]
+    top = [-r["bar_zmax_reaction_z"] for r in rows]  # force the piston applies, downward
+    err = max(r["energy_error"] for r in rows)
 
     lam = E * NU / ((1 + NU) * (1 - 2 * NU))
     mu = E / (2 * (1 + NU))
@@ -56,10 +58,7 @@ def main():
     print(f"max energy-balance error {err:.2e} (tolerance 5e-3)")
     print("PASS" if ok else "FAIL")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(6, 4))
+        fig, ax = pyplot().subplots(figsize=(6, 4))
         ax.plot([x * 1e12 for x in t], [x * 1e12 for x in bottom], label="FE reaction at the fixed end")
         ax.plot([x * 1e12 for x in t], [x * 1e12 for x in top], label="FE piston force")
         ax.axhline(2 * piston * 1e12, ls="--", c="k", lw=0.8, label="2 rho c v0 A, rho c v0 A")
@@ -68,9 +67,7 @@ def main():
         ax.set_xlabel("time (ps)")
         ax.set_ylabel("force (pN)")
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-        print(f"plot: {a.plot}")
+        save_figure(fig, a.plot)
     return 0 if ok else 1
 
 

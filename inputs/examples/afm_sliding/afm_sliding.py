@@ -22,12 +22,18 @@ usage: afm_sliding.py [--tribex build/bin/tribex] [--variant reduced|full] [--ou
                       [--no-run]   (--no-run: check outputs already in DIR/<deck>_output)
 """
 import argparse
-import csv
 import json
 import math
 import os
+import pathlib
 import subprocess
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
+from contact_theory import dmt_radius, effective_modulus  # noqa: E402
+from history_checks import (max_kinetic_over_stored, mean, pyplot, read_history, report_failures,  # noqa: E402
+                            rows_between, save_figure)
+from sliding_checks import base_reaction_failure, friction_radius_axes, sliding_rows, steady_window  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LOAD = 500e-9                      # N, as in make_decks.py
@@ -40,29 +46,22 @@ CASES = [("a_si", "(a) Si on Si", 195e6), ("b_sam", "(b) Si on 2 nm SAM", 194e6)
 
 def dmt_radius_si(P):
     """DMT radius of the Si sphere on a flat Si half-space: a^3 = 3 R (P + 2 pi W R) / (4 E*)."""
-    estar = 161e9 / (2 * (1 - 0.23 ** 2))
-    return (3 * R_TIP * max(P + 2 * math.pi * W * R_TIP, 0.0) / (4 * estar)) ** (1 / 3)
+    return dmt_radius(P, R_TIP, W, effective_modulus(161e9, 0.23))
 
 
 def check_case(folder, label, tau):
-    with open(os.path.join(folder, "history.csv")) as f:
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    rows = read_history(folder)
     with open(os.path.join(folder, "summary.json")) as f:
         summary = json.load(f)
     failures = []
-    hold = [r for r in rows if HOLD_END[0] <= r["time"] <= HOLD_END[1]]
-    steady = [r for r in rows if r["tip_top_displacement_y"] >= STEADY_FROM]
-    if len(hold) < 5 or len(steady) < 5:
-        return None, [f"{label}: too few history rows in the hold ({len(hold)}) or steady sliding ({len(steady)})"]
-    mean = lambda rs, k: sum(r[k] for r in rs) / len(rs)  # noqa: E731
+    hold = rows_between(rows, *HOLD_END)
+    w = steady_window(rows, "y", STEADY_FROM)
+    if len(hold) < 5 or w is None or len(w["rows"]) < 5:
+        return None, [f"{label}: too few history rows in the hold ({len(hold)}) or steady sliding ({len(w['rows']) if w else 0})"]
+    steady = w["rows"]
     P_hold = mean(hold, "contact_normal_force")
-    ke_ie = max(r["kinetic_energy"] / r["internal_energy"] for r in hold)
-    F = mean(steady, "friction_force")
-    cap = mean(steady, "tau_star_times_area")
-    worst = max(abs(r["friction_force"] / r["tau_star_times_area"] - 1) for r in steady)
-    A = mean(steady, "contact_area")
-    P = mean(steady, "contact_normal_force")
-    base_y = mean(steady, "substrate_bottom_reaction_y")
+    ke_ie = max_kinetic_over_stored(hold)
+    F, cap, worst, A, P, base_y = w["F"], w["capacity"], w["worst_row"], w["area"], w["P"], w["base"]
     a_fe = math.sqrt(A / math.pi)
     print(f"{label}: {summary['elements']} hex8, {summary['steps']} steps, {summary['wall_time_s']:.1f} s wall, "
           f"{summary['ns_per_element_step']:.0f} ns/element/step (wall times are noisy on a shared machine)")
@@ -78,8 +77,9 @@ def check_case(folder, label, tau):
         failures.append(f"{label}: kinetic energy up to {ke_ie:.2%} of internal in the hold (> 1 %)")
     if abs(F / cap - 1) > 0.01 or worst > 0.02:
         failures.append(f"{label}: friction differs from tau* x contact area (mean {F / cap - 1:+.2%}, worst {worst:.2%})")
-    if not base_y < -0.5 * F:
-        failures.append(f"{label}: base reaction y {base_y:.4g} N does not oppose the friction dragging the substrate in +y")
+    base_failure = base_reaction_failure(w, "y")
+    if base_failure:
+        failures.append(f"{label}: {base_failure}")
     return {"rows": rows, "a_fe": a_fe, "F": F}, failures
 
 
@@ -108,14 +108,11 @@ def main():
         if not rb > ra:
             failures.append("the SAM case does not give the larger contact radius")
     if a.plot and results:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(6, 6), sharex=True)
+        fig, (ax1, ax2) = friction_radius_axes(pyplot())
         for case, label, tau in CASES:
             if case not in results:
                 continue
-            rows = [r for r in results[case]["rows"] if r["tip_top_displacement_y"] > 1e-13]
+            rows = sliding_rows(results[case]["rows"], "y")
             s = [r["tip_top_displacement_y"] * 1e9 for r in rows]
             ax1.plot(s, [r["friction_force"] * 1e9 for r in rows], label=f"{label}: friction (FE)")
             ax1.plot(s, [r["tau_star_times_area"] * 1e9 for r in rows], ":", color="k", lw=0.8)
@@ -129,13 +126,8 @@ def main():
         ax2.set_ylim(bottom=0)
         ax2.legend(fontsize=8, loc="lower right")
         fig.suptitle(f"Si sphere R = 50 nm, 500 nN, 7.5 m/s on the di-3 AFM surface ({a.variant})", fontsize=10)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
-        print(f"plot: {a.plot}")
-    for line in failures:
-        print("FAIL:", line)
-    print("PASS" if not failures else "FAIL")
-    return 1 if failures else 0
+        save_figure(fig, a.plot)
+    return report_failures(failures, verdict=True)
 
 
 if __name__ == "__main__":

@@ -10,13 +10,18 @@ Variants: reduced (CI: 1 nm elements, 40 x 36 nm window, 3 nm of sliding) and fu
     /usr/bin/python3 inputs/examples/afm_sliding/make_decks.py
 
 The load and the sliding use cycloidal ramps (zero acceleration jump at both ends) written as
-piecewise-linear tables at 5 ps over the ramps, as verification/sphere_sliding/make_decks.py.
+piecewise-linear tables at 5 ps over the ramps; the tables and the deck blocks come from
+tools/python/deck_templates.py (shared with the other make_decks.py).
 """
 import math
-import os
+import pathlib
+import sys
 
-PS = 1e-12
-NM = 1e-9
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
+from deck_templates import (HEX8_FULLY_INTEGRATED, NM, PS, block_parameters, elastic_material,  # noqa: E402
+                            contact_definition, fixed_displacement, function_table, history_output, piecewise_linear_function,
+                            prescribed, ramped_travel, results_output, table_times, write_deck)
+
 RAMP = 40 * PS        # sliding speed ramp
 LOAD_RAMP = 80 * PS   # 0 -> 500 nN
 HOLD = 60 * PS        # settle at 500 nN before sliding
@@ -24,27 +29,9 @@ SPEED = 7.5           # m/s
 LOAD = 500            # nN
 
 
-def ramped(t, speed, t_start):
-    """Displacement of a move at `speed` from t_start (cycloidal ramp up over RAMP), zero before."""
-    s = t - t_start
-    if s <= 0:
-        return 0.0
-    if s <= RAMP:
-        return speed / 2 * (s - RAMP / math.pi * math.sin(math.pi * s / RAMP))
-    return speed * RAMP / 2 + speed * (s - RAMP)
-
-
 def load_fraction(t):
     """0 -> 1 over LOAD_RAMP, (1 - cos) / 2: no jump in the load rate at either end."""
     return 1.0 if t >= LOAD_RAMP else 0.5 * (1 - math.cos(math.pi * t / LOAD_RAMP))
-
-
-def table(func, t_end, scale, ramp_start, ramp_end, step=5 * PS):
-    """Table of func: every `step` over the ramp [ramp_start, ramp_end], then the end point (func is
-    constant or linear outside the ramp, so the piecewise-linear table is exact there)."""
-    n = int((ramp_end - ramp_start) / step + 1e-9)
-    times = ([0.0] if ramp_start > 0 else []) + [ramp_start + i * step for i in range(n + 1)] + [t_end]
-    return "\n".join(f"      {t / PS:8.1f}  {func(t) * scale:.5f}" for t in times)
 
 
 # Tip start (x, y) on the map and the apex height there: the apex z at which the sphere first touches
@@ -84,34 +71,13 @@ TEMPLATE = """\
 # Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
 # stiffness); the check is kinetic / internal energy at the end of the hold (afm_sliding.py).
 begin sierra {name}
-  begin function load
-    type = piecewise linear
-    abscissa unit = ps
-    begin values
-{load_table}
-    end values
-  end function load
-  begin function slide
-    type = piecewise linear
-    abscissa unit = ps
-    ordinate unit = nm
-    begin values
-{slide_table}
-    end values
-  end function slide
+{load_function}
+{slide_function}
 
-  begin property specification for material silicon
-    density = 2330 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 161 GPa
-      poissons ratio = 0.23
-    end parameters for model elastic
-  end property specification for material silicon
+{silicon}
 {sam_material}
   # Fully integrated at GPa contact pressures (verification/hertz/README.md).
-  begin solid section hex8
-    formulation = fully_integrated
-  end solid section hex8
+{hex8}
 
   begin finite element model afm_track
     begin afm surface
@@ -134,14 +100,7 @@ begin sierra {name}
       grading ratio = 1.3
       apex position = {x0} {y0} {apex_z:.4f} nm
     end generated asperity
-    begin parameters for block tip
-      material = silicon
-      section = hex8
-    end parameters for block tip
-    begin parameters for block substrate
-      material = silicon
-      section = hex8
-    end parameters for block substrate{coating_block}
+{blocks}
   end finite element model afm_track
 
   begin presto procedure press_and_slide
@@ -151,34 +110,20 @@ begin sierra {name}
     begin presto region main
       use finite element model afm_track
       mass damping coefficient = 5e11 1/s
-      begin fixed displacement
-        node set = substrate_bottom
-        components = x y z
-      end fixed displacement
+{substrate_bottom}
       begin silent boundary
         side set = substrate_sides
       end silent boundary
-      begin fixed displacement
-        node set = tip_top
-        components = x
-      end fixed displacement
-      begin prescribed force
-        node set = tip_top
-        component = z
-        function = load
-        scale factor = -{load} nN
-      end prescribed force
-      begin prescribed displacement
-        node set = tip_top
-        component = y
-        function = slide
-      end prescribed displacement
-      begin contact definition tip_on_track
-        contact surface tip contains tip_surface
-        contact surface track contains substrate_top
-        contact axis = {x0} {y0} 0 0 0 1 nm
-        begin interaction junction
-          surfaces = tip track
+{tip_top}
+{contact}
+{outputs}
+    end presto region main
+  end presto procedure press_and_slide
+end sierra {name}
+"""
+
+# Junction model on the tip-track pair ({tau}: tau* in MPa, per case).
+JUNCTION = """\
           model = junction
           work of adhesion = 0.05 J/m^2
           equilibrium separation = 0.3 nm
@@ -186,60 +131,50 @@ begin sierra {name}
           junction strength = {tau} MPa
           junction reference speed = 0.1 m/s   # backward Euler: tanh(V/v_ref) = 1 in sliding
           junction gap tolerance = 0 nm
-        end interaction junction
-      end contact definition tip_on_track
-      begin history output hist
-        time increment = {hist} ps
-        reaction force = substrate_bottom
-        mean displacement = tip_top tip_apex
-      end history output hist
-      begin results output fields
-        time increment = {fields} ps
-        nodal variables = displacement contact_traction contact_status
-      end results output fields
-    end presto region main
-  end presto procedure press_and_slide
-end sierra {name}
 """
 
 SAM = """
   # CH3-thiol SAM (the report's Section 3.5: E = 8 GPa, nu = 0.4); density of an alkanethiol
   # monolayer, about 1000 kg/m^3 (not given in the report; it only sets the coating's wave speed).
-  begin property specification for material sam
-    density = 1000 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 8 GPa
-      poissons ratio = 0.4
-    end parameters for model elastic
-  end property specification for material sam
-"""
+""" + elastic_material("sam", 1000, 8, 0.4) + "\n"
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
+    here = pathlib.Path(__file__).resolve().parent
     for vname, v in VARIANTS.items():
         for cname, c in CASES.items():
             name = f"afm_sliding_{vname}_{cname}"
             t_slide = LOAD_RAMP + HOLD
             t_end = t_slide + (v["distance"] * NM + SPEED * RAMP / 2) / SPEED
+            blocks = [block_parameters("tip", "silicon"), block_parameters("substrate", "silicon")]
+            if c["coating"]:
+                blocks.append(block_parameters("coating", "sam"))
+            load_table = function_table(load_fraction, table_times(t_end, 0.0, LOAD_RAMP), "8.1f", scale=1.0)
+            slide_table = function_table(lambda t: ramped_travel(t, SPEED, t_slide, ramp=RAMP),
+                                         table_times(t_end, t_slide, t_slide + RAMP), "8.1f")
             text = TEMPLATE.format(
                 name=name, title=c["title"], variant=vname, tip_width=v["tip_width"], load=LOAD,
                 distance=v["distance"], speed=SPEED, tau_note=c["tau_note"], t_load=LOAD_RAMP / PS,
                 t_slide=t_slide / PS, t_end=t_end / PS,
-                load_table=table(load_fraction, t_end, 1.0, 0.0, LOAD_RAMP),
-                slide_table=table(lambda t: ramped(t, SPEED, t_slide), t_end, 1e9, t_slide, t_slide + RAMP),
+                load_function=piecewise_linear_function("load", load_table, ordinate_unit=None),
+                slide_function=piecewise_linear_function("slide", slide_table),
+                silicon=elastic_material("silicon", 2330, 161, 0.23), hex8=HEX8_FULLY_INTEGRATED,
                 sam_material=SAM if c["coating"] else "",
                 window=v["window"], track=v["track"], h=v["h"], depth=v["depth"],
                 coating=(f"\n      coating thickness = 2 nm\n      coating layers = {v['coating_layers']}"
                          if c["coating"] else ""),
                 tip_height=v["tip_height"], fine_half_width=v["fine_half_width"],
                 tip_fine_depth=v["tip_fine_depth"], x0=v["start"][0], y0=v["start"][1],
-                apex_z=v["touch"] + 0.3,
-                coating_block=("\n    begin parameters for block coating\n      material = sam\n"
-                               "      section = hex8\n    end parameters for block coating" if c["coating"] else ""),
-                tau=c["tau"], hist=v["hist"], fields=v["fields"])
-            with open(os.path.join(here, name + ".i"), "w") as f:
-                f.write(text)
+                apex_z=v["touch"] + 0.3, blocks="\n".join(blocks),
+                substrate_bottom=fixed_displacement("substrate_bottom", "x y z"),
+                tip_top="\n".join([fixed_displacement("tip_top", "x"),
+                                   prescribed("force", "tip_top", "z", "load", f"-{LOAD} nN"),
+                                   prescribed("displacement", "tip_top", "y", "slide")]),
+                outputs=history_output(v["hist"], "substrate_bottom", "tip_top tip_apex") + "\n" + results_output(v["fields"]),
+                contact=contact_definition("tip_on_track", [("tip", "tip_surface"), ("track", "substrate_top")],
+                                           f"{v['start'][0]} {v['start'][1]} 0 0 0 1", "junction",
+                                           JUNCTION.format(tau=c["tau"])))
+            write_deck(here, name, text)
             print("wrote", name + ".i")
 
 

@@ -19,13 +19,17 @@ script reports them and fails when --strict is given.
 usage: run_clamp.py [--tribex build/bin/tribex] [--out DIR] [--reduced] [--plot PNG]
 """
 import argparse
-import csv
 import math
 import json
 import os
+import pathlib
 import re
 import subprocess
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
+from history_checks import (max_kinetic_over_stored, mean, pyplot, read_history, report_failures,  # noqa: E402
+                            rows_between, save_figure)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
@@ -79,26 +83,20 @@ def run_load(tribex, deck_text, load, out):
     with open(deck, "w") as f:
         f.write(text)
     subprocess.run([tribex, "run", deck, "-o", folder, "--quiet"], check=True)
-    with open(os.path.join(folder, "history.csv")) as f:
-        rows = list(csv.DictReader(f))
-
-    def mean(key, window):
-        sel = [float(r[key]) for r in rows if window[0] <= float(r["time"]) <= window[1]]
-        return sum(sel) / len(sel)
-
-    hold = [r for r in rows if HOLD_END[0] <= float(r["time"]) <= HOLD_END[1]]
+    rows = read_history(folder)
+    sliding = rows_between(rows, *SLIDE)
+    hold = rows_between(rows, *HOLD_END)
     # Quasi-static check: kinetic energy against the stored energy, elastic plus the GW interface's
     # (contact_work: no friction has dissipated before the pull).
     return {
         "parameters": resolved(os.path.join(folder, "log.txt")),
         "load": load,
-        "normal_force": mean("contact_normal_force", SLIDE),
-        "friction_force": mean("friction_force", SLIDE),
-        "tau_star_times_real_area": TAU_STAR * mean("real_contact_area", SLIDE),
-        "adhesive_force": mean("adhesive_force", SLIDE),
-        "asperity_contacts": mean("asperity_contacts", SLIDE),
-        "kinetic_over_internal": max(float(r["kinetic_energy"]) / (float(r["internal_energy"]) + float(r["contact_work"]))
-                                     for r in hold),
+        "normal_force": mean(sliding, "contact_normal_force"),
+        "friction_force": mean(sliding, "friction_force"),
+        "tau_star_times_real_area": TAU_STAR * mean(sliding, "real_contact_area"),
+        "adhesive_force": mean(sliding, "adhesive_force"),
+        "asperity_contacts": mean(sliding, "asperity_contacts"),
+        "kinetic_over_internal": max_kinetic_over_stored(hold, ("internal_energy", "contact_work")),
     }
 
 
@@ -156,10 +154,7 @@ def main():
     if abs(ratio - 1) > 0.05:
         acceptance.append(f"intercept F_adh differs from the model's adhesive force by {100 * (ratio - 1):+.1f} % (> 5 %)")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, (ax, ax_log) = plt.subplots(1, 2, figsize=(10, 4))
+        fig, (ax, ax_log) = pyplot().subplots(1, 2, figsize=(10, 4))
         n = [p["normal_force"] * 1e6 for p in points]
         f = [p["friction_force"] * 1e6 for p in points]
         x = [-f_adh * 1e6] + n
@@ -173,13 +168,11 @@ def main():
         ax_log.set_xscale("log")
         ax_log.set_yscale("log")
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
+        save_figure(fig, a.plot, announce=None)
     for f in acceptance:
         print("NOT MET (issue 10 acceptance):", f)
-    for f in failures:
-        print("FAIL:", f)
-    return 1 if failures or (a.strict and acceptance) else 0
+    status = report_failures(failures)
+    return 1 if status or (a.strict and acceptance) else 0
 
 
 if __name__ == "__main__":

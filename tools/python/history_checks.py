@@ -1,0 +1,77 @@
+# SPDX-License-Identifier: MIT
+"""Pieces shared by the compare scripts that read a run's history.csv: reading it, selecting rows by
+a window, means, relative errors, the quasi-static (kinetic / internal energy) figure, the plot
+set-up and the failure report. Each script keeps its own reference, tolerances and messages.
+"""
+import csv
+import os
+
+
+def read_history(path):
+    """The rows of a tribex history.csv as dicts of floats (column name -> value, SI). `path` is the
+    file (a name ending in .csv) or the run's output folder."""
+    if os.path.isdir(path) or not path.endswith(".csv"):
+        path = os.path.join(path, "history.csv")
+    with open(path) as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def rows_between(rows, lo, hi, key="time"):
+    """The rows with lo <= row[key] <= hi."""
+    return [r for r in rows if lo <= r[key] <= hi]
+
+
+def deepest_index(rows, key="tip_top_displacement_z"):
+    """Index of the row where the tip top is deepest (most negative key): the end of the loading
+    branch of an indentation (rows[: i + 1]) and the start of the withdrawal (rows[i:])."""
+    z = [r[key] for r in rows]
+    return min(range(len(z)), key=lambda i: z[i])
+
+
+def mean(rows, key):
+    """Mean of row[key] over rows."""
+    return sum(r[key] for r in rows) / len(rows)
+
+
+def relative_errors(measured, reference):
+    """|m - r| / r for each pair (r > 0)."""
+    return [abs(m - r) / r for m, r in zip(measured, reference)]
+
+
+def max_and_mean(errors):
+    """(largest, mean) of a list of errors."""
+    return max(errors), sum(errors) / len(errors)
+
+
+def max_kinetic_over_stored(rows, stored=("internal_energy",), default=None):
+    """Largest kinetic energy / stored energy over rows, the quasi-static check (CONVENTIONS: KE a small
+    fraction of IE); stored = the history columns summed as the stored energy (a zero sum counts as
+    1e-300 J). `default` when rows is empty."""
+    ratios = [r["kinetic_energy"] / max(sum(r[k] for k in stored), 1e-300) for r in rows]
+    return max(ratios) if ratios else default
+
+
+def pyplot():
+    """matplotlib.pyplot on the Agg backend (no display: CTest, CI)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def save_figure(fig, path, announce="plot: "):
+    """tight_layout, then the PNG at 120 dpi; prints `announce` + path unless announce is None."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    if announce is not None:
+        print(f"{announce}{path}")
+
+
+def report_failures(failures, verdict=False):
+    """Prints one `FAIL: ...` line per failure (then PASS or FAIL when `verdict`); returns the exit
+    status, 1 if anything failed."""
+    for line in failures:
+        print("FAIL:", line)
+    if verdict:
+        print("PASS" if not failures else "FAIL")
+    return 1 if failures else 0
