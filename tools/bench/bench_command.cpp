@@ -32,22 +32,20 @@ const char* usage =
     "  loop and the peak resident memory; the last line is ns_per_element_step=VALUE (loop only).\n";
 
 inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::MaterialModel model) {
-  inputs::CubeDeckSpec spec;
-  spec.name = "bench_block";
-  spec.path = "(tribex bench block)";
-  spec.finite_element_model = "cube";
-  spec.block = "cube";
-  spec.material = "steel";
-  spec.section = "hex8";
-  spec.intervals = n;
-  spec.model = model;
-  spec.formulation = formulation;
   const double K = 160e9, G = 80e9;
-  spec.youngs_modulus = 9 * K * G / (3 * K + G);              // E = 9KG/(3K+G)
-  spec.poissons_ratio = (3 * K - 2 * G) / (2 * (3 * K + G));  // nu = (3K-2G)/(2(3K+G))
-  spec.density = 7800.0;
-  spec.size = 1.0;
-  inputs::Deck deck = inputs::cube_deck(spec);
+  inputs::Deck deck = inputs::cube_deck({.name = "bench_block",
+                                         .path = "(tribex bench block)",
+                                         .finite_element_model = "cube",
+                                         .block = "cube",
+                                         .material = "steel",
+                                         .section = "hex8",
+                                         .intervals = n,
+                                         .size = 1.0,
+                                         .model = model,
+                                         .formulation = formulation,
+                                         .youngs_modulus = 9 * K * G / (3 * K + G),              // E = 9KG/(3K+G)
+                                         .poissons_ratio = (3 * K - 2 * G) / (2 * (3 * K + G)),  // nu = (3K-2G)/(2(3K+G))
+                                         .density = 7800.0});
   inputs::FunctionSpec pull{"pull", {0.0, 1.0}, {10.0, 10.0}, {}};  // 10 m/s
   deck.functions.push_back(pull);
   auto& proc = deck.procedure;  // termination time 1 s: the loop is stopped by the step count
