@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "contact/geometry/axis_distance.hpp"
 #include "contact/geometry/quad_projection.hpp"
 
 namespace tribex::contact {
@@ -157,18 +158,6 @@ struct ContactManager::Accumulator {
   const double* x;
   double friction[3] = {0.0, 0.0, 0.0};  // vector sum of shear forces on the (first) slave surfaces, N
 };
-
-// Distance of x from the contact axis, for contact_radius_max.
-static double axis_distance(const double* xs, const double* point, const double* dir) {
-  double r[3], along = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    r[i] = xs[i] - point[i];
-    along += r[i] * dir[i];
-  }
-  double r2 = 0.0;
-  for (int i = 0; i < 3; ++i) r2 += (r[i] - along * dir[i]) * (r[i] - along * dir[i]);
-  return std::sqrt(r2);
-}
 
 // 4. interface models on slave surface node k projecting inside master face `face` with gap g:
 // adhesion sigma_s(g + z0) A_I toward the master for g >= 0 (physics.md 6.2), and for the junction
@@ -498,13 +487,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       totals.max_penetration = std::max(totals.max_penetration, -best.proj.gap);
       if (p.primary) ++totals.nodes;
       if (has_axis_) {
-        double r[3], along = 0.0;
-        for (int i = 0; i < 3; ++i) {
-          r[i] = xs[i] - axis_point_[i];
-          along += r[i] * axis_dir_[i];
-        }
-        double r2 = 0.0;
-        for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
+        const double r2 = axis_distance_squared(xs, axis_point_, axis_dir_);
         totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
         if (p.primary) {
           const double pressure = fn_mag / (p.factor * area);
@@ -539,14 +522,9 @@ double ContactManager::edge_radius(const Pass& p, const double* x) const {
       const double ga = p.gap[slave.face_local[4 * f + e]], gb = p.gap[slave.face_local[4 * f + (e + 1) % 4]];
       if (!(ga < 0.0 && gb >= 0.0)) continue;  // each crossing edge once: from inside to outside
       const double t = ga / (ga - gb);
-      double r[3], along = 0.0;
-      for (int i = 0; i < 3; ++i) {
-        r[i] = x[3 * a + i] + t * (x[3 * b + i] - x[3 * a + i]) - axis_point_[i];
-        along += r[i] * axis_dir_[i];
-      }
-      double r2 = 0.0;
-      for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
-      sum += std::sqrt(r2);
+      double crossing[3];
+      for (int i = 0; i < 3; ++i) crossing[i] = x[3 * a + i] + t * (x[3 * b + i] - x[3 * a + i]);
+      sum += axis_distance(crossing, axis_point_, axis_dir_);
       ++count;
     }
   return count ? sum / count : 0.0;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -53,29 +54,33 @@ std::string first_logged_error() {
   return "";
 }
 
-std::string element_type_name(int type) {
+/// gmsh's name and node count of an element type; nullopt if gmsh does not know it (needs a live
+/// GmshSession).
+struct ElementProperties {
   std::string name;
-  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
+  int nodes = 0;
+};
+std::optional<ElementProperties> element_properties(int type) {
+  ElementProperties p;
+  int dim = 0, order = 0, num_primary = 0;
   std::vector<double> local;
   try {
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
+    gmsh::model::mesh::getElementProperties(type, p.name, dim, order, p.nodes, local, num_primary);
   } catch (...) {
-    name = "type " + std::to_string(type);
+    return std::nullopt;
   }
-  return name;
+  return p;
+}
+
+std::string element_type_name(int type) {
+  const auto p = element_properties(type);
+  return p ? p->name : "type " + std::to_string(type);
 }
 
 /// Node count of a gmsh element type, 0 if gmsh does not know it (needs a live GmshSession).
 int gmsh_nodes_per_element(int type) {
-  std::string name;
-  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
-  std::vector<double> local;
-  try {
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
-  } catch (...) {
-    return 0;
-  }
-  return num_nodes;
+  const auto p = element_properties(type);
+  return p ? p->nodes : 0;
 }
 
 /// gmsh node tag -> our 0-based node index (dense table when tags are dense, else a hash map).

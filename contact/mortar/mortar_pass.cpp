@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "contact/contact_manager.hpp"
+#include "contact/geometry/axis_distance.hpp"
 
 namespace tribex::contact {
 
@@ -36,16 +37,7 @@ void ContactManager::apply_mortar(Pass& p, const double* x, double* force, Conta
     totals.area += p.factor * area[k];
     if (p.primary) ++totals.nodes;
     totals.max_penetration = std::max(totals.max_penetration, -mean_gap[k]);
-    if (has_axis_) {
-      double r[3], along = 0.0;
-      for (int i = 0; i < 3; ++i) {
-        r[i] = x[3 * node + i] - axis_point_[i];
-        along += r[i] * axis_dir_[i];
-      }
-      double r2 = 0.0;
-      for (int i = 0; i < 3; ++i) r2 += (r[i] - along * axis_dir_[i]) * (r[i] - along * axis_dir_[i]);
-      totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
-    }
+    if (has_axis_) totals.radius_max = std::max(totals.radius_max, axis_distance(x + 3 * node, axis_point_, axis_dir_));
   }
 }
 

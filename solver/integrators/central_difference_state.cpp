@@ -4,7 +4,10 @@
 // halves of the trapezoidal energy rules, the stable-step estimate (recomputed only every
 // dt_update_interval steps), the forces f^n of the last force pass, the element outputs of that
 // pass and the contact search state.
+#include <concepts>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "solver/integrators/central_difference.hpp"
 #include "solver/restart/state_archive.hpp"
@@ -12,51 +15,63 @@
 namespace tribex::solver {
 namespace {
 
-// The energy ledger and contact totals as flat arrays (order = restart file layout).
-std::vector<double> energies_to_array(const Energies& e) {
-  return {e.kinetic, e.internal, e.hourglass, e.external_work, e.silent_boundary_dissipation, e.damping_dissipation,
-          e.viscous_dissipation, e.contact_work, e.initial};
+// The energy ledger and the contact totals as flat arrays. for_each_member is the one list of
+// their members in restart-file order that saving and restoring both follow: a new member of
+// Energies or ContactTotals must be added there (the history row after a resume is written from
+// the restored values). `visit` gets each member by reference (const when saving).
+template <class E, class Visit>
+  requires std::same_as<std::remove_const_t<E>, Energies>
+void for_each_member(E& e, Visit&& visit) {
+  visit(e.kinetic);
+  visit(e.internal);
+  visit(e.hourglass);
+  visit(e.external_work);
+  visit(e.silent_boundary_dissipation);
+  visit(e.damping_dissipation);
+  visit(e.viscous_dissipation);
+  visit(e.contact_work);
+  visit(e.initial);
 }
-void energies_from_array(const std::vector<double>& a, Energies& e) {
-  if (a.size() != 9) throw SetupError("restart file: energy ledger has " + std::to_string(a.size()) + " terms, expected 9");
-  e = {};
-  e.kinetic = a[0];
-  e.internal = a[1];
-  e.hourglass = a[2];
-  e.external_work = a[3];
-  e.silent_boundary_dissipation = a[4];
-  e.damping_dissipation = a[5];
-  e.viscous_dissipation = a[6];
-  e.contact_work = a[7];
-  e.initial = a[8];
+
+template <class C, class Visit>
+  requires std::same_as<std::remove_const_t<C>, contact::ContactTotals>
+void for_each_member(C& c, Visit&& visit) {
+  visit(c.normal_force);
+  visit(c.tangential_force);
+  visit(c.compressive_force);
+  visit(c.adhesive_force);
+  visit(c.adhesion_energy);
+  visit(c.junction_capacity);
+  visit(c.friction_power);
+  visit(c.area);
+  visit(c.nodes);  // int, stored as a double (exact)
+  visit(c.max_penetration);
+  visit(c.radius_max);
+  visit(c.radius_edge);
+  visit(c.searches);  // int, stored as a double (exact)
+  visit(c.radius_pressure_fit);
+  visit(c.real_area);
+  visit(c.asperity_contacts);
+  visit(c.nominal_area);
 }
-std::vector<double> totals_to_array(const contact::ContactTotals& c) {
-  return {c.normal_force,   c.tangential_force, c.compressive_force, c.adhesive_force, c.adhesion_energy,
-          c.junction_capacity, c.friction_power, c.area,            double(c.nodes),  c.max_penetration,
-          c.radius_max,     c.radius_edge,      double(c.searches), c.radius_pressure_fit, c.real_area,
-          c.asperity_contacts, c.nominal_area};
+
+template <class T>
+std::vector<double> to_array(const T& value) {
+  std::vector<double> a;
+  for_each_member(value, [&a](const auto& member) { a.push_back(static_cast<double>(member)); });
+  return a;
 }
-void totals_from_array(const std::vector<double>& a, contact::ContactTotals& c) {
-  // Every ContactTotals member: a new member must be added here and in totals_to_array (the
-  // history row after a resume is written from the restored totals).
-  if (a.size() != 17) throw SetupError("restart file: contact totals have " + std::to_string(a.size()) + " terms, expected 17");
-  c.normal_force = a[0];
-  c.tangential_force = a[1];
-  c.compressive_force = a[2];
-  c.adhesive_force = a[3];
-  c.adhesion_energy = a[4];
-  c.junction_capacity = a[5];
-  c.friction_power = a[6];
-  c.area = a[7];
-  c.nodes = static_cast<int>(a[8]);
-  c.max_penetration = a[9];
-  c.radius_max = a[10];
-  c.radius_edge = a[11];
-  c.searches = static_cast<int>(a[12]);
-  c.radius_pressure_fit = a[13];
-  c.real_area = a[14];
-  c.asperity_contacts = a[15];
-  c.nominal_area = a[16];
+
+// The inverse of to_array; `what` begins the error for an array of another length.
+template <class T>
+void from_array(const std::vector<double>& a, T& value, const std::string& what) {
+  std::size_t count = 0;
+  for_each_member(value, [&count](const auto&) { ++count; });
+  if (a.size() != count)
+    throw SetupError("restart file: " + what + " " + std::to_string(a.size()) + " terms, expected " + std::to_string(count));
+  value = {};
+  std::size_t k = 0;
+  for_each_member(value, [&](auto& member) { member = static_cast<std::remove_reference_t<decltype(member)>>(a[k++]); });
 }
 
 }  // namespace
@@ -79,7 +94,7 @@ void CentralDifference::save_state(StateArchive& a) const {
   a.put("force", f_);
   a.put("external_force", f_ext_);
   a.put("reaction", reaction_);
-  a.put("energies", energies_to_array(energies_));
+  a.put("energies", to_array(energies_));
   a.put("lagged_power", std::vector<double>{external_power_right_, viscous_power_, silent_power_right_,
                                             damping_power_right_, viscous_power_right_, contact_power_right_,
                                             contact_seconds_});
@@ -89,7 +104,7 @@ void CentralDifference::save_state(StateArchive& a) const {
   if (model_.contact) {
     a.put("contact_x", x_);
     a.put("contact_force", f_contact_);
-    a.put("contact_totals", totals_to_array(contact_totals_));
+    a.put("contact_totals", to_array(contact_totals_));
     const auto s = model_.contact->state();
     a.put("contact_traction", s.traction);
     a.put("contact_status", s.status);
@@ -133,7 +148,7 @@ void CentralDifference::restore_state(const StateArchive& a) {
   a.get("force", f_);
   a.get("external_force", f_ext_);
   a.get("reaction", reaction_);
-  energies_from_array(a.array("energies"), energies_);
+  from_array(a.array("energies"), energies_, "energy ledger has");
   std::vector<double> lagged(7);
   a.get("lagged_power", lagged);
   external_power_right_ = lagged[0];
@@ -150,7 +165,7 @@ void CentralDifference::restore_state(const StateArchive& a) {
   if (model_.contact) {
     a.get("contact_x", x_);
     a.get("contact_force", f_contact_);
-    totals_from_array(a.array("contact_totals"), contact_totals_);
+    from_array(a.array("contact_totals"), contact_totals_, "contact totals have");
     contact::ContactManager::State s;
     s.traction = a.array("contact_traction");
     s.status = a.array("contact_status");

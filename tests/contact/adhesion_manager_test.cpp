@@ -8,30 +8,13 @@
 
 #include "contact/contact_manager.hpp"
 #include "mesh/asperity.hpp"
-#include "mesh/box.hpp"
+#include "support.hpp"
 
 namespace tribex::contact {
 namespace {
 
-constexpr double W = 0.05, z0 = 0.2e-9, nm = 1e-9;
-
-// A master slab (12 x 12 nm, top at z = 0) and a slave slab (10 x 10 nm, bottom at z = gap) with
-// different grids, so that slave nodes project inside master faces.
-mesh::Mesh two_flats(double gap) {
-  mesh::BoxSpec lower;
-  lower.name = "lower";
-  lower.origin = {-6 * nm, -6 * nm, -2 * nm};
-  lower.size = {12 * nm, 12 * nm, 2 * nm};
-  lower.intervals = {7, 7, 1};
-  mesh::BoxSpec upper;
-  upper.name = "upper";
-  upper.origin = {-5 * nm, -5 * nm, gap};
-  upper.size = {10 * nm, 10 * nm, 2 * nm};
-  upper.intervals = {20, 20, 1};
-  mesh::Mesh m = mesh::generate_box(lower);
-  mesh::append(m, mesh::generate_box(upper));
-  return m;
-}
+using test::nm;
+constexpr double W = 0.05, z0 = 0.2e-9;
 
 struct Rig {
   mesh::Mesh mesh;
@@ -45,35 +28,19 @@ Rig make(mesh::Mesh m, const std::string& slave_set, const std::string& master_s
   Rig out;
   out.mesh = std::move(m);
   out.mass.assign(out.mesh.node_count(), node_mass);
-  std::vector<ContactSurface> surfaces = {make_surface(out.mesh, "slave", {slave_set}),
-                                          make_surface(out.mesh, "master", {master_set})};
-  s.slave = 0;
-  s.master = 1;
-  out.manager = std::make_unique<ContactManager>(std::move(surfaces), std::vector<InteractionSettings>{s}, out.mass,
-                                                 1e-15, out.mesh.node_count());
+  out.manager = std::make_unique<ContactManager>(test::one_interaction(out.mesh, slave_set, master_set, s, out.mass));
   out.force.assign(out.mesh.coordinates.size(), 0.0);
   return out;
 }
 
-InteractionSettings adhesion(double cutoff_ratio) {
-  InteractionSettings s;
-  s.model = InterfaceModel::adhesion;
-  s.adhesion = {W, z0, cutoff_ratio * z0};
-  s.junction.gap_tolerance = 0.05 * z0;
-  s.search_margin = 2 * cutoff_ratio * z0;
-  return s;
-}
+InteractionSettings adhesion(double cutoff_ratio) { return test::adhesion_settings({W, z0, cutoff_ratio * z0}); }
 
-// Sum of force components over a node set, and over all nodes.
-double sum_over(const Rig& st, const std::vector<int>& nodes, int i) {
-  double f = 0.0;
-  for (int n : nodes) f += st.force[3 * n + i];
-  return f;
-}
+// Sum of force component i over a node set.
+double sum_over(const Rig& st, const std::vector<int>& nodes, int i) { return test::force_sum(st.force, nodes, i); }
 
 TEST(AdhesionManager, FlatsAtSeparationCarryTheLawTimesArea) {
   for (double gap : {0.0, 0.05 * z0, 0.2 * z0, 0.5 * z0, 2.0 * z0, 6.0 * z0}) {
-    Rig st = make(two_flats(gap), "upper_zmin", "lower_zmax", adhesion(5.0));
+    Rig st = make(test::two_flats({.gap = gap}), "upper_zmin", "lower_zmax", adhesion(5.0));
     const std::vector<double> v(st.mesh.coordinates.size(), 0.0);
     const ContactTotals t = st.manager->compute_forces(st.mesh.coordinates.data(), v.data(), st.force.data());
     const AdhesionLaw law{W, z0, 5 * z0};
@@ -156,7 +123,7 @@ TEST(JunctionManager, ShearOnFlatsIsStrengthTimesAreaAndReverses) {
     InteractionSettings s = adhesion(5.0);
     s.model = InterfaceModel::junction;
     s.junction = {tau, v_ref, 0.05 * z0};
-    Rig st = make(two_flats(0.0), "upper_zmin", "lower_zmax", s, 1e-20);
+    Rig st = make(test::two_flats({.gap = 0.0}), "upper_zmin", "lower_zmax", s, 1e-20);
     std::vector<double> v(st.mesh.coordinates.size(), 0.0);
     for (int node : st.mesh.node_sets.at("upper_all")) v[3 * node] = V;
     const ContactTotals t = st.manager->compute_forces(st.mesh.coordinates.data(), v.data(), st.force.data());
@@ -174,13 +141,13 @@ TEST(JunctionManager, ShearOnFlatsIsStrengthTimesAreaAndReverses) {
   InteractionSettings s = adhesion(5.0);
   s.model = InterfaceModel::junction;
   s.junction = {tau, v_ref, 0.05 * z0};
-  Rig st = make(two_flats(0.0), "upper_zmin", "lower_zmax", s, 1e-20);
+  Rig st = make(test::two_flats({.gap = 0.0}), "upper_zmin", "lower_zmax", s, 1e-20);
   std::vector<double> v(st.mesh.coordinates.size(), 0.0);
   for (int node : st.mesh.node_sets.at("lower_all")) v[3 * node] = 10.0;
   st.manager->compute_forces(st.mesh.coordinates.data(), v.data(), st.force.data());
   EXPECT_NEAR(sum_over(st, st.mesh.node_sets.at("upper_zmin"), 0), tau * A * std::tanh(20.0), 1e-3 * tau * A);
   // Out of contact (gap > g_j): adhesion only, no shear.
-  Rig far = make(two_flats(0.5 * z0), "upper_zmin", "lower_zmax", s, 1e-20);
+  Rig far = make(test::two_flats({.gap = 0.5 * z0}), "upper_zmin", "lower_zmax", s, 1e-20);
   std::vector<double> v2(far.mesh.coordinates.size(), 0.0);
   for (int node : far.mesh.node_sets.at("upper_all")) v2[3 * node] = 10.0;
   const ContactTotals t = far.manager->compute_forces(far.mesh.coordinates.data(), v2.data(), far.force.data());

@@ -8,12 +8,13 @@
 
 #include "contact/contact_manager.hpp"
 #include "mesh/asperity.hpp"
-#include "mesh/box.hpp"
+#include "support.hpp"
 
 namespace tribex::contact {
 namespace {
 
-constexpr double W = 0.05, z0 = 0.2e-9, nm = 1e-9;
+using test::nm;
+constexpr double W = 0.05, z0 = 0.2e-9;
 
 struct Case {
   mesh::Mesh mesh;
@@ -70,21 +71,12 @@ double fe_surface_integral(const mesh::Mesh& m, const AdhesionLaw& law) {
 // Summed adhesive force (z component on the tip surface) of the sphere R above the flat, both
 // rigid (one compute_forces call at the reference coordinates), attraction reported positive.
 double tip_force(const mesh::Mesh& m, Enforcement enforcement, const AdhesionLaw& law) {
-  std::vector<double> mass(m.node_count(), 1e-24);
-  std::vector<ContactSurface> surfaces = {make_surface(m, "slave", {"tip_surface"}),
-                                          make_surface(m, "master", {"substrate_top"})};
-  InteractionSettings s;
-  s.model = InterfaceModel::adhesion;
-  s.adhesion = law;
-  s.junction.gap_tolerance = 0.05 * law.z0;
-  s.search_margin = 2 * law.cutoff;
-  s.enforcement = enforcement;
-  ContactManager manager(std::move(surfaces), {s}, mass, 1e-15, m.node_count());
+  const std::vector<double> mass(m.node_count(), 1e-24);
+  ContactManager manager =
+      test::one_interaction(m, "tip_surface", "substrate_top", test::adhesion_settings(law, enforcement), mass);
   std::vector<double> force(m.coordinates.size(), 0.0);
   manager.compute_forces(m.coordinates.data(), nullptr, force.data());
-  double fz = 0.0;
-  for (int n : m.side_set_nodes("tip_surface")) fz += force[3 * n + 2];
-  return -fz;
+  return -test::force_sum(force, m.side_set_nodes("tip_surface"), 2);
 }
 
 // Exact sphere, applied law, true (not projected) area like both FE rules:
@@ -141,39 +133,22 @@ TEST(FaceAdhesion, InclinedFlatAboveFlat) {
   const double sin_a = 0.1, cos_a = std::sqrt(1 - sin_a * sin_a), L = 10 * nm;
   for (int intervals : {5, 10, 20})
     for (double D : {0.0, 0.1 * nm, 0.4 * nm}) {
-      mesh::BoxSpec lower;
-      lower.name = "lower";
-      lower.origin = {-6 * nm, -6 * nm, -2 * nm};
-      lower.size = {12 * nm, 12 * nm, 2 * nm};
-      lower.intervals = {7, 7, 1};
-      mesh::BoxSpec upper;
-      upper.name = "upper";
-      upper.origin = {0, -5 * nm, 0};
-      upper.size = {L, 10 * nm, 2 * nm};
-      upper.intervals = {intervals, intervals, 1};
-      mesh::Mesh m = mesh::generate_box(lower);
-      mesh::Mesh up = mesh::generate_box(upper);
-      for (std::size_t n = 0; n < up.coordinates.size() / 3; ++n) {  // tilt about the y axis, lowest edge at D
-        const double x = up.coordinates[3 * n], z = up.coordinates[3 * n + 2];
-        up.coordinates[3 * n] = -5 * nm + x * cos_a - z * sin_a;
-        up.coordinates[3 * n + 2] = D + x * sin_a + z * cos_a;
+      // The slave slab L x 10 nm from x = 0, grid intervals x intervals, tilted about the y axis
+      // (lowest edge at x = -5 nm, z = D).
+      mesh::Mesh m = test::two_flats({.slave_intervals = {intervals, intervals}, .slave_origin = {0, -5 * nm},
+                                      .slave_size = {L, 10 * nm}});
+      for (int n : m.node_sets.at("upper_all")) {
+        const double x = m.coordinates[3 * n], z = m.coordinates[3 * n + 2];
+        m.coordinates[3 * n] = -5 * nm + x * cos_a - z * sin_a;
+        m.coordinates[3 * n + 2] = D + x * sin_a + z * cos_a;
       }
-      mesh::append(m, up);
       auto force = [&](Enforcement e) {
-        std::vector<double> mass(m.node_count(), 1e-24);
-        std::vector<ContactSurface> surfaces = {make_surface(m, "slave", {"upper_zmin"}),
-                                                make_surface(m, "master", {"lower_zmax"})};
-        InteractionSettings s;
-        s.model = InterfaceModel::adhesion;
-        s.adhesion = law;
-        s.junction.gap_tolerance = 0.05 * z0;
-        s.search_margin = 2 * law.cutoff;
-        s.enforcement = e;
-        ContactManager manager(std::move(surfaces), {s}, mass, 1e-15, m.node_count());
+        const std::vector<double> mass(m.node_count(), 1e-24);
+        ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", test::adhesion_settings(law, e), mass);
         std::vector<double> f(m.coordinates.size(), 0.0);
         manager.compute_forces(m.coordinates.data(), nullptr, f.data());
-        double fz = 0.0, total = 0.0;
-        for (int n : m.side_set_nodes("upper_zmin")) fz += f[3 * n + 2];
+        const double fz = test::force_sum(f, m.side_set_nodes("upper_zmin"), 2);
+        double total = 0.0;
         for (std::size_t k = 2; k < f.size(); k += 3) total += f[k];
         EXPECT_NEAR(total / fz, 0.0, 1e-12);  // the master receives the reaction exactly
         return -fz;

@@ -9,7 +9,7 @@
 
 #include "contact/contact_manager.hpp"
 #include "contact/models/junction_shear.hpp"
-#include "mesh/box.hpp"
+#include "support.hpp"
 
 namespace tribex::contact {
 namespace {
@@ -149,32 +149,16 @@ TEST(JunctionUpdate, DissipationIsPositiveAndEqualsTheKineticEnergyLost) {
 // slip decays. (Single nodes can overshoot transiently: row-sum scaling bounds the spectrum, not
 // each component.)
 TEST(JunctionManagerCoupling, SharedMasterNodesStayStable) {
-  const double nm = 1e-9, z0 = 0.2e-9;
-  mesh::BoxSpec lower;
-  lower.name = "lower";
-  lower.origin = {-6 * nm, -6 * nm, -2 * nm};
-  lower.size = {12 * nm, 12 * nm, 2 * nm};
-  lower.intervals = {7, 7, 1};
-  mesh::BoxSpec upper;
-  upper.name = "upper";
-  upper.origin = {-5 * nm, -5 * nm, 0.0};
-  upper.size = {10 * nm, 10 * nm, 2 * nm};
-  upper.intervals = {20, 20, 1};
-  mesh::Mesh m = mesh::generate_box(lower);
-  mesh::append(m, mesh::generate_box(upper));
+  const double nm = test::nm, z0 = 0.2e-9;
+  const mesh::Mesh m = test::two_flats({});  // 20 x 20 slave faces at gap 0 on 7 x 7 master faces
   std::vector<double> node_mass(m.node_count(), 1e-24);
   const auto& master_nodes = m.node_sets.at("lower_zmax");
   for (int node : master_nodes) node_mass[node] = 2e-25;  // light master: strong coupling
-  InteractionSettings s;
+  InteractionSettings s = test::adhesion_settings({0.05, z0, 5 * z0});
   s.model = InterfaceModel::junction;
-  s.adhesion = {0.05, z0, 5 * z0};
   s.junction = {1e9, 1e-6, 0.05 * z0};  // stick: tau* A_I dt / m_pair >> the slip
-  s.search_margin = 2 * 5 * z0;
-  s.slave = 0;
-  s.master = 1;
-  std::vector<ContactSurface> surfaces = {make_surface(m, "slave", {"upper_zmin"}), make_surface(m, "master", {"lower_zmax"})};
   const double step = 1e-15;
-  ContactManager manager(std::move(surfaces), {s}, node_mass, step, m.node_count());
+  ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", s, node_mass, step);
   std::vector<double> v(m.coordinates.size(), 0.0), force(m.coordinates.size(), 0.0);
   const auto& slave_nodes = m.node_sets.at("upper_zmin");
   for (int node : slave_nodes) v[3 * node] = 1.0;  // the slave face slides in +x at 1 m/s
@@ -230,31 +214,16 @@ TEST(JunctionManagerCoupling, SharedMasterNodesStayStable) {
 // x <= x_c, so the area is (x_c + 5 nm) x 10 nm for any x_c, and the shear on it (sliding in y,
 // heavy nodes) is tau* times that area. Whole nodal areas would move in steps of 0.5 nm x 10 nm.
 TEST(JunctionManagerArea, ContactAreaFollowsTheGapBetweenNodes) {
-  const double nm = 1e-9, z0 = 0.2e-9, slope = 0.02, tau = 100e6, V = 10.0;
+  const double nm = test::nm, z0 = 0.2e-9, slope = 0.02, tau = 100e6, V = 10.0;
   for (double xc : {-2.1 * nm, -0.05 * nm, 0.2 * nm, 1.37 * nm, 3.5 * nm}) {
-    mesh::BoxSpec lower;
-    lower.name = "lower";
-    lower.origin = {-6 * nm, -6 * nm, -2 * nm};
-    lower.size = {12 * nm, 12 * nm, 2 * nm};
-    lower.intervals = {7, 7, 1};
-    mesh::BoxSpec upper;
-    upper.name = "upper";
-    upper.origin = {-5 * nm, -5 * nm, 0.0};
-    upper.size = {10 * nm, 10 * nm, 2 * nm};
-    upper.intervals = {20, 20, 1};
-    mesh::Mesh m = mesh::generate_box(lower);
-    mesh::append(m, mesh::generate_box(upper));
+    mesh::Mesh m = test::two_flats({});  // 20 x 20 slave faces at gap 0 on 7 x 7 master faces, then tilted
     for (int node : m.node_sets.at("upper_all")) m.coordinates[3 * node + 2] += slope * (m.coordinates[3 * node] - xc);
     std::vector<double> node_mass(m.node_count(), 1e-20);
-    InteractionSettings s;
+    InteractionSettings s = test::adhesion_settings({0.05, z0, 5 * z0});
     s.model = InterfaceModel::junction;
-    s.adhesion = {0.05, z0, 5 * z0};
     s.junction = {tau, 0.1, 0.0};  // in contact where g <= 0
     s.search_margin = 2 * nm;
-    s.slave = 0;
-    s.master = 1;
-    std::vector<ContactSurface> surfaces = {make_surface(m, "slave", {"upper_zmin"}), make_surface(m, "master", {"lower_zmax"})};
-    ContactManager manager(std::move(surfaces), {s}, node_mass, 1e-15, m.node_count());
+    ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", s, node_mass);
     std::vector<double> v(m.coordinates.size(), 0.0), force(m.coordinates.size(), 0.0);
     for (int node : m.node_sets.at("upper_all")) v[3 * node + 1] = V;
     const ContactTotals t = manager.compute_forces(m.coordinates.data(), v.data(), force.data());

@@ -9,41 +9,25 @@
 #include <cmath>
 
 #include "contact/contact_manager.hpp"
-#include "mesh/box.hpp"
+#include "support.hpp"
 
 namespace tribex::contact {
 namespace {
 
-constexpr double nm = 1e-9;
+using test::nm;
 
 // Master slab 12 x 12 nm (0.5 nm faces, top at z = 0); slave slab 10 x 10 nm (0.5 nm faces)
 // shifted by half a face, so its nodes lie over master face centres; slave nodes within a of the
 // axis pushed to g(r) = -g0 sqrt(1 - r^2/a^2), the others 0.05 nm above the master.
 ContactTotals press(double a, double g0) {
-  mesh::BoxSpec lower;
-  lower.name = "lower";
-  lower.origin = {-6 * nm, -6 * nm, -2 * nm};
-  lower.size = {12 * nm, 12 * nm, 2 * nm};
-  lower.intervals = {24, 24, 1};
-  mesh::BoxSpec upper;
-  upper.name = "upper";
-  upper.origin = {-5.25 * nm, -5.25 * nm, 0.0};
-  upper.size = {10 * nm, 10 * nm, 2 * nm};
-  upper.intervals = {20, 20, 1};
-  mesh::Mesh m = mesh::generate_box(lower);
-  mesh::append(m, mesh::generate_box(upper));
+  const mesh::Mesh m = test::two_flats({.master_intervals = {24, 24}, .slave_origin = {-5.25 * nm, -5.25 * nm}});
   const std::vector<double> mass(m.node_count(), 1e-24);
-  std::vector<ContactSurface> surfaces = {make_surface(m, "slave", {"upper_zmin"}),
-                                          make_surface(m, "master", {"lower_zmax"})};
-  InteractionSettings s;
-  s.slave = 0;
-  s.master = 1;
+  ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", InteractionSettings{}, mass);
   std::vector<double> x = m.coordinates;
-  for (int node : surfaces[0].nodes) {
+  for (int node : manager.surfaces()[0].nodes) {
     const double r2 = x[3 * node] * x[3 * node] + x[3 * node + 1] * x[3 * node + 1];
     x[3 * node + 2] = r2 < a * a ? -g0 * std::sqrt(1.0 - r2 / (a * a)) : 0.05 * nm;
   }
-  ContactManager manager(std::move(surfaces), {s}, mass, 1e-15, m.node_count());
   const double point[3] = {0, 0, 0}, axis[3] = {0, 0, 1};
   manager.set_axis(point, axis);
   std::vector<double> force(m.coordinates.size(), 0.0);

@@ -9,29 +9,12 @@
 
 #include "contact/contact_manager.hpp"
 #include "contact/rough/gw_integrals.hpp"
-#include "mesh/box.hpp"
+#include "support.hpp"
 
 namespace tribex::contact {
 namespace {
 
-constexpr double nm = 1e-9;
-
-// Master slab 12 x 12 nm (top at z = 0), slave slab 10 x 10 nm (bottom at z = gap), different grids.
-mesh::Mesh two_flats(double gap) {
-  mesh::BoxSpec lower;
-  lower.name = "lower";
-  lower.origin = {-6 * nm, -6 * nm, -2 * nm};
-  lower.size = {12 * nm, 12 * nm, 2 * nm};
-  lower.intervals = {7, 7, 1};
-  mesh::BoxSpec upper;
-  upper.name = "upper";
-  upper.origin = {-5 * nm, -5 * nm, gap};
-  upper.size = {10 * nm, 10 * nm, 2 * nm};
-  upper.intervals = {6, 5, 1};
-  mesh::Mesh m = mesh::generate_box(lower);
-  mesh::append(m, mesh::generate_box(upper));
-  return m;
-}
+using test::nm;
 
 // Summits of a 1 um^2 patch: eta = 50 /um^2, R = 200 nm, sigma_s = 2 nm; E* = 90 GPa, W = 0.05 J/m^2.
 RoughSurfaceParameters patch() {
@@ -51,9 +34,9 @@ struct Result {
 };
 
 Result run(double gap, double offset, double slide_speed, const RoughSurfaceParameters& q, double tau = 0.0) {
-  mesh::Mesh m = two_flats(gap);
+  // Master slab 12 x 12 nm (top at z = 0), slave slab 10 x 10 nm (bottom at z = gap), different grids.
+  const mesh::Mesh m = test::two_flats({.gap = gap, .slave_intervals = {6, 5}});
   std::vector<double> mass(m.node_count(), 1e-21);
-  std::vector<ContactSurface> surfaces = {make_surface(m, "slave", {"upper_zmin"}), make_surface(m, "master", {"lower_zmax"})};
   InteractionSettings s;
   s.model = InterfaceModel::rough_surface;
   s.rough = std::make_shared<const RoughSurfaceLaw>(q);
@@ -61,13 +44,14 @@ Result run(double gap, double offset, double slide_speed, const RoughSurfacePara
   s.search_margin = 20 * nm;
   s.junction.strength = tau;
   s.junction.reference_speed = 0.1;
-  ContactManager manager(std::move(surfaces), {s}, mass, 1e-15, m.node_count());
+  ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", s, mass);
   std::vector<double> v(m.coordinates.size(), 0.0), force(m.coordinates.size(), 0.0);
   for (int node : m.node_sets.at("upper_all")) v[3 * node] = slide_speed;
   Result r;
   r.totals = manager.compute_forces(m.coordinates.data(), v.data(), force.data());
-  for (int n : m.node_sets.at("upper_zmin")) r.force_z_slave += force[3 * n + 2], r.force_x_slave += force[3 * n];
-  for (int n : m.node_sets.at("lower_zmax")) r.force_z_master += force[3 * n + 2];
+  r.force_z_slave = test::force_sum(force, m.node_sets.at("upper_zmin"), 2);
+  r.force_x_slave = test::force_sum(force, m.node_sets.at("upper_zmin"), 0);
+  r.force_z_master = test::force_sum(force, m.node_sets.at("lower_zmax"), 2);
   r.stable_dt = manager.stable_time_step();
   return r;
 }

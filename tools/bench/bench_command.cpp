@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "inputs/cube_deck.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/model.hpp"
 #include "tools/bench/allocation_counter.hpp"
@@ -31,35 +32,24 @@ const char* usage =
     "  loop and the peak resident memory; the last line is ns_per_element_step=VALUE (loop only).\n";
 
 inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::MaterialModel model) {
-  inputs::Deck deck;
-  deck.name = "bench_block";
-  deck.path = "(tribex bench block)";
+  const double K = 160e9, G = 80e9;
+  inputs::Deck deck = inputs::cube_deck({.name = "bench_block",
+                                         .path = "(tribex bench block)",
+                                         .finite_element_model = "cube",
+                                         .block = "cube",
+                                         .material = "steel",
+                                         .section = "hex8",
+                                         .intervals = n,
+                                         .size = 1.0,
+                                         .model = model,
+                                         .formulation = formulation,
+                                         .youngs_modulus = 9 * K * G / (3 * K + G),              // E = 9KG/(3K+G)
+                                         .poissons_ratio = (3 * K - 2 * G) / (2 * (3 * K + G)),  // nu = (3K-2G)/(2(3K+G))
+                                         .density = 7800.0});
   inputs::FunctionSpec pull{"pull", {0.0, 1.0}, {10.0, 10.0}, {}};  // 10 m/s
   deck.functions.push_back(pull);
-  const double K = 160e9, G = 80e9;
-  inputs::MaterialSpec steel;
-  steel.name = "steel";
-  steel.density = 7800.0;
-  // E = 9KG/(3K+G), nu = (3K-2G)/(2(3K+G))
-  steel.models.push_back({model, 9 * K * G / (3 * K + G), (3 * K - 2 * G) / (2 * (3 * K + G)), {}});
-  deck.materials.push_back(steel);
-  inputs::SectionSpec section;
-  section.name = "hex8";
-  section.formulation = formulation;
-  deck.sections.push_back(section);
-  inputs::FiniteElementModelSpec fem;
-  fem.name = "cube";
-  inputs::GeneratedBoxSpec box;
-  box.block_name = "cube";
-  box.size = {1.0, 1.0, 1.0};
-  box.intervals = {n, n, n};
-  fem.boxes.push_back(box);
-  fem.blocks.push_back({"cube", "steel", model, "hex8", {}});
-  deck.models.push_back(fem);
-  auto& proc = deck.procedure;
-  proc.time_control.termination_time = 1.0;  // the loop is stopped by the step count
+  auto& proc = deck.procedure;  // termination time 1 s: the loop is stopped by the step count
   proc.time_control.time_step_scale_factor = 0.5;
-  proc.region.finite_element_model = "cube";
   proc.region.fixed_displacements.push_back({"cube_xmin", {inputs::Component::x, inputs::Component::y, inputs::Component::z}, {}});
   proc.region.prescribed_motions.push_back(
       {inputs::PrescribedMotionSpec::Kind::velocity, "cube_xmax", inputs::Component::x, "pull", 1.0, {}});

@@ -7,6 +7,7 @@
 
 #include "tools/common/errors.hpp"
 #include "tools/friction_test/calibration.hpp"
+#include "tools/friction_test/static_friction.hpp"
 
 namespace tribex::friction_test {
 namespace {
@@ -214,9 +215,9 @@ LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vecto
   out.mu_d_sigma = std::sqrt(c(1, 1));
   out.intercept = a;
   out.intercept_sigma = std::sqrt(c(0, 0));
-  out.adhesion_force = a / b;
-  const double ga = 1 / b, gb = -a / (b * b);
-  out.adhesion_force_sigma = std::sqrt(std::max(0.0, ga * ga * c(0, 0) + gb * gb * c(1, 1) + 2 * ga * gb * c(0, 1)));
+  const AdhesionForce adhesion = adhesion_force_of_line(a, b, c);
+  out.adhesion_force = adhesion.value;
+  out.adhesion_force_sigma = adhesion.sigma;
   out.rms_residual = line.rms_residual;
   return out;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tools/friction_test/static_friction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -32,6 +33,11 @@ std::vector<SlipEvent> detect_slips(const std::vector<double>& position, const s
   return events;
 }
 
+AdhesionForce adhesion_force_of_line(double a, double b, const Eigen::Matrix2d& c) {
+  const double ga = 1 / b, gb = -a / (b * b);
+  return {a / b, std::sqrt(std::max(0.0, ga * ga * c(0, 0) + gb * gb * c(1, 1) + 2 * ga * gb * c(0, 1)))};
+}
+
 StaticFit fit_static(std::vector<SlipEvent> events, const std::string& what, double min_jump) {
   using tools::BadInput;
   char jump[32];
@@ -57,10 +63,9 @@ StaticFit fit_static(std::vector<SlipEvent> events, const std::string& what, dou
   out.intercept = a;
   out.intercept_sigma = std::sqrt(c(0, 0));
   out.correlation = line.correlation(0, 1);
-  out.adhesion_force = a / b;
-  // delta method for F_adh = a / b: grad = (1/b, -a/b^2).
-  const double ga = 1 / b, gb = -a / (b * b);
-  out.adhesion_force_sigma = std::sqrt(std::max(0.0, ga * ga * c(0, 0) + gb * gb * c(1, 1) + 2 * ga * gb * c(0, 1)));
+  const AdhesionForce adhesion = adhesion_force_of_line(a, b, c);
+  out.adhesion_force = adhesion.value;
+  out.adhesion_force_sigma = adhesion.sigma;
   out.rms_residual = line.rms_residual;
   return out;
 }

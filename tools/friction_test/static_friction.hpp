@@ -59,6 +59,14 @@ struct StaticFit {
   double rms_residual = 0.0;                                // N
 };
 
+/// F_adh = a / b of a fitted line F = a + b F_N = mu (F_N + F_adh) (Eq. 2.2) and its 1-sigma from
+/// the covariance c of (a, b) by the delta method, gradient (1/b, -a/b^2): the static load line
+/// (fit_static) and the dynamic one (fit_load_line, Fig. 2.11).
+struct AdhesionForce {
+  double value = 0.0, sigma = 0.0;  // N
+};
+AdhesionForce adhesion_force_of_line(double a, double b, const Eigen::Matrix2d& c);
+
 /// Fits Eq. 2.2 to the slip events; throws tools::BadInput naming `what` when fewer than 3 are
 /// found (no slip event at all gets its own message).
 StaticFit fit_static(std::vector<SlipEvent> events, const std::string& what, double min_jump);

@@ -57,35 +57,63 @@ struct Prepared {
   std::string steps;
 };
 
-void add_preprocess_options(Args& a, std::vector<double>& window, long& resample, bool& median, bool& smooth) {
-  window = a.list("--window", inputs::dim::length);
-  if (!window.empty() && window.size() != 4)
-    throw BadInput("--window needs 4 lengths X0,Y0,WX,WY (e.g. 0,0,100nm,35nm), got " + std::to_string(window.size()));
-  resample = a.integer("--resample", 0);
-  if (resample != 0 && (resample < 8 || resample > 8192))
-    throw BadInput("--resample " + std::to_string(resample) + " is out of range; use 8 to 8192 pixels per side");
-  median = a.flag("--median");
-  smooth = a.flag("--smooth");
+// The pre-processing options every subcommand takes (--window, --resample, --median, --smooth).
+struct Preprocess {
+  std::vector<double> window;  // X0, Y0, WX, WY, m; empty: the whole map
+  long resample = 0;           // pixels per side; 0: as read
+  bool median = false, smooth = false;
+};
+
+Preprocess preprocess_options(Args& a) {
+  Preprocess o;
+  o.window = a.list("--window", inputs::dim::length);
+  if (!o.window.empty() && o.window.size() != 4)
+    throw BadInput("--window needs 4 lengths X0,Y0,WX,WY (e.g. 0,0,100nm,35nm), got " + std::to_string(o.window.size()));
+  o.resample = a.integer("--resample", 0);
+  if (o.resample != 0 && (o.resample < 8 || o.resample > 8192))
+    throw BadInput("--resample " + std::to_string(o.resample) + " is out of range; use 8 to 8192 pixels per side");
+  o.median = a.flag("--median");
+  o.smooth = a.flag("--smooth");
+  return o;
 }
 
-Prepared prepare(const std::string& file, int channel, const std::vector<double>& window, long resample, bool median,
-                 bool smooth) {
+Prepared prepare(const std::string& file, int channel, const Preprocess& o) {
   Prepared p;
   p.map = mesh::afm::read_height_map(file, channel);
   p.steps = "read";
-  if (!window.empty()) {
-    p.map = mesh::afm::crop(p.map, window[0], window[1], window[2], window[3]);
+  if (!o.window.empty()) {
+    p.map = mesh::afm::crop(p.map, o.window[0], o.window[1], o.window[2], o.window[3]);
     p.steps += ", crop";
   }
   p.map = mesh::afm::level_plane(p.map);
   p.steps += ", level plane";
-  if (resample > 0) {
-    p.map = mesh::afm::resample(p.map, static_cast<std::size_t>(resample), static_cast<std::size_t>(resample));
-    p.steps += ", resample " + std::to_string(resample);
+  if (o.resample > 0) {
+    p.map = mesh::afm::resample(p.map, static_cast<std::size_t>(o.resample), static_cast<std::size_t>(o.resample));
+    p.steps += ", resample " + std::to_string(o.resample);
   }
-  if (median) { p.map = mesh::afm::median_filter(p.map); p.steps += ", median 3x3"; }
-  if (smooth) { p.map = mesh::afm::smooth(p.map); p.steps += ", smooth 3x3"; }
+  if (o.median) { p.map = mesh::afm::median_filter(p.map); p.steps += ", median 3x3"; }
+  if (o.smooth) { p.map = mesh::afm::smooth(p.map); p.steps += ", smooth 3x3"; }
   return p;
+}
+
+// The elastic constants of the two bodies (--E1 --nu1 --E2 --nu2; polysilicon defaults).
+struct ElasticPair {
+  double e1 = 0.0, nu1 = 0.0, e2 = 0.0, nu2 = 0.0;  // Pa, -
+};
+
+ElasticPair elastic_options(Args& a) {
+  ElasticPair e;
+  e.e1 = a.quantity("--E1", 164e9, inputs::dim::pressure);
+  e.e2 = a.quantity("--E2", 164e9, inputs::dim::pressure);
+  e.nu1 = a.real("--nu1", 0.23);
+  e.nu2 = a.real("--nu2", 0.23);
+  return e;
+}
+
+// Checked after a.finish(), so that unknown options are reported first.
+void check_elastic(const ElasticPair& e) {
+  if (!(e.e1 > 0 && e.e2 > 0)) throw BadInput("--E1 and --E2 must be positive");
+  if (!(e.nu1 > -1 && e.nu1 < 0.5 && e.nu2 > -1 && e.nu2 < 0.5)) throw BadInput("--nu1 and --nu2 must lie in (-1, 0.5)");
 }
 
 int channel_option(Args& a, const std::string& name) {
@@ -117,14 +145,11 @@ int stats(const std::vector<std::string>& argv) {
   if (a.help_requested()) { std::fputs(stats_usage, stdout); return tools::exit_ok; }
   const std::string file = a.positional(0, "FILE");
   const int channel = channel_option(a, "--channel");
-  std::vector<double> window;
-  long resample = 0;
-  bool median = false, smooth = false;
-  add_preprocess_options(a, window, resample, median, smooth);
+  const Preprocess pre = preprocess_options(a);
   const bool json = a.flag("--json");
   const auto summits_csv = a.text("--summits");
   a.finish();
-  const Prepared p = prepare(file, channel, window, resample, median, smooth);
+  const Prepared p = prepare(file, channel, pre);
   if (summits_csv) write_summits(*summits_csv, p.map, file);
   using surface::Direction;
   const auto mx = surface::profile_moments(p.map, Direction::x), my = surface::profile_moments(p.map, Direction::y);
@@ -181,12 +206,8 @@ int mccool(const std::vector<std::string>& argv) {
   const std::string f1 = a.positional(0, "FILE1");
   const auto f2 = a.optional_positional(1);
   const int c1 = channel_option(a, "--channel1"), c2 = channel_option(a, "--channel2");
-  std::vector<double> window;
-  long resample = 0;
-  bool median = false, smooth = false;
-  add_preprocess_options(a, window, resample, median, smooth);
-  const double e1 = a.quantity("--E1", 164e9, inputs::dim::pressure), e2 = a.quantity("--E2", 164e9, inputs::dim::pressure);
-  const double nu1 = a.real("--nu1", 0.23), nu2 = a.real("--nu2", 0.23);
+  const Preprocess pre = preprocess_options(a);
+  const ElasticPair elastic = elastic_options(a);
   const auto sep = a.real("--separation");
   const auto load = a.quantity("--load", inputs::dim::force);
   const double ax = a.quantity("--area-x", 10e-6, inputs::dim::length), ay = a.quantity("--area-y", 100e-6, inputs::dim::length);
@@ -195,23 +216,22 @@ int mccool(const std::vector<std::string>& argv) {
   a.finish();
   if (a.positional_count() > 2) throw BadInput("tribex surface mccool takes one or two FILEs, got " + std::to_string(a.positional_count()));
   if (sep && load) throw BadInput("give either --separation or --load, not both");
-  if (!(e1 > 0 && e2 > 0)) throw BadInput("--E1 and --E2 must be positive");
-  if (!(nu1 > -1 && nu1 < 0.5 && nu2 > -1 && nu2 < 0.5)) throw BadInput("--nu1 and --nu2 must lie in (-1, 0.5)");
+  check_elastic(elastic);
   if (!(ax > 0 && ay > 0)) throw BadInput("--area-x and --area-y must be positive");
   if (!(hardness > 0)) throw BadInput("--hardness must be positive");
   const double t = sep.value_or(1.0);
   if (!load && !(t >= -3.0 && t <= 8.0)) throw BadInput("--separation must lie in [-3, 8] (units of sigma_s)");
-  const Prepared p1 = prepare(f1, c1, window, resample, median, smooth);
+  const Prepared p1 = prepare(f1, c1, pre);
   surface::Moments m = surface::isotropic_moments(p1.map);
   std::string f2name = "(smooth flat)";
   if (f2) {
-    const Prepared p2 = prepare(*f2, c2, window, resample, median, smooth);
+    const Prepared p2 = prepare(*f2, c2, pre);
     m = surface::combine(m, surface::isotropic_moments(p2.map));
     f2name = *f2;
   }
   surface::McCoolInput in;
   in.moments = m;
-  in.e_star = surface::composite_modulus(e1, nu1, e2, nu2);
+  in.e_star = surface::composite_modulus(elastic.e1, elastic.nu1, elastic.e2, elastic.nu2);
   in.hardness = hardness;
   in.apparent_area = ax * ay;
   surface::McCoolResult r;
@@ -271,26 +291,21 @@ int contact(const std::vector<std::string>& argv) {
   if (a.help_requested()) { std::fputs(contact_usage, stdout); return tools::exit_ok; }
   const std::string file = a.positional(0, "FILE");
   const int channel = channel_option(a, "--channel");
-  std::vector<double> window;
-  long resample = 0;
-  bool median = false, smooth = false;
-  add_preprocess_options(a, window, resample, median, smooth);
-  const double e1 = a.quantity("--E1", 164e9, inputs::dim::pressure), e2 = a.quantity("--E2", 164e9, inputs::dim::pressure);
-  const double nu1 = a.real("--nu1", 0.23), nu2 = a.real("--nu2", 0.23);
+  const Preprocess pre = preprocess_options(a);
+  const ElasticPair elastic = elastic_options(a);
   const double w = a.quantity("--work-of-adhesion", 0.1, inputs::dim::energy_per_area);
   const long points = a.integer("--points", 200);
   const std::string csv = a.text("--csv", "");
   a.finish();
-  if (!(e1 > 0 && e2 > 0)) throw BadInput("--E1 and --E2 must be positive");
-  if (!(nu1 > -1 && nu1 < 0.5 && nu2 > -1 && nu2 < 0.5)) throw BadInput("--nu1 and --nu2 must lie in (-1, 0.5)");
+  check_elastic(elastic);
   if (!(w >= 0)) throw BadInput("--work-of-adhesion must be >= 0");
   if (points < 2 || points > 100000) throw BadInput("--points must lie in 2 to 100000");
-  const Prepared p = prepare(file, channel, window, resample, median, smooth);
+  const Prepared p = prepare(file, channel, pre);
   const auto summits = surface::find_summits(p.map);
   if (summits.empty()) throw BadInput(file + ": no summits found on the map; nothing to put in contact");
   double top = -1e300;
   for (const auto& s : summits) top = std::max(top, s.height);
-  const double e_star = surface::composite_modulus(e1, nu1, e2, nu2);
+  const double e_star = surface::composite_modulus(elastic.e1, elastic.nu1, elastic.e2, elastic.nu2);
   const double area = p.map.size_x() * p.map.size_y();
   std::ostringstream o;
   o << "h_m,contacts,area_fraction,pressure_hertz_Pa,pressure_dmt_Pa\n";
