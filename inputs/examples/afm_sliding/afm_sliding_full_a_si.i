@@ -155,6 +155,9 @@ begin sierra afm_sliding_full_a_si
         time increment = 1000 ps
         nodal variables = displacement contact_traction contact_status
       end results output fields
+      begin restart output
+        wall time increment = 600 s
+      end restart output
     end presto region main
   end presto procedure press_and_slide
 end sierra afm_sliding_full_a_si

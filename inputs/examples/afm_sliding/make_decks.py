@@ -29,6 +29,12 @@ SPEED = 7.5           # m/s
 LOAD = 500            # nN
 
 
+RESTART_EVERY_10_MIN = """
+      begin restart output
+        wall time increment = 600 s
+      end restart output"""
+
+
 def load_fraction(t):
     """0 -> 1 over LOAD_RAMP, (1 - cos) / 2: no jump in the load rate at either end."""
     return 1.0 if t >= LOAD_RAMP else 0.5 * (1 - math.cos(math.pi * t / LOAD_RAMP))
@@ -41,10 +47,12 @@ def load_fraction(t):
 VARIANTS = {
     "reduced": dict(window="102 153 40 36", track="106 156 28 30", h=1.0, depth=15, start=(120, 170),
                     touch=37.6126, distance=3.0, tip_width=26, tip_height=8, fine_half_width=11,
-                    tip_fine_depth=2, coating_layers=3, hist=2, fields=100),
+                    tip_fine_depth=2, coating_layers=3, hist=2, fields=100, restart=""),
     "full": dict(window="100 100 100 100", track="102.5 100 35 100", h=0.5, depth=40, start=(120, 115),
                  touch=34.3498, distance=70.0, tip_width=30, tip_height=12, fine_half_width=13,
-                 tip_fine_depth=3, coating_layers=6, hist=5, fields=1000),
+                 tip_fine_depth=3, coating_layers=6, hist=5, fields=1000,
+                 # hours long: a restart file every 10 min of wall time (--restart OUT/restart.h5 resumes)
+                 restart=RESTART_EVERY_10_MIN),
 }
 CASES = {
     "a_si": dict(title="(a) silicon on silicon", coating=False, tau=195,
@@ -170,7 +178,8 @@ def main():
                 tip_top="\n".join([fixed_displacement("tip_top", "x"),
                                    prescribed("force", "tip_top", "z", "load", f"-{LOAD} nN"),
                                    prescribed("displacement", "tip_top", "y", "slide")]),
-                outputs=history_output(v["hist"], "substrate_bottom", "tip_top tip_apex") + "\n" + results_output(v["fields"]),
+                outputs=history_output(v["hist"], "substrate_bottom", "tip_top tip_apex") + "\n" + results_output(v["fields"])
+                + v["restart"],
                 contact=contact_definition("tip_on_track", [("tip", "tip_surface"), ("track", "substrate_top")],
                                            f"{v['start'][0]} {v['start'][1]} 0 0 0 1", "junction",
                                            JUNCTION.format(tau=c["tau"])))
