@@ -74,10 +74,10 @@ void keep_symmetry_plane(Mesh& m, const std::string& prefix, const char* face, c
   m.side_sets.erase(prefix + face);
 }
 
-/// Height of the tip's bottom face above the apex at distance r from the axis, m.
-double tip_profile_height(const AsperitySpec& s, double r) {
-  if (s.paraboloid) return r * r / (2.0 * s.radius);  // Hertz's profile
-  return s.radius - std::sqrt(s.radius * s.radius - r * r);
+/// z of the tip's bottom face above the point (x, y), m (the apex at (0, 0, gap)).
+double tip_bottom_z(const AsperitySpec& s, double x, double y) {
+  if (s.paraboloid) return s.gap + (x * x + y * y) / (2.0 * s.radius);  // Hertz's profile
+  return s.gap + s.radius - std::sqrt(s.radius * s.radius - x * x - y * y);
 }
 
 }  // namespace
@@ -119,7 +119,7 @@ Mesh generate_asperity(const AsperitySpec& s) {
   require(s.paraboloid || corner < 0.9 * s.radius, "tip width too large for the radius: the column corners (at " +
                                        std::to_string(corner * 1e9) + " nm from the axis) must stay within 0.9 R; "
                                        "reduce the tip width");
-  const double sag = tip_profile_height(s, corner);
+  const double sag = tip_bottom_z(s, corner, 0.0) - s.gap;
   require(sag < 0.5 * s.tip_height, "tip height too small for the curvature of its bottom face; make it at least " +
                                         std::to_string(2 * sag * 1e9) + " nm");
   require(s.fine_half_width < 0.5 * std::min(s.tip_width, s.substrate_width),
@@ -171,7 +171,7 @@ Mesh generate_asperity(const AsperitySpec& s) {
   const double top = s.gap + s.tip_height;
   for (int n = 0; n < tip.node_count(); ++n) {
     double* x = &tip.coordinates[3 * n];
-    const double zb = s.gap + tip_profile_height(s, std::hypot(x[0], x[1]));
+    const double zb = tip_bottom_z(s, x[0], x[1]);
     // z' in [0, H] -> [zb, top], so fine layers stay fine next to the curved face.
     x[2] = zb + x[2] / s.tip_height * (top - zb);
   }
