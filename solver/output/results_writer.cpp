@@ -42,7 +42,7 @@ class QuietHdf5Errors {
 
 struct FieldSpec {
   std::string name;
-  int components = 0;
+  int components = 0;  // as stored (stored_components): what a resumed run reads back from the file
   friend bool operator==(const FieldSpec&, const FieldSpec&) = default;
 };
 
@@ -184,8 +184,7 @@ bool ResultsWriter::Impl::open_for_resume(hid_t fapl, double resume_time) {
         const int stored = shape[1] == 0 ? 1 : static_cast<int>(shape[1]);
         const std::string path = "/steps/" + name + "/" + kind + "/" + field;
         attributes.push_back({field, is_nodal ? Center::node : Center::cell, stored, path});
-        // A stored 3x3 tensor was written from the 6 Voigt components (stored_components).
-        (is_nodal ? nodal : element).push_back({field, stored == 9 ? 6 : stored});
+        (is_nodal ? nodal : element).push_back({field, stored});
       }
     }
     if (doc.step_count() == 0) {
@@ -219,7 +218,7 @@ void ResultsWriter::Impl::check_fields(std::span<const FieldView> fields, long l
   }
   if (doc.step_count() == 0) return;
   std::vector<FieldSpec> given;
-  for (const auto& f : fields) given.push_back({f.name, f.components});
+  for (const auto& f : fields) given.push_back({f.name, stored_components(f.components)});
   if (!same_fields(spec, given))
     throw std::invalid_argument(where + "list differs from the first step's; every step must write the "
                                         "same fields (names and components)");
@@ -378,8 +377,8 @@ void ResultsWriter::write_step(double time, std::span<const FieldView> nodal,
     }
   }
   if (m.doc.step_count() == 0) {
-    for (const auto& f : nodal) m.nodal_spec.push_back({f.name, f.components});
-    for (const auto& f : element) m.element_spec.push_back({f.name, f.components});
+    for (const auto& f : nodal) m.nodal_spec.push_back({f.name, stored_components(f.components)});
+    for (const auto& f : element) m.element_spec.push_back({f.name, stored_components(f.components)});
   }
   m.doc.add_step(time, attributes);
   m.last_time = time;
