@@ -17,10 +17,12 @@ struct LinearElastic {
 
   /// Stress from the displacement gradient H (row-major 3x3): the stress that multiplies the
   /// reference gradient operator in the internal force, f_iI = S_ij B0_jI. For small strain this is
-  /// the Cauchy stress sigma (symmetric). Returns the strain-energy density W.
-  double force_stress(const double H[9], double S[9]) const {
-    const double tr = H[0] + H[4] + H[8];
-    const double e01 = 0.5 * (H[1] + H[3]), e02 = 0.5 * (H[2] + H[6]), e12 = 0.5 * (H[5] + H[7]);
+  /// the Cauchy stress sigma (symmetric). Returns the strain-energy density W. T = double, or
+  /// double2 for two elements at once (lanes.hpp).
+  template <class T>
+  T force_stress(const T H[9], T S[9]) const {
+    const T tr = H[0] + H[4] + H[8];
+    const T e01 = 0.5 * (H[1] + H[3]), e02 = 0.5 * (H[2] + H[6]), e12 = 0.5 * (H[5] + H[7]);
     S[0] = lambda * tr + 2.0 * mu * H[0];
     S[4] = lambda * tr + 2.0 * mu * H[4];
     S[8] = lambda * tr + 2.0 * mu * H[8];
@@ -29,17 +31,6 @@ struct LinearElastic {
     S[5] = S[7] = 2.0 * mu * e12;
     // W = (1/2) sigma:eps, off-diagonal pairs counted twice.
     return 0.5 * (S[0] * H[0] + S[4] * H[4] + S[8] * H[8]) + S[1] * e01 + S[2] * e02 + S[5] * e12;
-  }
-
-  /// force_stress at N points (struct of arrays H[k][g], as NeoHookean::force_stress_points).
-  template <int N>
-  void force_stress_points(const double (&H)[9][N], double (&S)[9][N], double (&W)[N]) const {
-    for (int g = 0; g < N; ++g) {
-      double h[9], s[9];
-      for (int k = 0; k < 9; ++k) h[k] = H[k][g];
-      W[g] = force_stress(h, s);
-      for (int k = 0; k < 9; ++k) S[k][g] = s[k];
-    }
   }
 
   /// Cauchy stress (Voigt xx yy zz xy yz zx) from H, for output.

@@ -4,7 +4,8 @@
 // is no virtual or variant dispatch per element or quadrature point (CONVENTIONS.md A.4.3).
 //
 // Every model provides:
-//   double force_stress(const double H[9], double S[9]) const;  // S with f_iI = S_iJ B0_JI; returns W (J/m^3)
+//   T force_stress(const T H[9], T S[9]) const;  // S with f_iI = S_iJ B0_JI; returns W (J/m^3);
+//                                                 // T = double or double2 (lanes.hpp)
 //   void cauchy_stress(const double H[9], double voigt[6]) const;
 //   double wave_modulus(const double* H) const;                  // M = lambda + 2 mu (tangent), Pa
 //   double density;                                               // kg/m^3

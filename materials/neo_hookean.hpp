@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "materials/small_matrix.hpp"
-#include "materials/vector_log.hpp"
+#include "materials/lanes.hpp"
 
 namespace tribex::materials {
 
@@ -19,51 +19,23 @@ struct NeoHookean {
   double density = 0.0;
 
   /// First Piola-Kirchhoff stress from the displacement gradient H = F - I (row-major 3x3);
-  /// f_iI = P_iJ B0_JI. Returns W, or NaN when J <= 0 (inverted element; the caller reports it).
-  double force_stress(const double H[9], double P[9]) const {
-    const double F[9] = {1.0 + H[0], H[1], H[2], H[3], 1.0 + H[4], H[5], H[6], H[7], 1.0 + H[8]};
+  /// f_iI = P_iJ B0_JI. Returns W; where J <= 0 (inverted element) ln J is NaN or -inf and W is
+  /// NaN or +inf, not finite: the caller reports the element. No branch, so that T = double2
+  /// (two elements at once, lanes.hpp) runs the same code.
+  template <class T>
+  T force_stress(const T H[9], T P[9]) const {
+    const T F[9] = {1.0 + H[0], H[1], H[2], H[3], 1.0 + H[4], H[5], H[6], H[7], 1.0 + H[8]};
     // cof(F) = J F^{-T}
-    double C[9];
-    const double J = cofactor3(F, C);
-    if (!(J > 0.0)) return std::nan("");
-    const double lnJ = std::log(J);
-    const double a = (lambda * lnJ - mu) / J;  // coefficient of F^{-T} = cof/J
-    double I1 = 0.0;
+    T C[9];
+    const T J = cofactor3(F, C);
+    const T lnJ = lane_log(J);
+    const T a = (lambda * lnJ - mu) / J;  // coefficient of F^{-T} = cof/J
+    T I1{};
     for (int k = 0; k < 9; ++k) {
       P[k] = mu * F[k] + a * C[k];
       I1 += F[k] * F[k];
     }
     return 0.5 * mu * (I1 - 3.0) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
-  }
-
-  /// force_stress at N points at once (struct of arrays: H[k][g] is component k at point g), for
-  /// the fully integrated element: the same formulas, in loops over the points that the compiler
-  /// vectorises, and the N logarithms two at a time (materials/vector_log.hpp). W[g] is NaN or
-  /// +inf where J <= 0 (not finite: the caller reports the inverted element).
-  template <int N>
-  void force_stress_points(const double (&H)[9][N], double (&P)[9][N], double (&W)[N]) const {
-    static_assert(N % 2 == 0, "log_pairs takes the points two at a time");
-    double J[N], lnJ[N];
-    for (int g = 0; g < N; ++g) {
-      const double F0 = 1.0 + H[0][g], F4 = 1.0 + H[4][g], F8 = 1.0 + H[8][g];
-      J[g] = F0 * (F4 * F8 - H[5][g] * H[7][g]) + H[1][g] * (H[5][g] * H[6][g] - H[3][g] * F8) +
-             H[2][g] * (H[3][g] * H[7][g] - F4 * H[6][g]);
-    }
-    log_pairs(J, lnJ, N);
-    for (int g = 0; g < N; ++g) {
-      const double F[9] = {1.0 + H[0][g], H[1][g], H[2][g], H[3][g], 1.0 + H[4][g], H[5][g], H[6][g], H[7][g],
-                           1.0 + H[8][g]};
-      double C[9];
-      cofactor3(F, C);
-      const double a = (lambda * lnJ[g] - mu) / J[g];  // coefficient of F^{-T} = cof/J
-      double I1 = 0.0;
-      for (int k = 0; k < 9; ++k) {
-        P[k][g] = mu * F[k] + a * C[k];
-        I1 += F[k] * F[k];
-      }
-      // J <= 0: ln J is NaN or -inf, and so is W (no branch: the loop vectorises).
-      W[g] = 0.5 * mu * (I1 - 3.0) - mu * lnJ[g] + 0.5 * lambda * lnJ[g] * lnJ[g];
-    }
   }
 
   /// Cauchy stress (Voigt xx yy zz xy yz zx) from H, for output.
@@ -72,7 +44,7 @@ struct NeoHookean {
     const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                      F[2] * (F[3] * F[7] - F[4] * F[6]);
     auto b = [&](int i, int j) { return F[3 * i] * F[3 * j] + F[3 * i + 1] * F[3 * j + 1] + F[3 * i + 2] * F[3 * j + 2]; };
-    const double p = lambda * std::log(J);
+    const double p = lambda * lane_log(J);
     voigt[0] = (mu * (b(0, 0) - 1.0) + p) / J;
     voigt[1] = (mu * (b(1, 1) - 1.0) + p) / J;
     voigt[2] = (mu * (b(2, 2) - 1.0) + p) / J;
@@ -89,7 +61,7 @@ struct NeoHookean {
     const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                      F[2] * (F[3] * F[7] - F[4] * F[6]);
     if (!(J > 0.0)) return lambda + 2.0 * mu;
-    return (lambda + 2.0 * mu - 2.0 * lambda * std::log(J)) / J;
+    return (lambda + 2.0 * mu - 2.0 * lambda * lane_log(J)) / J;
   }
 };
 

@@ -5,7 +5,8 @@
 namespace tribex::materials {
 
 /// Cofactor matrix C of A (C_ij = (-1)^(i+j) minor_ij, so C = det(A) A^{-T}); returns det(A).
-inline double cofactor3(const double A[9], double C[9]) {
+template <class T>
+inline T cofactor3(const T A[9], T C[9]) {
   C[0] = A[4] * A[8] - A[5] * A[7];
   C[1] = A[5] * A[6] - A[3] * A[8];
   C[2] = A[3] * A[7] - A[4] * A[6];

@@ -39,8 +39,8 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
     b.hg_k.resize(n);
     b.hg_c.resize(n);
   } else {
-    b.dNdX.resize(192 * n);
-    b.wdetJ.resize(8 * n);
+    b.inv_jacobian.assign(interleaved_size(b.count, 72), 0.0);
+    b.wdetJ.assign(interleaved_size(b.count, 8), 0.0);
   }
   for (int e = 0; e < b.count; ++e) {
     const int global = b.first_element + e;
@@ -64,7 +64,10 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
       // Q^v = nu rho c sqrt(B.B/3) qdot
       b.hg_c[e] = b.hourglass_viscosity * b.rho_c * std::sqrt(bb / 3.0) / 8.0;
     } else {
-      hex8::gauss_point_gradients(X, &b.dNdX[192 * e], &b.wdetJ[8 * e]);
+      double Q[72], w[8];
+      hex8::gauss_point_inverse_jacobians(X, Q, w);
+      for (int k = 0; k < 72; ++k) b.inv_jacobian[lane_index(e, k, 72)] = Q[k];
+      for (int k = 0; k < 8; ++k) b.wdetJ[lane_index(e, k, 8)] = w[k];
     }
   }
   return b;

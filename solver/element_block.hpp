@@ -34,11 +34,23 @@ struct ElementBlock {
   std::vector<double> hg_k;      // [e] kappa M (B.B)/(24 V): f = hg_k gamma gamma^T u   (N/m)
   std::vector<double> hg_c;      // [e] nu rho c sqrt(B.B/3)/8: f = hg_c gamma gamma^T v  (N s/m)
   // fully integrated only
-  std::vector<double> dNdX;      // [e][8 points][3][8] (1/m)
-  std::vector<double> wdetJ;     // [e][8] (m^3)
+  // fully integrated only, stored for two elements per SSE register (hex8/fully_integrated.hpp):
+  // the pairs' values interleaved, element e's value k at lane_index(e, k, per_element)
+  std::vector<double> inv_jacobian;  // J^{-1}/8 at the 8 points, [3][3][8] per element (1/m), geometry.hpp
+  std::vector<double> wdetJ;         // Gauss weight x det J, [8] per element (m^3)
   // output (filled only on steps that write element fields)
   std::vector<double> stress;    // [e][6] Cauchy, Voigt xx yy zz xy yz zx (Pa)
 };
+
+/// Pair-interleaved storage: value k of element e, for arrays of `per_element` values per element
+/// and an even number of records (an odd count's last element has an unused partner lane).
+inline std::size_t lane_index(int e, int k, int per_element) {
+  return 2 * static_cast<std::size_t>(per_element) * static_cast<std::size_t>(e / 2) + 2 * static_cast<std::size_t>(k) +
+         static_cast<std::size_t>(e % 2);
+}
+inline std::size_t interleaved_size(int count, int per_element) {
+  return 2 * static_cast<std::size_t>(per_element) * static_cast<std::size_t>((count + 1) / 2);
+}
 
 /// Build the reference data of one block. Throws solver::SetupError naming the first element with
 /// a non-positive volume or Jacobian (1-based, as gmsh and ParaView show them + 1).
@@ -54,7 +66,7 @@ struct ElementPassTotals {
 };
 
 /// Internal forces of one block, subtracted from `force` [node][3]:
-///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dNdX_gjI (fully integrated),
+///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dN_I/dX_j(g) (fully integrated),
 /// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (physics.md 1.5),
 /// plus Flanagan-Belytschko hourglass forces (mean quadrature, physics.md 2.2).
 /// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.

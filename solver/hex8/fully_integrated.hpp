@@ -1,87 +1,102 @@
 // SPDX-License-Identifier: MIT
 // Fully integrated hex8: 2x2x2 Gauss quadrature in total-Lagrangian form (physics.md 2.3), no
-// hourglass control needed. At each point g: H = u_iI dNdX_gjI, S = material.force_stress(H),
-// f_iI -= wdetJ_g S_ij dNdX_gjI (the material called once for the 8 points: force_stress_points). Bulk viscosity uses the element-mean operator B0 (as in the
-// mean-quadrature element), which is adequate for the damping role it has here. Locks
-// volumetrically as nu -> 0.5 (use mean quadrature there).
+// hourglass control needed. At each point g: H = u_iI dN_I/dX_j, S = material.force_stress(H),
+// f_iI -= wdetJ_g S_ij dN_I/dX_j, the gradients and forces sum-factorised over the element's
+// edges (sum_factorized.hpp). Elements run two at a time, one per SSE lane (lanes.hpp; an odd
+// last element alone, bitwise as it would in a pair). Bulk viscosity uses the element-mean
+// volumetric rate (B0, as in the mean-quadrature element), which is adequate for the damping role
+// it has here. Locks volumetrically as nu -> 0.5 (use mean quadrature there).
 #pragma once
 
-#include <cmath>
-
+#include "materials/lanes.hpp"
 #include "solver/element_block.hpp"
+#include "solver/hex8/sum_factorized.hpp"
 
 namespace tribex::solver::hex8 {
+
+/// Elements e .. e + lane_count<T> - 1 of the block (e even).
+template <class T, class Material>
+void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
+                            const double* v, double* force, bool want_stress, ElementPassTotals& totals) {
+  using materials::from_lanes;
+  using materials::lane;
+  constexpr int n = materials::lane_count<T>;
+  const int* nodes[n];
+  for (int l = 0; l < n; ++l) nodes[l] = conn + 8 * (blk.first_element + e + l);
+  T ue[24], ve[24];
+  for (int I = 0; I < 8; ++I)
+    for (int i = 0; i < 3; ++i) {
+      ue[8 * i + I] = from_lanes<T>([&](int l) { return u[3 * nodes[l][I] + i]; });
+      ve[8 * i + I] = from_lanes<T>([&](int l) { return v[3 * nodes[l][I] + i]; });
+    }
+  // e is even: lane l of a pair-interleaved record is element e + l (element_block.hpp)
+  T Q[9][8], w[8];
+  for (int k = 0; k < 9; ++k)
+    for (int p = 0; p < 8; ++p) Q[k][p] = materials::load_lanes<T>(&blk.inv_jacobian[lane_index(e, 8 * k + p, 72)]);
+  for (int p = 0; p < 8; ++p) w[p] = materials::load_lanes<T>(&blk.wdetJ[lane_index(e, p, 8)]);
+
+  // Bulk viscosity (physics.md 1.5): a pressure q = -b1 rho c L edot + rho (b2 L)^2 min(edot, 0)^2
+  // from the element's mean volumetric rate edot = B0_iI v_iI / V. Its force -q B0_iI is added
+  // through the point stresses (S - q I at each point), since B0 = sum_p wdetJ_p dN/dX(p).
+  const T V = from_lanes<T>([&](int l) { return blk.volume0[e + l]; });
+  const T L = from_lanes<T>([&](int l) { return blk.length0[e + l]; });
+  T edot{};
+  for (int k = 0; k < 24; ++k) edot += ve[k] * from_lanes<T>([&](int l) { return blk.B0[24 * (e + l) + k]; });
+  edot /= V;
+  const T compression = materials::negative_part(edot);
+  const T q = -blk.linear_bulk_viscosity * blk.rho_c * L * edot +
+              mat.density * (blk.quadratic_bulk_viscosity * L) * (blk.quadratic_bulk_viscosity * L) * compression * compression;
+  const T viscous_power = -q * edot * V;
+
+  T G[3][3][8];
+  reference_gradients_at_points(ue, G);
+  T Sw[9][8];  // wdetJ_p (S - q I) at each point: the weight folded into the 9 stresses, not the 24 forces
+  T energy{}, not_finite{};
+  double stress_mean[n][6] = {};
+  for (int p = 0; p < 8; ++p) {
+    T H[9], S[9];
+    point_gradient(G, Q, p, H);
+    const T W = mat.force_stress(H, S);
+    not_finite += 0.0 * W;  // NaN in a lane once any of its W is NaN or inf (inverted element)
+    energy += w[p] * W;
+    S[0] -= q;
+    S[4] -= q;
+    S[8] -= q;
+    for (int k = 0; k < 9; ++k) Sw[k][p] = w[p] * S[k];
+    if (want_stress)
+      for (int l = 0; l < n; ++l) {
+        double Hl[9], sv[6];
+        for (int k = 0; k < 9; ++k) Hl[k] = lane(H[k], l);
+        mat.cauchy_stress(Hl, sv);
+        for (int k = 0; k < 6; ++k) stress_mean[l][k] += lane(w[p], l) * sv[k];
+      }
+  }
+  T fe[24] = {};
+  add_point_forces(Sw, Q, fe);
+
+  for (int l = 0; l < n; ++l) {
+    if (lane(not_finite, l) != 0.0) {  // NaN
+      if (totals.first_inverted < 0) totals.first_inverted = blk.first_element + e + l;
+      continue;
+    }
+    for (int I = 0; I < 8; ++I)
+      for (int i = 0; i < 3; ++i) force[3 * nodes[l][I] + i] -= lane(fe[8 * i + I], l);
+    totals.strain_energy += lane(energy, l);
+    totals.viscous_power += lane(viscous_power, l);
+    if (want_stress)
+      for (int k = 0; k < 6; ++k) blk.stress[6 * (e + l) + k] = stress_mean[l][k] / blk.volume0[e + l];
+  }
+}
 
 template <class Material>
 ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk, const int* conn,
                                           const double* u, const double* v, double* force,
                                           bool want_stress) {
   ElementPassTotals totals;
-  const double b1 = blk.linear_bulk_viscosity, b2 = blk.quadratic_bulk_viscosity;
-  const double rho = mat.density, rho_c = blk.rho_c;
-  for (int e = 0; e < blk.count; ++e) {
-    const int* nodes = conn + 8 * (blk.first_element + e);
-    double ue[24], ve[24];
-    for (int I = 0; I < 8; ++I)
-      for (int i = 0; i < 3; ++i) {
-        ue[8 * i + I] = u[3 * nodes[I] + i];
-        ve[8 * i + I] = v[3 * nodes[I] + i];
-      }
-    // Three passes over the 8 points, so that the material is evaluated for all of them at once
-    // (force_stress_points: vectorised over the points, the 8 logs of the neo-Hookean model two per
-    // call; tools/bench/README.md): displacement gradients, stresses, then forces.
-    double H[9][8];  // [component][point]
-    for (int g = 0; g < 8; ++g) {
-      const double* D = &blk.dNdX[192 * e + 24 * g];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          double s = 0.0;
-          for (int I = 0; I < 8; ++I) s += ue[8 * i + I] * D[8 * j + I];
-          H[3 * i + j][g] = s;
-        }
-    }
-    double S[9][8], W[8];
-    mat.force_stress_points(H, S, W);
-    bool inverted = false;
-    for (int g = 0; g < 8; ++g) inverted = inverted || !std::isfinite(W[g]);
-    if (inverted) {
-      if (totals.first_inverted < 0) totals.first_inverted = blk.first_element + e;
-      continue;
-    }
-    const double* w = &blk.wdetJ[8 * e];
-    double fe[24] = {};
-    double energy = 0.0;
-    for (int g = 0; g < 8; ++g) {
-      const double* D = &blk.dNdX[192 * e + 24 * g];
-      energy += w[g] * W[g];
-      double Sw[9];
-      for (int k = 0; k < 9; ++k) Sw[k] = w[g] * S[k][g];  // fold the weight into the 9 stresses, not the 24 forces
-      for (int i = 0; i < 3; ++i)
-        for (int I = 0; I < 8; ++I)
-          fe[8 * i + I] += Sw[3 * i] * D[I] + Sw[3 * i + 1] * D[8 + I] + Sw[3 * i + 2] * D[16 + I];
-    }
-    double stress_mean[6] = {};
-    if (want_stress)
-      for (int g = 0; g < 8; ++g) {
-        double Hg[9], sv[6];
-        for (int k = 0; k < 9; ++k) Hg[k] = H[k][g];
-        mat.cauchy_stress(Hg, sv);
-        for (int k = 0; k < 6; ++k) stress_mean[k] += w[g] * sv[k];
-      }
-    const double* B = &blk.B0[24 * e];
-    double edot = 0.0;
-    for (int k = 0; k < 24; ++k) edot += ve[k] * B[k];
-    edot /= blk.volume0[e];
-    const double L = blk.length0[e];
-    const double q = -b1 * rho_c * L * edot + (edot < 0.0 ? rho * (b2 * L) * (b2 * L) * edot * edot : 0.0);
-    for (int k = 0; k < 24; ++k) fe[k] -= q * B[k];
-    for (int I = 0; I < 8; ++I)
-      for (int i = 0; i < 3; ++i) force[3 * nodes[I] + i] -= fe[8 * i + I];
-    totals.strain_energy += energy;
-    totals.viscous_power += -q * edot * blk.volume0[e];
-    if (want_stress)
-      for (int k = 0; k < 6; ++k) blk.stress[6 * e + k] = stress_mean[k] / blk.volume0[e];
-  }
+  int e = 0;
+  for (; e + 1 < blk.count; e += 2)
+    fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, want_stress, totals);
+  if (e < blk.count) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, want_stress, totals);
   return totals;
 }
 

@@ -77,7 +77,7 @@ double characteristic_length(const double B[24], double volume) {
   return volume / std::sqrt(2.0 * bb);
 }
 
-double gauss_point_gradients(const double X[24], double dNdX[192], double wdetJ[8]) {
+double gauss_point_inverse_jacobians(const double X[24], double Q[72], double wdetJ[8]) {
   double volume = 0.0;
   bool inverted = false;
   double dN[24], adj[9];
@@ -87,9 +87,8 @@ double gauss_point_gradients(const double X[24], double dNdX[192], double wdetJ[
     inverted = inverted || !(detJ > 0.0);
     wdetJ[p] = detJ;
     volume += detJ;
-    for (int i = 0; i < 3; ++i)
-      for (int I = 0; I < 8; ++I)
-        dNdX[24 * p + 8 * i + I] = (adj[i] * dN[I] + adj[3 + i] * dN[8 + I] + adj[6 + i] * dN[16 + I]) / detJ;
+    // J^{-1} = adj(J) / det J; the 1/8 of dN/dxi is folded in (sum_factorized.hpp).
+    for (int k = 0; k < 9; ++k) Q[8 * k + p] = adj[k] / (8.0 * detJ);
   }
   return inverted ? -std::abs(volume) : volume;
 }

@@ -6,7 +6,9 @@
 //   X      [8][3]  nodal coordinates, node I at 3I..3I+2, node order of physics.md 2.1 / mesh.hpp
 //   B      [3][8]  B_iI = int_V dN_I/dx_i dV (m^2); component i at 8i..8i+7
 //   gamma  [4][8]  Flanagan-Belytschko orthogonal hourglass vectors gamma_aI (dimensionless)
-//   dNdX   [8][3][8] per Gauss point g: dN_I/dX_i at 24g + 8i + I (1/m)
+//   Q      [3][3][8] at the 8 Gauss points (point p at +/-1/sqrt(3) with node p's signs):
+//                  Q[3j+k][p] = (dxi_j/dX_k)/8 = J^{-1}_jk / 8 (1/m); the 1/8 is the factor of the
+//                  trilinear shape-function derivatives, folded in (sum_factorized.hpp)
 //   wdetJ  [8]     Gauss weight times det J at each point (m^3)
 #pragma once
 
@@ -26,9 +28,9 @@ void hourglass_vectors(const double X[24], const double B[24], double volume, do
 /// a cube of side h); the element's stable step is L_e / c_d (physics.md 1.4).
 double characteristic_length(const double B[24], double volume);
 
-/// Shape-function gradients and weights at the 2x2x2 Gauss points (fully integrated element).
+/// Inverse Jacobians (over 8) and weights at the 2x2x2 Gauss points (fully integrated element).
 /// Returns the volume; a non-positive det J at any point returns it as a negative value.
-double gauss_point_gradients(const double X[24], double dNdX[192], double wdetJ[8]);
+double gauss_point_inverse_jacobians(const double X[24], double Q[72], double wdetJ[8]);
 
 /// Minimum of det J over the 8 corners divided by det J at the centre (1 for any parallelepiped);
 /// <= 0 means an inverted corner.

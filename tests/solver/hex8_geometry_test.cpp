@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/hex8/geometry.hpp"
+#include "solver/hex8/sum_factorized.hpp"
 
 using namespace tribex::solver::hex8;
 
@@ -66,17 +67,96 @@ TEST(Hex8Geometry, HourglassVectorsOrthogonalToLinearFields) {
   }
 }
 
-TEST(Hex8Geometry, GaussGradientsSumToMeanOperator) {
-  double X[24], B[24], dNdX[192], w[8];
+namespace {
+// Direct route for comparison: dN_I/dX_k at Gauss point p from the shape functions and J^{-1}.
+void direct_point_gradients(const double X[24], double dNdX[8][3][8]) {
+  const double s[3][8] = {{-1, 1, 1, -1, -1, 1, 1, -1}, {-1, -1, 1, 1, -1, -1, 1, 1}, {-1, -1, -1, -1, 1, 1, 1, 1}};
+  const double g = 1.0 / std::sqrt(3.0);
+  for (int p = 0; p < 8; ++p) {
+    double dN[3][8], J[3][3] = {};
+    for (int I = 0; I < 8; ++I)
+      for (int d = 0; d < 3; ++d) {
+        dN[d][I] = 0.125 * s[d][I];
+        for (int o = 0; o < 3; ++o)
+          if (o != d) dN[d][I] *= 1.0 + s[o][I] * s[o][p] * g;
+        for (int i = 0; i < 3; ++i) J[i][d] += X[3 * I + i] * dN[d][I];
+      }
+    const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                       J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                       J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+    double Ji[3][3];  // inverse by cofactors
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        Ji[b][a] = (J[(a + 1) % 3][(b + 1) % 3] * J[(a + 2) % 3][(b + 2) % 3] -
+                    J[(a + 1) % 3][(b + 2) % 3] * J[(a + 2) % 3][(b + 1) % 3]) / det;
+    for (int k = 0; k < 3; ++k)
+      for (int I = 0; I < 8; ++I) {
+        dNdX[p][k][I] = 0.0;
+        for (int d = 0; d < 3; ++d) dNdX[p][k][I] += dN[d][I] * Ji[d][k];
+      }
+  }
+}
+}  // namespace
+
+TEST(Hex8Geometry, SumFactorisedGradientsAndForcesMatchTheShapeFunctions) {
+  double X[24], Q[9][8], w[8], dNdX[8][3][8];
+  distorted(X);
+  gauss_point_inverse_jacobians(X, &Q[0][0], w);
+  direct_point_gradients(X, dNdX);
+  // a non-linear nodal field (nm-scale displacements on a 2 nm element)
+  double ue[24];
+  for (int k = 0; k < 24; ++k) ue[k] = 1e-10 * std::sin(1.7 * k + 0.3);
+  double G[3][3][8], H[9][8];
+  reference_gradients_at_points(ue, G);
+  for (int p = 0; p < 8; ++p) {
+    double Hp[9];
+    point_gradient(G, Q, p, Hp);
+    for (int k = 0; k < 9; ++k) H[k][p] = Hp[k];
+  }
+  for (int p = 0; p < 8; ++p)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) {
+        double h = 0.0;
+        for (int I = 0; I < 8; ++I) h += ue[8 * i + I] * dNdX[p][k][I];
+        EXPECT_NEAR(H[3 * i + k][p], h, 1e-14) << "point " << p << " H_" << i << k;
+      }
+  // forces from arbitrary weighted point stresses (Pa m^3 = N m)
+  double Sw[9][8], fe[24] = {};
+  for (int k = 0; k < 9; ++k)
+    for (int p = 0; p < 8; ++p) Sw[k][p] = 1e-18 * std::cos(0.9 * k + 2.1 * p);
+  add_point_forces(Sw, Q, fe);
+  for (int i = 0; i < 3; ++i)
+    for (int I = 0; I < 8; ++I) {
+      double f = 0.0;
+      for (int p = 0; p < 8; ++p)
+        for (int k = 0; k < 3; ++k) f += Sw[3 * i + k][p] * dNdX[p][k][I];
+      EXPECT_NEAR(fe[8 * i + I], f, 1e-14 * 1e-18 / 2e-9) << "f_" << i << " node " << I;
+    }
+}
+
+TEST(Hex8Geometry, GaussPointOperatorsReproduceLinearFieldsAndTheMeanOperator) {
+  double X[24], B[24], Q[9][8], w[8];
   distorted(X);
   const double V = gradient_operator(X, B);
-  const double V2 = gauss_point_gradients(X, dNdX, w);
-  EXPECT_NEAR(V2, V, 1e-13 * V);
-  for (int k = 0; k < 24; ++k) {
-    double s = 0.0;
-    for (int g = 0; g < 8; ++g) s += w[g] * dNdX[24 * g + k];
-    EXPECT_NEAR(s, B[k], 1e-13 * std::pow(V, 2.0 / 3.0));
+  EXPECT_NEAR(gauss_point_inverse_jacobians(X, &Q[0][0], w), V, 1e-13 * V);
+  // patch test: u = A X gives H = A at every point
+  const double A[9] = {1e-3, -2e-3, 5e-4, 3e-3, 2e-3, -1e-3, -4e-4, 7e-4, 1.5e-3};
+  double ue[24];
+  for (int I = 0; I < 8; ++I)
+    for (int i = 0; i < 3; ++i)
+      ue[8 * i + I] = A[3 * i] * X[3 * I] + A[3 * i + 1] * X[3 * I + 1] + A[3 * i + 2] * X[3 * I + 2];
+  double G[3][3][8];
+  reference_gradients_at_points(ue, G);
+  for (int p = 0; p < 8; ++p) {
+    double H[9];
+    point_gradient(G, Q, p, H);
+    for (int k = 0; k < 9; ++k) EXPECT_NEAR(H[k], A[k], 1e-15) << "point " << p << " component " << k;
   }
+  // a unit stress S = I at every point gives f_iI = sum_p w_p dN_I/dX_i = B_iI
+  double Sw[9][8] = {}, fe[24] = {};
+  for (int p = 0; p < 8; ++p) Sw[0][p] = Sw[4][p] = Sw[8][p] = w[p];
+  add_point_forces(Sw, Q, fe);
+  for (int k = 0; k < 24; ++k) EXPECT_NEAR(fe[k], B[k], 1e-13 * std::pow(V, 2.0 / 3.0));
 }
 
 TEST(Hex8Geometry, InvertedElementIsDetected) {

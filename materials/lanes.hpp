@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// One element or two per SSE register. The fully integrated kernel runs the same code for a lone
+// element (T = double) and for a pair (T = double2, GCC's vector extension: + - * / act lane by
+// lane and a double operand is broadcast). The arithmetic is IEEE lane by lane and x86-64-v2 has
+// no fused multiply-add, so an element's forces are bitwise the same alone or in a pair (tested:
+// FullyIntegrated.PairsAndLoneElementsGiveTheSameForces); with lane_log below, for both materials.
+//
+// lane_log: glibc's vector math library (libmvec, `_ZGVbN2v_log`, the symbol GCC itself calls for
+// a vectorised log; glibc manual "Errors in Math Functions": at most 4 ulp), for one lane too, so
+// a result does not depend on the lane an element ran in. Elsewhere: std::log.
+#pragma once
+
+#include <cmath>
+#include <cstring>
+
+#if defined(__x86_64__) && defined(__GLIBC__)
+#include <emmintrin.h>
+extern "C" __m128d _ZGVbN2v_log(__m128d);  // NOLINT(bugprone-reserved-identifier): glibc's ABI name
+#define TRIBEX_HAVE_LIBMVEC_LOG 1
+#endif
+
+namespace tribex::materials {
+
+using double2 = double __attribute__((vector_size(16)));
+
+template <class T>
+inline constexpr int lane_count = 1;
+template <>
+inline constexpr int lane_count<double2> = 2;
+
+inline double lane(double x, int) { return x; }
+inline double lane(double2 x, int l) { return x[l]; }
+
+/// T from its lanes: f(l) for l < lane_count<T>.
+template <class T, class F>
+inline T from_lanes(F&& f) {
+  if constexpr (lane_count<T> == 1)
+    return f(0);
+  else
+    return T{f(0), f(1)};
+}
+
+/// lane_count<T> consecutive doubles from p (a pair-interleaved array's two lanes).
+template <class T>
+inline T load_lanes(const double* p) {
+  T x;
+  std::memcpy(&x, p, sizeof(T));
+  return x;
+}
+
+/// min(x, 0) lane by lane.
+inline double negative_part(double x) { return x < 0.0 ? x : 0.0; }
+inline double2 negative_part(double2 x) { return x < double2{} ? x : double2{}; }
+
+inline double2 lane_log(double2 x) {
+#ifdef TRIBEX_HAVE_LIBMVEC_LOG
+  return reinterpret_cast<double2>(_ZGVbN2v_log(reinterpret_cast<__m128d>(x)));
+#else
+  return double2{std::log(x[0]), std::log(x[1])};
+#endif
+}
+inline double lane_log(double x) {
+#ifdef TRIBEX_HAVE_LIBMVEC_LOG
+  return lane_log(double2{x, x})[0];
+#else
+  return std::log(x);
+#endif
+}
+
+}  // namespace tribex::materials
