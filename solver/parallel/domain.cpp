@@ -305,6 +305,16 @@ Model localize(Model&& global, const std::vector<int>& part) {
     }
     local.pressures.push_back(std::move(q));
   }
+  // Prescribed nodal forces on the owner's copy only: the partial forces of shared nodes are summed
+  // over the ranks, so every copy loading the node would multiply the force.
+  for (const auto& p : global.nodal_forces) {
+    NodalForceLoad q;
+    q.function = p.function;
+    q.scale = p.scale;
+    for (int dof : p.dof)
+      if (const int l = local_of[dof / 3]; l >= 0 && d.owned[l] > 0.0) q.dof.push_back(3 * l + dof % 3);
+    local.nodal_forces.push_back(std::move(q));
+  }
   // Dashpots: per-node coefficients already summed over all faces.
   const auto& gs = global.silent;
   for (std::size_t k = 0; k < gs.node.size(); ++k) {
