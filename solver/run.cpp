@@ -228,7 +228,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
       std::error_code ec;
       fs::create_directories(options.output_directory, ec);
       if (ec) throw SetupError("cannot create output folder " + options.output_directory + ": " + ec.message());
-      log.open((out / "log.txt").string());
+      log.open((out / "log.txt").string(), resume.has_value());
       log.record("# resolved deck (defaults filled in, SI units)\n" + deck.resolved_text + "\n");
     } catch (...) {
       output_error = std::current_exception();
@@ -302,10 +302,17 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     field_schedule.emplace(region.results->time_increment, region.results->step_increment, tc.start_time);
   }
 
+  // Time spent by the earlier segments of a run resumed from restart files (NaN: not recorded,
+  // a restart file of an earlier tribex), so that summary.json can report the whole run's cost.
+  const long first_step = resume ? integrator.step_index() : 0;
+  double earlier_wall_seconds = 0.0, earlier_loop_seconds = 0.0;
   if (resume) {
     history_schedule.set_next(resume->scalar("history_next"));
     if (field_schedule) field_schedule->set_next(resume->scalar("results_next"));
+    earlier_wall_seconds = resume->has("run_wall_seconds") ? resume->scalar("run_wall_seconds") : NAN;
+    earlier_loop_seconds = resume->has("run_loop_seconds") ? resume->scalar("run_loop_seconds") : NAN;
   }
+  Clock::time_point loop_start;
   std::optional<RestartOutput> restart_output;
   if (region.restart) restart_output.emplace(*region.restart, out.string());
   const auto write_restart = [&]() {
@@ -313,6 +320,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     integrator.save_state(archive);
     archive.put("history_next", history_schedule.next());
     archive.put("results_next", field_schedule ? field_schedule->next() : 0.0);
+    archive.put("run_wall_seconds", earlier_wall_seconds + seconds_since(wall_start));
+    archive.put("run_loop_seconds", earlier_loop_seconds + seconds_since(loop_start));
     const std::string file = restart_output->write(archive);
     log.record(format("restart file %s at step %ld, t = %.9g s\n", file.c_str(), integrator.step_index(), integrator.time()));
   };
@@ -330,7 +339,6 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   std::vector<std::vector<double>> packed;  // parallel: this rank's rows of each field (output steps only)
   const bool terminal = root && !options.quiet && isatty(STDERR_FILENO);
   auto last_progress = Clock::now();
-  Clock::time_point loop_start;
   const double span = end_time - tc.start_time;
 
   auto write_outputs = [&]() {
@@ -445,18 +453,25 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   if (results) results->flush();  // collective in a parallel run: every rank gets here
 
   summary.steps = integrator.step_index();
+  summary.first_step = first_step;
+  summary.total_wall_seconds = earlier_wall_seconds + seconds_since(wall_start);
+  summary.total_loop_seconds = earlier_loop_seconds + summary.loop_seconds;
   summary.contact_seconds = integrator.contact_seconds();
   summary.ranks = ranks;
   summary.communication_seconds = model.domain.communication_seconds;
   summary.final_time = integrator.time();
   summary.energy_error = integrator.energies().relative_error();
+  const long steps_run = summary.steps - summary.first_step;  // by this process
   summary.ns_per_element_step =
-      summary.steps > 0 && elements > 0 ? 1e9 * summary.loop_seconds / (double(elements) * double(summary.steps)) : 0.0;
+      steps_run > 0 && elements > 0 ? 1e9 * summary.loop_seconds / (double(elements) * double(steps_run)) : 0.0;
   summary.wall_seconds = seconds_since(wall_start);
   if (root) write_summary_json((out / "summary.json").string(), summary, integrator.energies(), stable0);
   log.say(format("%ld steps to t = %.6g s in %.3g s wall (loop %.3g s, %.1f ns per element per step); energy error %.3e",
-                 summary.steps, summary.final_time, summary.wall_seconds, summary.loop_seconds,
+                 steps_run, summary.final_time, summary.wall_seconds, summary.loop_seconds,
                  summary.ns_per_element_step, summary.energy_error));
+  if (summary.first_step > 0)
+    log.say(format("resumed at step %ld: the whole run, %ld steps, took %.4g s wall (loop %.4g s) over its segments",
+                   summary.first_step, summary.steps, summary.total_wall_seconds, summary.total_loop_seconds));
   log.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out.string().c_str(),
                  results ? ",results.h5,results.xdmf" : ""));
   if (model.contact)

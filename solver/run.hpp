@@ -20,12 +20,15 @@ struct RunOptions {
 struct RunSummary {
   int exit_code = 0;             // 0, 3 (numerical failure) or 130 (interrupted)
   std::string status;            // "normal termination", "numerical failure: ...", "interrupted"
-  long steps = 0;
+  long steps = 0;                 // step index at the end
+  long first_step = 0;            // step index this process started from (> 0 when resumed)
   double final_time = 0.0;
   double energy_error = 0.0;
   double wall_seconds = 0.0;
   double loop_seconds = 0.0;
-  double ns_per_element_step = 0.0;  // loop time / (elements * steps)
+  double ns_per_element_step = 0.0;  // loop time / (elements * (steps - first_step)): this process
+  double total_wall_seconds = 0.0;   // all segments of a resumed run (NaN when an earlier one is unknown)
+  double total_loop_seconds = 0.0;
   double contact_seconds = 0.0;      // part of the loop spent in contact search and enforcement
   int ranks = 1;                     // MPI ranks of the run
   double communication_seconds = 0.0;  // rank 0's loop time in halo exchange, surface gather, energy sums

@@ -28,8 +28,8 @@ RunLog::~RunLog() {
   if (file_) std::fclose(file_);
 }
 
-void RunLog::open(const std::string& path) {
-  file_ = std::fopen(path.c_str(), "w");
+void RunLog::open(const std::string& path, bool append) {
+  file_ = std::fopen(path.c_str(), append ? "a" : "w");
   if (!file_) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
   std::fputs(pending_.c_str(), file_);
   std::fflush(file_);

@@ -15,8 +15,8 @@ class RunLog {
   RunLog(const RunLog&) = delete;
   RunLog& operator=(const RunLog&) = delete;
 
-  /// Opens log.txt (writing what was said so far).
-  void open(const std::string& path);
+  /// Opens log.txt (writing what was said so far); a resumed run appends to the earlier segments' log.
+  void open(const std::string& path, bool append = false);
   /// A line to the terminal (stdout) and the log.
   void say(const std::string& line);
   /// A line to the log only (the resolved deck echo).

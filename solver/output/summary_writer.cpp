@@ -27,6 +27,10 @@ void write_summary_json(const std::string& path, const RunSummary& s, const Ener
   std::fprintf(f, "  \"wall_time_s\": %s,\n  \"loop_time_s\": %s,\n", number(s.wall_seconds).c_str(),
                number(s.loop_seconds).c_str());
   std::fprintf(f, "  \"ns_per_element_step\": %s,\n", number(s.ns_per_element_step).c_str());
+  // A run resumed from a restart file: this process ran steps first_step..steps (the figures above);
+  // the totals add the earlier segments (null when a restart file did not record them).
+  std::fprintf(f, "  \"first_step\": %ld,\n  \"total_wall_time_s\": %s,\n  \"total_loop_time_s\": %s,\n",
+               s.first_step, number(s.total_wall_seconds).c_str(), number(s.total_loop_seconds).c_str());
   std::fprintf(f, "  \"contact_time_s\": %s,\n", number(s.contact_seconds).c_str());
   std::fprintf(f, "  \"ranks\": %d,\n", s.ranks);
   std::fprintf(f, "  \"communication_time_s\": %s,\n", number(s.communication_seconds).c_str());

@@ -39,6 +39,7 @@ struct StateArchive {
                        std::to_string(out.size()) + " (a different mesh or deck?)");
     out = a;
   }
+  bool has(const std::string& name) const { return reals.count(name) > 0 || integers.count(name) > 0; }
   double scalar(const std::string& name) const {
     const auto& a = array(name);
     if (a.size() != 1) throw SetupError("restart file: '" + name + "' is not a scalar");

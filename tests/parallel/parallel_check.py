@@ -11,7 +11,9 @@
       runs DECK uninterrupted, then stopped after STEP (exit 130, restart file) and resumed with
       --restart OUT/restart.h5 into the same folder: history.csv must be byte-identical; where the
       deck writes fields, the resumed results.h5 (continued, not restarted) must hold the same steps
-      with bitwise the same times and datasets, and results.xdmf must be byte-identical.
+      with bitwise the same times and datasets, and results.xdmf must be byte-identical. The resumed
+      summary.json reports its own steps (first_step = STEP, ns/element/step over its steps) and the
+      segments' total wall and loop time; log.txt holds both segments.
   parallel_check.py failure TRIBEX DECK OUT --ranks N --expect-code C --expect TEXT
       runs DECK (meant to fail; not quiet, so that rank 0 prints its log); exit code C, TEXT printed
       exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
@@ -146,6 +148,26 @@ def restart(a):
         print(f"results.xdmf: {'identical' if x == y else 'DIFFERENT'}")
         if x != y:
             sys.exit("FAIL: the resumed results.xdmf differs")
+    # The resumed run's cost: its own steps in summary.json, the segments' time added up, both
+    # segments in log.txt.
+    import json
+    with open(os.path.join(full, "summary.json")) as f:
+        whole = json.load(f)
+    with open(os.path.join(resumed, "summary.json")) as f:
+        second = json.load(f)
+    with open(os.path.join(resumed, "log.txt")) as f:
+        log = f.read()
+    own = second["steps"] - second["first_step"]
+    ns = 1e9 * second["loop_time_s"] / (second["elements"] * own) if own > 0 else 0.0
+    print(f"summary.json: first_step {second['first_step']} (stop {a.stop}), steps {second['steps']} "
+          f"(uninterrupted {whole['steps']}), ns/element/step {second['ns_per_element_step']:.4g} "
+          f"(loop over own steps {ns:.4g}); total wall {second['total_wall_time_s']:.3g} s >= "
+          f"this segment {second['wall_time_s']:.3g} s; log.txt segments {log.count('running ...')}")
+    if (second["first_step"] != a.stop or second["steps"] != whole["steps"]
+            or abs(second["ns_per_element_step"] - ns) > 1e-9 * ns
+            or not second["total_wall_time_s"] > second["wall_time_s"]
+            or not second["total_loop_time_s"] > second["loop_time_s"] or log.count("running ...") != 2):
+        sys.exit("FAIL: summary.json or log.txt of the resumed run")
     print("PASS")
 
 

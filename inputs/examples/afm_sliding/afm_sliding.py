@@ -64,7 +64,13 @@ def check_case(folder, label, tau):
     F, cap, worst, A, P, base_y = w["F"], w["capacity"], w["worst_row"], w["area"], w["P"], w["base"]
     a_fe = math.sqrt(A / math.pi)
     print(f"{label}: {summary['elements']} hex8, {summary['steps']} steps, {summary['wall_time_s']:.1f} s wall, "
-          f"{summary['ns_per_element_step']:.0f} ns/element/step (wall times are noisy on a shared machine)")
+          f"{summary['ns_per_element_step']:.0f} ns/element/step on {summary['ranks']} rank(s) "
+          "(wall times are noisy on a shared machine)")
+    if summary.get("first_step", 0) > 0:  # resumed from restart files: the figures above are the last segment's
+        total = summary["total_wall_time_s"]
+        print(f"  resumed at step {summary['first_step']}: the whole run took "
+              + (f"{total:.0f} s wall over its segments" if total is not None else "an unrecorded time (an earlier "
+                 "segment's restart file did not record it: see log.txt)"))
     print(f"  hold: P = {P_hold * 1e9:.2f} nN (load {LOAD * 1e9:.0f} nN, tolerance 2 %), max KE/IE {ke_ie:.2e} (limit 1 %)")
     print(f"  sliding {STEADY_FROM * 1e9:g}-{steady[-1]['tip_top_displacement_y'] * 1e9:.2f} nm ({len(steady)} rows): "
           f"F = {F * 1e9:.3f} nN, tau* A_FE = {cap * 1e9:.3f} nN, F / (tau* A) - 1 = {F / cap - 1:+.3%} (tolerance 1 %), "
