@@ -3,7 +3,7 @@
 // element (T = double) and for a pair (T = double2, GCC's vector extension: + - * / act lane by
 // lane and a double operand is broadcast). The arithmetic is IEEE lane by lane and x86-64-v2 has
 // no fused multiply-add, so an element's forces are bitwise the same alone or in a pair (tested:
-// FullyIntegrated.PairsAndLoneElementsGiveTheSameForces); with lane_log below, for both materials.
+// LanesTest.PairsAndLoneElementsGiveTheSameForces); with lane_log below, for both materials.
 //
 // lane_log: glibc's vector math library (libmvec, `_ZGVbN2v_log`, the symbol GCC itself calls for
 // a vectorised log; glibc manual "Errors in Math Functions": at most 4 ulp), for one lane too, so
