@@ -44,7 +44,7 @@ struct NeoHookean {
     const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                      F[2] * (F[3] * F[7] - F[4] * F[6]);
     auto b = [&](int i, int j) { return F[3 * i] * F[3 * j] + F[3 * i + 1] * F[3 * j + 1] + F[3 * i + 2] * F[3 * j + 2]; };
-    const double p = lambda * lane_log(J);
+    const double p = lambda * std::log(J);
     voigt[0] = (mu * (b(0, 0) - 1.0) + p) / J;
     voigt[1] = (mu * (b(1, 1) - 1.0) + p) / J;
     voigt[2] = (mu * (b(2, 2) - 1.0) + p) / J;
@@ -61,7 +61,7 @@ struct NeoHookean {
     const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                      F[2] * (F[3] * F[7] - F[4] * F[6]);
     if (!(J > 0.0)) return lambda + 2.0 * mu;
-    return (lambda + 2.0 * mu - 2.0 * lambda * lane_log(J)) / J;
+    return (lambda + 2.0 * mu - 2.0 * lambda * std::log(J)) / J;
   }
 };
 
