@@ -469,9 +469,12 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   log.say(format("%ld steps to t = %.6g s in %.3g s wall (loop %.3g s, %.1f ns per element per step); energy error %.3e",
                  steps_run, summary.final_time, summary.wall_seconds, summary.loop_seconds,
                  summary.ns_per_element_step, summary.energy_error));
-  if (summary.first_step > 0)
+  if (summary.first_step > 0 && std::isfinite(summary.total_wall_seconds))
     log.say(format("resumed at step %ld: the whole run, %ld steps, took %.4g s wall (loop %.4g s) over its segments",
                    summary.first_step, summary.steps, summary.total_wall_seconds, summary.total_loop_seconds));
+  else if (summary.first_step > 0)
+    log.say(format("resumed at step %ld: the whole run's time is unknown (an earlier segment's restart file did not "
+                   "record it; add the segments' wall times in log.txt)", summary.first_step));
   log.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out.string().c_str(),
                  results ? ",results.h5,results.xdmf" : ""));
   if (model.contact)
