@@ -84,4 +84,13 @@ ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivi
       block.material);
 }
 
+std::vector<double> select_interleaved(const std::vector<double>& from, std::span<const int> elements, int per_element) {
+  if (from.empty()) return {};
+  std::vector<double> to(interleaved_size(static_cast<int>(elements.size()), per_element), 0.0);
+  for (std::size_t slot = 0; slot < elements.size(); ++slot)
+    for (int k = 0; k < per_element; ++k)
+      to[lane_index(static_cast<int>(slot), k, per_element)] = from[lane_index(elements[slot], k, per_element)];
+  return to;
+}
+
 }  // namespace tribex::solver

@@ -5,6 +5,7 @@
 // [0, count); the global element is first_element + e.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,9 @@ inline std::size_t lane_index(int e, int k, int per_element) {
 inline std::size_t interleaved_size(int count, int per_element) {
   return 2 * static_cast<std::size_t>(per_element) * static_cast<std::size_t>((count + 1) / 2);
 }
+/// The pair-interleaved records of `elements` (indices into `from`), paired anew in that order:
+/// a rank's share of a block, or one element on its own. Empty stays empty (no such data).
+std::vector<double> select_interleaved(const std::vector<double>& from, std::span<const int> elements, int per_element);
 
 /// Build the reference data of one block. Throws solver::SetupError naming the first element with
 /// a non-positive volume or Jacobian (1-based, as gmsh and ParaView show them + 1).

@@ -260,15 +260,8 @@ Model localize(Model&& global, const std::vector<int>& part) {
     take(g.gamma, blk.gamma);
     take(g.hg_k, blk.hg_k);
     take(g.hg_c, blk.hg_c);
-    auto take_interleaved = [&](const std::vector<double>& from, std::vector<double>& to, int per_element) {
-      if (from.empty()) return;
-      to.assign(interleaved_size(static_cast<int>(members.size()), per_element), 0.0);
-      for (std::size_t slot = 0; slot < members.size(); ++slot)
-        for (int k = 0; k < per_element; ++k)
-          to[lane_index(static_cast<int>(slot), k, per_element)] = from[lane_index(members[slot], k, per_element)];
-    };
-    take_interleaved(g.inv_jacobian, blk.inv_jacobian, 72);
-    take_interleaved(g.wdetJ, blk.wdetJ, 8);
+    blk.inv_jacobian = select_interleaved(g.inv_jacobian, members, 72);
+    blk.wdetJ = select_interleaved(g.wdetJ, members, 8);
     take(g.stress, blk.stress);
     m.blocks.push_back({blk.name, blk.first_element, blk.count});
     local.blocks.push_back(std::move(blk));

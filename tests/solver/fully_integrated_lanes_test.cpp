@@ -42,12 +42,9 @@ solver::ElementBlock single_element(const solver::ElementBlock& blk, int e) {
   auto slice = [&](std::vector<double>& a, std::size_t stride) {
     a.assign(a.begin() + static_cast<std::ptrdiff_t>(stride * e), a.begin() + static_cast<std::ptrdiff_t>(stride * (e + 1)));
   };
-  auto lone = [&](const std::vector<double>& from, std::vector<double>& to, int per_element) {
-    to.assign(solver::interleaved_size(1, per_element), 0.0);
-    for (int k = 0; k < per_element; ++k) to[solver::lane_index(0, k, per_element)] = from[solver::lane_index(e, k, per_element)];
-  };
-  lone(blk.inv_jacobian, one.inv_jacobian, 72);
-  lone(blk.wdetJ, one.wdetJ, 8);
+  const int element[1] = {e};
+  one.inv_jacobian = solver::select_interleaved(blk.inv_jacobian, element, 72);
+  one.wdetJ = solver::select_interleaved(blk.wdetJ, element, 8);
   slice(one.B0, 24);
   slice(one.volume0, 1);
   slice(one.length0, 1);
