@@ -196,22 +196,14 @@ void CentralDifference::update_velocity() {
   double* v = v_.data();
   const double* force = f_.data();
   const double* inverse_mass = inverse_mass_.data();
-  if (cm > 0.0) {
-    // (m/h + c m/2) v+ = (m/h - c m/2) v- + f
-    const double keep = (1.0 - 0.5 * cm * h) / (1.0 + 0.5 * cm * h), gain = h / (1.0 + 0.5 * cm * h);
-    for (std::size_t n = 0; n < nodes; ++n) {
-      const double g = gain * inverse_mass[n];
-      v[3 * n] = keep * v[3 * n] + g * force[3 * n];
-      v[3 * n + 1] = keep * v[3 * n + 1] + g * force[3 * n + 1];
-      v[3 * n + 2] = keep * v[3 * n + 2] + g * force[3 * n + 2];
-    }
-  } else {
-    for (std::size_t n = 0; n < nodes; ++n) {
-      const double g = h * inverse_mass[n];
-      v[3 * n] += g * force[3 * n];
-      v[3 * n + 1] += g * force[3 * n + 1];
-      v[3 * n + 2] += g * force[3 * n + 2];
-    }
+  // (m/h + c m/2) v+ = (m/h - c m/2) v- + f; without damping keep = 1 and gain = h exactly, so
+  // one loop serves both (1 * v is exact: the same bits as v += h f / m).
+  const double keep = (1.0 - 0.5 * cm * h) / (1.0 + 0.5 * cm * h), gain = h / (1.0 + 0.5 * cm * h);
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const double g = gain * inverse_mass[n];
+    v[3 * n] = keep * v[3 * n] + g * force[3 * n];
+    v[3 * n + 1] = keep * v[3 * n + 1] + g * force[3 * n + 1];
+    v[3 * n + 2] = keep * v[3 * n + 2] + g * force[3 * n + 2];
   }
   // Silent-boundary nodes: semi-implicit dashpots, normal and tangential parts separately.
   const auto& sb = model_.silent;
