@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "solver/integrators/central_difference.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -15,6 +16,11 @@ std::string where_and_when(long step, double t) {
   char buf[96];
   std::snprintf(buf, sizeof buf, " at step %ld, t = %.6g s", step, t);
   return buf;
+}
+
+// Reported v^n = (v^{n-1/2} + v^{n+1/2})/2; at n = 0, v^0 = v^{-1/2}.
+inline double velocity_at_n(bool first_step, double v_minus, double v_plus) {
+  return first_step ? v_minus : 0.5 * (v_minus + v_plus);
 }
 
 }  // namespace
@@ -53,6 +59,22 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   for (std::size_t n = 0; n < model.mass.size(); ++n) inverse_mass_[n] = 1.0 / model.mass[n];
   owned_mass_.resize(model.mass.size());
   for (std::size_t n = 0; n < model.mass.size(); ++n) owned_mass_[n] = model.domain.owned[n] * model.mass[n];
+  for (const auto& load : model.nodal_forces) loaded_dofs_.insert(loaded_dofs_.end(), load.dof.begin(), load.dof.end());
+  for (const auto& load : model.pressures)
+    for (int node : load.face_nodes)
+      for (int i = 0; i < 3; ++i) loaded_dofs_.push_back(3 * node + i);
+  std::sort(loaded_dofs_.begin(), loaded_dofs_.end());
+  loaded_dofs_.erase(std::unique(loaded_dofs_.begin(), loaded_dofs_.end()), loaded_dofs_.end());
+}
+
+void CentralDifference::fill_reported_fields() const {
+  if (reported_current_) return;
+  const double inverse_h = dt_n_ > 0.0 ? 1.0 / dt_n_ : 0.0;  // before the first update v^{+} = v^{-}: a = 0
+  for (std::size_t d = 0; d < v_.size(); ++d) {
+    v_n_[d] = velocity_at_n(reported_first_step_, v_prev_[d], v_[d]);
+    a_[d] = (v_[d] - v_prev_[d]) * inverse_h;
+  }
+  reported_current_ = true;
 }
 
 void CentralDifference::raise_pending_failure() {
@@ -100,7 +122,6 @@ void CentralDifference::init() {
     if (kind == Kind::fixed) v_[dof] = 0.0;
     if (kind == Kind::velocity) v_[dof] = model_.constraints.scale[k] * model_.functions[model_.constraints.function[k]](time_);
   }
-  v_n_ = v_;
   v_prev_ = v_;
   double ke = 0.0;
   for (std::size_t d = 0; d < v_.size(); ++d) ke += 0.5 * owned_mass_[d / 3] * v_[d] * v_[d];
@@ -116,9 +137,10 @@ void CentralDifference::init() {
 
 void CentralDifference::compute_forces(double t, bool want_stress) {
   std::fill(f_.begin(), f_.end(), 0.0);
-  // Applied pressures (follower loads on the current configuration) and prescribed nodal forces.
-  if (!model_.pressures.empty() || !model_.nodal_forces.empty()) {
-    std::fill(f_ext_.begin(), f_ext_.end(), 0.0);
+  // Applied pressures (follower loads on the current configuration) and prescribed nodal forces;
+  // f_ext is zero off the loaded dofs, so only those are cleared and copied.
+  if (!loaded_dofs_.empty()) {
+    for (int d : loaded_dofs_) f_ext_[d] = 0.0;
     for (const auto& load : model_.nodal_forces) {
       const double f = load.scale * model_.functions[load.function](t);
       for (int dof : load.dof) f_ext_[dof] += f;
@@ -140,7 +162,7 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
           for (int i = 0; i < 3; ++i) f_ext_[3 * n[I] + i] -= 0.25 * p * a[i];
       }
     }
-    f_ = f_ext_;
+    for (int d : loaded_dofs_) f_[d] = f_ext_[d];
   }
   double strain = 0.0, hourglass = 0.0;
   viscous_power_ = 0.0;
@@ -190,10 +212,15 @@ void CentralDifference::update_velocity() {
   dt_n_ = step_ == 0 ? 0.5 * dt_half_ : 0.5 * (dt_prev_half_ + dt_half_);
   const double h = dt_n_;
   const double cm = model_.mass_damping;
-  v_prev_ = v_;
+  // v^{n-1/2} becomes the previous half-step velocity by a swap (no copy); every dof of v_ is
+  // written below. The reported v^n and a^n are filled when asked for (fill_reported_fields).
+  v_prev_.swap(v_);
+  reported_first_step_ = step_ == 0;
+  reported_current_ = false;
   // Per node, not per dof: no d / 3 in the loop.
   const std::size_t nodes = inverse_mass_.size();
-  double* v = v_.data();
+  const double* v_minus = v_prev_.data();
+  double* v_plus = v_.data();
   const double* force = f_.data();
   const double* inverse_mass = inverse_mass_.data();
   // (m/h + c m/2) v+ = (m/h - c m/2) v- + f; without damping keep = 1 and gain = h exactly, so
@@ -201,9 +228,9 @@ void CentralDifference::update_velocity() {
   const double keep = (1.0 - 0.5 * cm * h) / (1.0 + 0.5 * cm * h), gain = h / (1.0 + 0.5 * cm * h);
   for (std::size_t n = 0; n < nodes; ++n) {
     const double g = gain * inverse_mass[n];
-    v[3 * n] = keep * v[3 * n] + g * force[3 * n];
-    v[3 * n + 1] = keep * v[3 * n + 1] + g * force[3 * n + 1];
-    v[3 * n + 2] = keep * v[3 * n + 2] + g * force[3 * n + 2];
+    v_plus[3 * n] = keep * v_minus[3 * n] + g * force[3 * n];
+    v_plus[3 * n + 1] = keep * v_minus[3 * n + 1] + g * force[3 * n + 1];
+    v_plus[3 * n + 2] = keep * v_minus[3 * n + 2] + g * force[3 * n + 2];
   }
   // Silent-boundary nodes: semi-implicit dashpots, normal and tangential parts separately.
   const auto& sb = model_.silent;
@@ -263,24 +290,23 @@ void CentralDifference::account_time_n() {
   double ke = 0.0;
   const double h = dt_n_;
   // Sums over nodes count each node once, on the rank that owns it (owned_mass_ is 0 elsewhere).
-  // Per node, not per dof: no d / 3, d % 3 or division in the loop.
-  const double inverse_h = 1.0 / h;
-  const bool first_step = step_ == 0;
+  // One pass over the nodes for every all-node sum (kinetic energy, momentum, mass damping), per
+  // node, not per dof (no d / 3, d % 3); v^n in registers (velocity_at_n), no array written.
+  const bool first_step = reported_first_step_;
   const std::size_t nodes = owned_mass_.size();
   const double* v_minus = v_prev_.data();
   const double* v_plus = v_.data();
   const double* mass = owned_mass_.data();
-  double* vn = v_n_.data();
-  double* a = a_.data();
   double p[3] = {0.0, 0.0, 0.0};
+  double damp_left = 0.0, damp_right = 0.0;
   for (std::size_t n = 0; n < nodes; ++n) {
     const double m = mass[n];
     for (std::size_t d = 3 * n, i = 0; i < 3; ++d, ++i) {
-      // Reported v^n = (v^{n-1/2} + v^{n+1/2})/2; at n = 0, v^0 = v^{-1/2}.
-      vn[d] = first_step ? v_minus[d] : 0.5 * (v_minus[d] + v_plus[d]);
-      a[d] = (v_plus[d] - v_minus[d]) * inverse_h;
-      p[i] += m * vn[d];
+      const double vn = velocity_at_n(first_step, v_minus[d], v_plus[d]);
+      p[i] += m * vn;
       ke += 0.5 * m * v_minus[d] * v_plus[d];
+      damp_left += m * vn * v_minus[d];
+      damp_right += m * vn * v_plus[d];
     }
   }
   for (int i = 0; i < 3; ++i) momentum_[i] = p[i];
@@ -295,11 +321,11 @@ void CentralDifference::account_time_n() {
     power_left += owned[dof / 3] * reaction_[dof] * v_prev_[dof];
     power_right += owned[dof / 3] * reaction_[dof] * v_[dof];
   }
-  if (!model_.pressures.empty() || !model_.nodal_forces.empty())
-    for (std::size_t d = 0; d < v_.size(); ++d) {
-      power_left += f_ext_[d] * v_prev_[d];
-      power_right += f_ext_[d] * v_[d];
-    }
+  // f_ext is zero off the loaded dofs: summing over them alone gives the same bits.
+  for (int d : loaded_dofs_) {
+    power_left += f_ext_[d] * v_prev_[d];
+    power_right += f_ext_[d] * v_[d];
+  }
 
   // Contact: the energy held or dissipated by the interface is minus the work of the contact
   // forces on the bodies, in the same pairing.
@@ -327,9 +353,10 @@ void CentralDifference::account_time_n() {
   for (std::size_t k = 0; k < sb.node.size(); ++k) {
     const int node = sb.node[k];
     const double* nv = &sb.normal[3 * k];
-    const double* vb = &v_n_[3 * node];
     const double* vl = &v_prev_[3 * node];
     const double* vr = &v_[3 * node];
+    const double vb[3] = {velocity_at_n(first_step, vl[0], vr[0]), velocity_at_n(first_step, vl[1], vr[1]),
+                          velocity_at_n(first_step, vl[2], vr[2])};
     const double bn = vb[0] * nv[0] + vb[1] * nv[1] + vb[2] * nv[2];
     const double ln = vl[0] * nv[0] + vl[1] * nv[1] + vl[2] * nv[2];
     const double rn = vr[0] * nv[0] + vr[1] * nv[1] + vr[2] * nv[2];
@@ -337,14 +364,6 @@ void CentralDifference::account_time_n() {
     const double br = vb[0] * vr[0] + vb[1] * vr[1] + vb[2] * vr[2];
     silent_left += owned[node] * (sb.c_normal[k] * bn * ln + sb.c_tangential[k] * (bl - bn * ln));
     silent_right += owned[node] * (sb.c_normal[k] * bn * rn + sb.c_tangential[k] * (br - bn * rn));
-  }
-  double damp_left = 0.0, damp_right = 0.0;
-  if (model_.mass_damping > 0.0) {
-    for (std::size_t n = 0; n < nodes; ++n)
-      for (std::size_t d = 3 * n; d < 3 * n + 3; ++d) {
-        damp_left += mass[n] * vn[d] * v_minus[d];
-        damp_right += mass[n] * vn[d] * v_plus[d];
-      }
   }
 
   // One reduction over the ranks for every sum of this step (no-op on one rank).

@@ -64,8 +64,8 @@ class CentralDifference {
   double next_dt() const { return dt_half_; }                 // dt^{n+1/2}
   const std::vector<double>& displacement() const { return u_; }
   const std::vector<double>& velocity_half() const { return v_; }  // v^{n+1/2}
-  const std::vector<double>& velocity() const { return v_n_; }     // v^n
-  const std::vector<double>& acceleration() const { return a_; }   // (v^{n+1/2} - v^{n-1/2}) / dt^n
+  const std::vector<double>& velocity() const { fill_reported_fields(); return v_n_; }    // v^n
+  const std::vector<double>& acceleration() const { fill_reported_fields(); return a_; }  // (v^{n+1/2} - v^{n-1/2}) / dt^n
   const std::vector<double>& force() const { return f_; }          // f^n, internal + applied loads
   const std::vector<double>& reaction() const { return reaction_; }  // R^n at constrained dofs, else 0
   const Energies& energies() const { return energies_; }
@@ -83,6 +83,9 @@ class CentralDifference {
   void update_velocity();
   void apply_constraints();
   void account_time_n();
+  /// v^n and a^n from v^{n-1/2} and v^{n+1/2}, once per velocity update and only when asked for
+  /// (output steps, restart files): the step loop itself needs v^n only in registers.
+  void fill_reported_fields() const;
   double choose_dt();
   /// Parallel runs: a rank that met a numerical failure keeps stepping to the next collective
   /// point; there every rank learns of it and throws, the message coming from the lowest failing
@@ -97,7 +100,11 @@ class CentralDifference {
   long step_ = 0;
   double time_ = 0.0;
   double dt_n_ = 0.0, dt_half_ = 0.0, dt_prev_half_ = 0.0;
-  std::vector<double> u_, v_, v_prev_, v_n_, a_, f_, f_ext_, reaction_;
+  std::vector<double> u_, v_, v_prev_, f_, f_ext_, reaction_;
+  mutable std::vector<double> v_n_, a_;      // reported v^n, a^n (fill_reported_fields)
+  mutable bool reported_current_ = false;    // v_n_, a_ belong to the current velocity update
+  bool reported_first_step_ = true;          // that update was step 0's (v^0 = v^{-1/2})
+  std::vector<int> loaded_dofs_;             // dofs that nodal forces or pressures load, ascending
   std::vector<double> inverse_mass_;
   std::vector<double> owned_mass_;  // [local node] mass where this rank owns the node, else 0 (energy sums)
   std::string pending_failure_;     // a numerical failure met on this rank, raised collectively

@@ -89,6 +89,7 @@ void CentralDifference::save_state(StateArchive& a) const {
   a.put("u", u_);
   a.put("v_half", v_);
   a.put("v_prev_half", v_prev_);
+  fill_reported_fields();
   a.put("v_n", v_n_);
   a.put("acceleration", a_);
   a.put("force", f_);
@@ -145,6 +146,7 @@ void CentralDifference::restore_state(const StateArchive& a) {
   a.get("v_prev_half", v_prev_);
   a.get("v_n", v_n_);
   a.get("acceleration", a_);
+  reported_current_ = true;  // v_n and acceleration as reported for v_half's update (no refill)
   a.get("force", f_);
   a.get("external_force", f_ext_);
   a.get("reaction", reaction_);
