@@ -425,6 +425,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   };
 
   const std::function<void()> on_time_n = write_outputs;  // built once: no allocation per step
+  const double contact_seconds_before = integrator.contact_seconds();  // earlier segments' (restart file)
   SignalGuard signals;
   log.say("running ...");
   loop_start = Clock::now();
@@ -478,8 +479,9 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   log.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out.string().c_str(),
                  results ? ",results.h5,results.xdmf" : ""));
   if (model.contact)
-    log.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", summary.contact_seconds,
-                   summary.loop_seconds > 0 ? 100.0 * summary.contact_seconds / summary.loop_seconds : 0.0,
+    log.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches",
+                   summary.contact_seconds - contact_seconds_before,
+                   summary.loop_seconds > 0 ? 100.0 * (summary.contact_seconds - contact_seconds_before) / summary.loop_seconds : 0.0,
                    model.contact->total_searches()));
   if (ranks > 1)
     log.say(format("parallel: %d ranks; rank 0 spent %.3g s of the loop (%.1f %%) in communication", ranks,

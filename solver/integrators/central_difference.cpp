@@ -212,7 +212,7 @@ void CentralDifference::update_velocity() {
   dt_n_ = step_ == 0 ? 0.5 * dt_half_ : 0.5 * (dt_prev_half_ + dt_half_);
   const double h = dt_n_;
   const double cm = model_.mass_damping;
-  // v^{n-1/2} becomes the previous half-step velocity by a swap (no copy); every dof of v_ is
+  // The last half-step velocity moves to v_prev_ by a swap (no copy); every dof of v_ is
   // written below. The reported v^n and a^n are filled when asked for (fill_reported_fields).
   v_prev_.swap(v_);
   reported_first_step_ = step_ == 0;
