@@ -17,7 +17,7 @@ from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFun
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("xdmf", help="results.xdmf written by tribex (any path; made absolute)")
     p.add_argument("field", help="field to colour by")
     p.add_argument("png", help="output PNG")

@@ -22,7 +22,7 @@ import numpy as np
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("output")
     a = p.parse_args()
     rows = list(csv.DictReader(open(f"{a.output}/history.csv")))

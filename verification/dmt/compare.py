@@ -32,7 +32,7 @@ ESTAR = effective_modulus(E, NU)
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("output")
     p.add_argument("--element-size", type=float, required=True, help="nm")
     p.add_argument("--work-of-adhesion", type=float, default=0.05, help="J/m^2")

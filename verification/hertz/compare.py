@@ -34,7 +34,7 @@ ESTAR = effective_modulus(E, NU)
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("output", help="the run's output folder")
     p.add_argument("--element-size", type=float, required=True, help="element size at the contact, nm")
     p.add_argument("--tolerance", type=float, default=0.03)

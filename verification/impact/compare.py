@@ -16,7 +16,7 @@ from history_checks import pyplot, read_history, save_figure  # noqa: E402
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("history")
     p.add_argument("--plot")
     a = p.parse_args()

@@ -20,7 +20,7 @@ BACKWARD = (80e-12, 120e-12)
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("history")
     ap.add_argument("--plot", help="PNG: friction force and tau* x area versus sliding distance")
     a = ap.parse_args()

@@ -46,7 +46,7 @@ def gw(d):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("history")
     ap.add_argument("--plot", help="PNG: apparent pressure against d (FE and GW), friction against time")
     a = ap.parse_args()

@@ -47,7 +47,7 @@ def direct_sum(pop, d):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("history")
     ap.add_argument("--plot")
     a = ap.parse_args()

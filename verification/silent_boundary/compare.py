@@ -16,7 +16,7 @@ from history_checks import pyplot, read_history, save_figure  # noqa: E402
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("history")
     p.add_argument("--case", required=True, help="p_silent, p_half, p_fixed, s_silent or s_fixed")
     p.add_argument("--plot", help="write a PNG of the energies against time")

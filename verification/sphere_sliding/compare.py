@@ -37,7 +37,7 @@ def dmt_radius(P):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("output")
     ap.add_argument("--window", type=float, nargs=2, required=True, metavar=("S0", "S1"),
                     help="steady window in sliding distance, nm")

@@ -22,7 +22,7 @@ L, A, V0, T_RAMP = 100e-9, 1e-18, 1.0, 1e-12
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("history")
     p.add_argument("--plot")
     a = p.parse_args()

@@ -19,7 +19,8 @@ friction, the FE contact radius sqrt(A/pi) and the DMT radius of a 50 nm sphere 
 load (a reference only for case (a): the AFM surface is curved and tilted under the tip).
 
 usage: afm_sliding.py [--tribex build/bin/tribex] [--variant reduced|full] [--out DIR] [--plot PNG]
-                      [--no-run]   (--no-run: check outputs already in DIR/<deck>_output)
+                      [--no-run] [--case a_si|b_sam]
+  (--no-run: check outputs already in DIR/<deck>_output; --case: only that case)
 """
 import argparse
 import json
@@ -91,7 +92,7 @@ def check_case(folder, label, tau):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--tribex", default="build/bin/tribex")
     ap.add_argument("--variant", choices=["reduced", "full"], default="reduced")
     ap.add_argument("--out", default="afm_sliding_output")

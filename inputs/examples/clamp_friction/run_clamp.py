@@ -101,7 +101,7 @@ def run_load(tribex, deck_text, load, out):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--tribex", default=os.path.join(ROOT, "build", "bin", "tribex"))
     ap.add_argument("--out", default="clamp_friction_output")
     ap.add_argument("--reduced", action="store_true", help="CI form: 4 loads (10 uN - 300 uN)")
