@@ -478,11 +478,12 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                    "record it; add the segments' wall times in log.txt)", summary.first_step));
   log.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out.string().c_str(),
                  results ? ",results.h5,results.xdmf" : ""));
-  if (model.contact)
-    log.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches",
-                   summary.contact_seconds - contact_seconds_before,
-                   summary.loop_seconds > 0 ? 100.0 * (summary.contact_seconds - contact_seconds_before) / summary.loop_seconds : 0.0,
+  if (model.contact) {
+    const double segment_contact_seconds = summary.contact_seconds - contact_seconds_before;
+    log.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", segment_contact_seconds,
+                   summary.loop_seconds > 0 ? 100.0 * segment_contact_seconds / summary.loop_seconds : 0.0,
                    model.contact->total_searches()));
+  }
   if (ranks > 1)
     log.say(format("parallel: %d ranks; rank 0 spent %.3g s of the loop (%.1f %%) in communication", ranks,
                    summary.communication_seconds,
