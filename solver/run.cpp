@@ -491,7 +491,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   }
   if (ranks > 1) {
     // Waiting at the exchange is most of it: the rank that waits least carries the most work.
-    const double share = summary.loop_seconds > 0 ? 100.0 * model.domain.communication_seconds / summary.loop_seconds : 0.0;
+    const double share = summary.loop_seconds > 0 ? 100.0 * summary.communication_seconds / summary.loop_seconds : 0.0;
     const double least = parallel::min(share), most = parallel::max(share);
     log.say(format("parallel: %d ranks; rank 0 spent %.3g s of the loop (%.1f %%) in communication, waits included "
                    "(%.1f-%.1f %% over the ranks)",
