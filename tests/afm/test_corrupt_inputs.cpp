@@ -17,7 +17,7 @@ using namespace tribex::mesh::afm;
 using tribex::mesh::MeshError;
 
 namespace {
-const std::string afm_dir = std::string(TRIBEX_SHARED_DIR) + "/data/afm/";
+const std::string afm_dir = std::string(TRIBEX_AFM_DATA_DIR) + "/";
 
 std::string write_variant(const std::string& name, const std::string& bytes) {
   const std::string path = ::testing::TempDir() + "/corrupt_" + name;

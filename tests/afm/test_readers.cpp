@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// AFM readers against the real sample files of ../shared/data/afm (values from their headers).
+// AFM readers against the real sample files of inputs/data/afm/ (values from their headers).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 using namespace tribex::mesh::afm;
 
 namespace {
-const std::string afm_dir = std::string(TRIBEX_SHARED_DIR) + "/data/afm/";
+const std::string afm_dir = std::string(TRIBEX_AFM_DATA_DIR) + "/";
 
 double header_scaled(double count, double hard, double soft_nm, int bytes) {
   return count * hard / std::ldexp(1.0, 8 * bytes) * soft_nm * 1e-9;

@@ -3,7 +3,7 @@
 # Check:  build/bin/tribex check tests/afm_mesh/afm_track.i
 # The substrate is a 20 nm x 30 nm window of di-1.di (500 nm scan, flattened Height channel 0) with a
 # 10 nm wide contact track at 0.5 nm, graded away from it and with depth to a flat bottom 20 nm under the
-# mean height, under a 2 nm bonded coating. The map lives in ../shared next to the repository.
+# mean height, under a 2 nm bonded coating. The map is one of the sample files in inputs/data/afm.
 begin sierra afm_track
   begin function ramp
     type = piecewise linear
@@ -36,7 +36,7 @@ begin sierra afm_track
 
   begin finite element model substrate
     begin afm surface
-      file = ../../../shared/data/afm/di-1.di
+      file = ../../inputs/data/afm/di-1.di
       channel = 0
       window = 200 200 20 30 nm
       track = 205 200 10 30 nm

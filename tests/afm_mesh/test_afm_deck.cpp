@@ -58,7 +58,7 @@ TEST(AfmDeck, ValuesDefaultsAndThePathRelativeToTheDeck) {
   EXPECT_NEAR(a->coating_thickness, 2e-9, 1e-22);
   EXPECT_EQ(a->coating_layers, 4);
   EXPECT_NEAR(a->grading_ratio, 1.3, 1e-15);
-  EXPECT_NE(a->file.find("shared/data/afm/di-1.di"), std::string::npos) << a->file;
+  EXPECT_NE(a->file.find("inputs/data/afm/di-1.di"), std::string::npos) << a->file;
   EXPECT_TRUE(std::ifstream(a->file).good()) << a->file;
   // The resolved text (log.txt) carries the block in SI and parses back to the same values.
   EXPECT_NE(deck.resolved_text.find("element size = 5e-10"), std::string::npos) << deck.resolved_text;

@@ -62,7 +62,7 @@ std::array<double, 3> area_vector(const Mesh& m, const Side& s) {
   return {0.5 * (d1[1] * d2[2] - d1[2] * d2[1]), 0.5 * (d1[2] * d2[0] - d1[0] * d2[2]), 0.5 * (d1[0] * d2[1] - d1[1] * d2[0])};
 }
 
-std::string sample(const char* name) { return std::string(TRIBEX_SHARED_DIR) + "/data/afm/" + name; }
+std::string sample(const char* name) { return std::string(TRIBEX_AFM_DATA_DIR) + "/" + name; }
 
 }  // namespace
 

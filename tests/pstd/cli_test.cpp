@@ -48,7 +48,7 @@ TEST(PstdCli, BadInputIsRejectedBeforeAnythingIsWritten) {
   EXPECT_THROW(tribex::cli::pstd_command({"--law", "4d", "-o", o}), tribex::tools::BadInput);
   EXPECT_THROW(tribex::cli::pstd_command({"--normal-forse", "1mN", "-o", o}), tribex::tools::BadInput);
   EXPECT_THROW(tribex::cli::pstd_command({"--normal-force", "1 GPa", "-o", o}), tribex::tools::BadInput);
-  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_SHARED_DIR) + "/data/afm/matrix-3.txt",
+  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_AFM_DATA_DIR) + "/matrix-3.txt",
                                           "--line", "999", "-o", o}),
                tribex::tools::BadInput);
   EXPECT_THROW(tribex::cli::pstd_command({"--segments", "6", "-o", o}), tribex::tools::BadInput);  // 12 um > 10 um
@@ -56,10 +56,10 @@ TEST(PstdCli, BadInputIsRejectedBeforeAnythingIsWritten) {
                tribex::tools::BadInput);
   EXPECT_THROW(tribex::cli::pstd_command({"--channel", "0", "-o", o}), tribex::tools::BadInput);  // needs --afm
   EXPECT_THROW(tribex::cli::pstd_command({"deck.i", "-o", o}), tribex::tools::BadInput);  // options only
-  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_SHARED_DIR) + "/data/afm/di-1.di", "--channel",
+  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_AFM_DATA_DIR) + "/di-1.di", "--channel",
                                           "99", "-o", o}),
                tribex::mesh::MeshError);
-  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_SHARED_DIR) + "/data/afm/README.md", "-o", o}),
+  EXPECT_THROW(tribex::cli::pstd_command({"--afm", std::string(TRIBEX_AFM_DATA_DIR) + "/README.md", "-o", o}),
                tribex::mesh::MeshError);
   EXPECT_FALSE(std::filesystem::exists(out));
   EXPECT_EQ(tribex::cli::pstd_command({"--help"}), 0);
@@ -70,7 +70,7 @@ TEST(PstdCli, RunsOnALineOfANanoscopeAndAGsfMap) {
   // travel (the substrate length) at 0.5 nm sampling is 1000 steps; example_gsf.gsf: 256 px over 20 um.
   const auto base = std::filesystem::temp_directory_path() / "tribex_pstd_cli_afm";
   std::filesystem::remove_all(base);
-  const std::string data = std::string(TRIBEX_SHARED_DIR) + "/data/afm/";
+  const std::string data = std::string(TRIBEX_AFM_DATA_DIR) + "/";
   ASSERT_EQ(tribex::cli::pstd_command({"--afm", data + "di-1.di", "--line", "100", "--segments", "2",
                                        "--segment-length", "200nm", "--sampling", "0.5nm", "--normal-force", "20uN",
                                        "--no-plots", "--quiet", "-o", (base / "di").string()}),

@@ -79,7 +79,7 @@ TEST(PstdProfiles, ReadsProfileFilesWithUnitsAndRejectsBadOnesWithFileAndLine) {
 
 TEST(PstdProfiles, CutsLinesOutOfTheGwyddionMatrixSample) {
   // Read by mesh/afm; row 0 is the first line of the file, pixel = 10 um / 256.
-  const auto map = tribex::mesh::afm::read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/matrix-3.txt");
+  const auto map = tribex::mesh::afm::read_height_map(std::string(TRIBEX_AFM_DATA_DIR) + "/matrix-3.txt");
   const RawProfile row = map_row(map, 0);
   ASSERT_EQ(row.z.size(), 256u);
   EXPECT_NEAR(row.z[0], 1.8823e-8, 1e-13);  // first value of the file
@@ -93,7 +93,7 @@ TEST(PstdProfiles, CutsLinesOutOfTheGwyddionMatrixSample) {
 TEST(PstdProfiles, CutsLinesOutOfGsfAndNanoscopeMaps) {
   // example_gsf.gsf: XRes 256, YRes 128, XReal 20 um, YReal 10 um -> rows along x at 78.125 nm, columns along y
   // at 78.125 nm; the profile holds the reader's heights unchanged.
-  const auto gsf = tribex::mesh::afm::read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/example_gsf.gsf");
+  const auto gsf = tribex::mesh::afm::read_height_map(std::string(TRIBEX_AFM_DATA_DIR) + "/example_gsf.gsf");
   const RawProfile row = map_row(gsf, 5), column = map_column(gsf, 7);
   ASSERT_EQ(row.z.size(), 256u);
   ASSERT_EQ(column.z.size(), 128u);
@@ -103,7 +103,7 @@ TEST(PstdProfiles, CutsLinesOutOfGsfAndNanoscopeMaps) {
   EXPECT_EQ(column.z[9], gsf.at(7, 9));
   EXPECT_NE(row.origin.find("example_gsf.gsf"), std::string::npos) << row.origin;
   // di-1.di: Nanoscope, 512 x 512 px over 500 nm (pixel 0.9766 nm, mesh/afm/README.md), first height channel.
-  const auto di = tribex::mesh::afm::read_height_map(std::string(TRIBEX_SHARED_DIR) + "/data/afm/di-1.di");
+  const auto di = tribex::mesh::afm::read_height_map(std::string(TRIBEX_AFM_DATA_DIR) + "/di-1.di");
   const RawProfile di_row = map_row(di, 100);
   ASSERT_EQ(di_row.z.size(), di.nx);
   EXPECT_NEAR(di_row.mean_spacing(), 500e-9 / 512, 1e-13);

@@ -10,7 +10,7 @@
 #include "tools/cli/error_mapping.hpp"
 
 namespace {
-const std::string afm_dir = std::string(TRIBEX_SHARED_DIR) + "/data/afm/";
+const std::string afm_dir = std::string(TRIBEX_AFM_DATA_DIR) + "/";
 
 int run_surface(const std::vector<std::string>& args) {
   return tribex::cli::run_mapping_errors([&] { return tribex::cli::surface_command(args); });

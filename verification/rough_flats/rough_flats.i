@@ -13,7 +13,7 @@
 # mean-plane separation d = g + 200 nm starts at 5.7 sigma_s (no asperity load) and is closed to
 # d = 60 nm = 1.7 sigma_s (about 110 MPa) by the press; d is read back as 200 nm + the mean z displacement of
 # upper_zmin (the lower block does not move). Summits from `tribex surface stats
-# ../shared/data/afm/di-3.di` (isotropic): eta = 26.14 /um^2, R_s = 192.9 nm, sigma_s = 35.01 nm;
+# inputs/data/afm/di-3.di` (isotropic): eta = 26.14 /um^2, R_s = 192.9 nm, sigma_s = 35.01 nm;
 # E* = E / (2 (1 - nu^2)) = 84.1 GPa for polysilicon on polysilicon; W = 0.05 J/m^2; tau* = 100 MPa.
 # Quasi-static: the press lasts 100 ns, about 800 transits of the 1 um block (c_d = 8 km/s), with
 # mass damping; the compare script checks kinetic energy < 2 % of internal energy in the windows used.

@@ -73,7 +73,7 @@ begin sierra afm_sliding_full_a_si
 
   begin finite element model afm_track
     begin afm surface
-      file = ../../../../shared/data/afm/di-3.di
+      file = ../../data/afm/di-3.di
       channel = 0
       window = 100 100 100 100 nm
       track = 102.5 100 35 100 nm

@@ -83,7 +83,7 @@ begin sierra afm_sliding_reduced_b_sam
 
   begin finite element model afm_track
     begin afm surface
-      file = ../../../../shared/data/afm/di-3.di
+      file = ../../data/afm/di-3.di
       channel = 0
       window = 102 153 40 36 nm
       track = 106 156 28 30 nm

@@ -41,7 +41,7 @@ def load_fraction(t):
 
 
 # Tip start (x, y) on the map and the apex height there: the apex z at which the sphere first touches
-# the spline surface (found on `tribex mesh afm ../shared/data/afm/di-3.di --window 100nm,100nm,
+# the spline surface (found on `tribex mesh afm inputs/data/afm/di-3.di --window 100nm,100nm,
 # 100nm,100nm --element-size 2nm`, max over the footprint of s(x, y) - (R - sqrt(R^2 - r^2)))
 # plus 0.3 nm (z0): the tip starts just out of contact and the load brings it down.
 VARIANTS = {
@@ -89,7 +89,7 @@ begin sierra {name}
 
   begin finite element model afm_track
     begin afm surface
-      file = ../../../../shared/data/afm/di-3.di
+      file = ../../data/afm/di-3.di
       channel = 0
       window = {window} nm
       track = {track} nm

@@ -12,7 +12,7 @@
 #  +--------------------------------------------+ own axial stiffness, 16 kN/m, is the pull spring)
 #  +--------------------------------------------+ block `counter`, every node fixed (the counterface)
 #
-# Rough surface: `tribex surface stats ../shared/data/afm/di-5.di` (isotropic): summit density
+# Rough surface: `tribex surface stats inputs/data/afm/di-5.di` (isotropic): summit density
 # 3.796e16 /m^2, summit radius 14.71 nm, sigma_s 1.536 nm. E* = 84.1 GPa (polysilicon on polysilicon,
 # E = 160 GPa, nu = 0.22), W = 0.1 J/m^2 (uncoated, hydrophilic), tau* = 1 GPa (junction shear strength).
 # The mean-plane separation is d = gap + 9.2 nm (6 sigma_s: no load at the start, the foot touching the

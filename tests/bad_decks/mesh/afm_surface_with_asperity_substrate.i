@@ -13,7 +13,7 @@ begin sierra bad
   end solid section hex8
   begin finite element model m
     begin afm surface
-      file = ../../../../shared/data/afm/di-3.di
+      file = ../../../inputs/data/afm/di-3.di
       window = 110 160 20 20 nm
       element size = 2 nm
       depth = 10 nm
