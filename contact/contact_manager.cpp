@@ -14,7 +14,27 @@ namespace {
 struct BestFace {
   int face = -1;
   Projection proj;
+  bool usable = false;  // proj.interior, or the closest point is a kink of the master (see at_kink)
 };
+
+// A node that no candidate face projects in its interior, whose closest point lies on an edge or a
+// vertex inside the master surface (not on its boundary), sits in the wedge in front of or behind a
+// kink of the faceted surface: a soft master folded by the slave's point loads makes such ridges
+// under every loaded node. Its gap is then the signed distance to that point, along the line to it
+// (the face normal otherwise), so the gap and the force direction stay continuous as the node
+// crosses from a face's region into the wedge. Dropping such a node, as the projection alone would,
+// removes a penalty force with its stored energy 1/2 k g^2 and adds it back on re-entry: on a 2 nm
+// coating that made the contact inject up to 10 % of the energy (issue 22, contact/README.md).
+bool at_kink(const ContactSurface& master, int face, const double* p, Projection& proj) {
+  const bool on_edge[4] = {proj.eta <= -1.0, proj.xi >= 1.0, proj.eta >= 1.0, proj.xi <= -1.0};
+  for (int e = 0; e < 4; ++e)
+    if (on_edge[e] && !master.edge_shared[4 * face + e]) return false;  // the surface's own boundary
+  if (!(proj.distance > 0.0)) return false;
+  const double sign = proj.gap < 0.0 ? -1.0 : 1.0;
+  for (int i = 0; i < 3; ++i) proj.normal[i] = sign * (p[i] - proj.point[i]) / proj.distance;
+  proj.gap = sign * proj.distance;
+  return true;
+}
 
 // 2. narrow phase: among the candidates, prefer faces over which the node projects (interior),
 // then the smallest |gap|; fall back to the nearest edge/vertex point.
@@ -28,7 +48,7 @@ BestFace closest_face(const double* x, const ContactSurface& master, const int* 
     for (int a = 0; a < 4; ++a)
       for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * master.face_nodes[4 * hint + a] + i];
     const Projection pr = project_onto_quad(X, p);
-    if (pr.interior) return {hint, pr};
+    if (pr.interior) return {hint, pr, true};
   }
   BestFace best;
   double best_key = INFINITY;
@@ -41,11 +61,12 @@ BestFace closest_face(const double* x, const ContactSurface& master, const int* 
     const Projection pr = project_onto_quad(X, p);
     const double key = pr.interior ? std::abs(pr.gap) : pr.distance;
     if ((pr.interior && !best_interior) || (pr.interior == best_interior && key < best_key)) {
-      best = {f, pr};
+      best = {f, pr, pr.interior};
       best_key = key;
       best_interior = pr.interior;
     }
   }
+  if (best.face >= 0 && !best.usable) best.usable = at_kink(master, best.face, p, best.proj);
   return best;
 }
 
@@ -451,18 +472,18 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       const double* xs = x + 3 * node;
       const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, xs, p.last_face[k]);
       p.last_face[k] = best.face >= 0 && best.proj.interior ? best.face : -1;
-      if (best.face >= 0 && best.proj.interior) p.gap[k] = best.proj.gap;
+      if (best.usable) p.gap[k] = best.proj.gap;
       if (p.model == InterfaceModel::rough_surface) {
         // The GW law is the whole normal contact (no penalty); a node deeper than the margin is the far side.
-        if (best.face >= 0 && best.proj.interior && -best.proj.gap <= p.margin)
+        if (best.usable && -best.proj.gap <= p.margin)
           apply_rough_surface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, v, force, acc);
         continue;
       }
-      if (p.model != InterfaceModel::frictionless && best.face >= 0 && best.proj.interior && best.proj.gap >= 0.0) {
+      if (p.model != InterfaceModel::frictionless && best.usable && best.proj.gap >= 0.0) {
         apply_interface(p, k, best.face, best.proj.shape, best.proj.normal, best.proj.gap, force, acc);
         continue;
       }
-      if (best.face < 0 || !best.proj.interior || best.proj.gap >= 0.0) continue;
+      if (!best.usable || best.proj.gap >= 0.0) continue;
       // A node deeper than the search margin is not a contact but the far side of a thin body.
       if (-best.proj.gap > p.margin) continue;
       const int* fn = &master.face_nodes[4 * best.face];
@@ -571,7 +592,7 @@ std::vector<ContactManager::Overlap> ContactManager::initial_overlaps(const doub
       const int count = p.candidate_offset[k + 1] - p.candidate_offset[k];
       if (count == 0) continue;
       const BestFace best = closest_face(x, master, &p.candidates[p.candidate_offset[k]], count, x + 3 * slave.nodes[k]);
-      if (best.face >= 0 && best.proj.interior)
+      if (best.usable)
         pass.push_back({slave.name + " -> " + master.name, slave.nodes[k], best.proj.gap});
     }
     std::sort(pass.begin(), pass.end(), [](const Overlap& a, const Overlap& b) { return a.gap < b.gap; });

@@ -62,6 +62,16 @@ ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, con
   std::vector<int> fill(count.begin(), count.end() - 1);
   for (int f = 0; f < s.face_count(); ++f)
     for (int a = 0; a < 4; ++a) s.node_faces[fill[local(s.face_nodes[4 * f + a])]++] = f;
+  s.edge_shared.assign(s.face_nodes.size(), 0);
+  for (int f = 0; f < s.face_count(); ++f)
+    for (int a = 0; a < 4; ++a) {
+      const int from = s.face_local[4 * f + a], to = s.face_nodes[4 * f + (a + 1) % 4];
+      for (int c = s.node_faces_offset[from]; c < s.node_faces_offset[from + 1]; ++c) {
+        const int g = s.node_faces[c];
+        const int* gn = &s.face_nodes[4 * g];
+        if (g != f && std::find(gn, gn + 4, to) != gn + 4) s.edge_shared[4 * f + a] = 1;
+      }
+    }
   return s;
 }
 

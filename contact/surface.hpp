@@ -4,7 +4,8 @@
 // Layouts: face_nodes [face][4] global node indices, counter-clockwise seen from outside the body
 // (outward normal); nodes [k] the surface's unique global nodes, sorted; node_area [k] the row sum
 // of int N_I dA over the surface (A_f / 4 per node for a parallelogram face), m^2;
-// face_area [face] its reference area; node_faces_offset/node_faces: faces touching surface node k (CSR).
+// face_area [face] its reference area; node_faces_offset/node_faces: faces touching surface node k (CSR);
+// edge_shared [face][4]: whether edge a -> a+1 is inside the surface (shared by two faces) or on its boundary.
 #pragma once
 
 #include <string>
@@ -23,6 +24,7 @@ struct ContactSurface {
   std::vector<double> face_area;  // [face] reference area, m^2
   std::vector<int> node_faces_offset;
   std::vector<int> node_faces;
+  std::vector<unsigned char> edge_shared;  // [face][4] edge a -> (a+1)%4 also belongs to another face (not the boundary)
   double mean_edge = 0.0;  // mean face edge length, m
 
   int face_count() const { return static_cast<int>(face_nodes.size() / 4); }

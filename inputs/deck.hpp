@@ -218,7 +218,8 @@ enum class InteractionModel { frictionless, adhesion, junction, rough_surface };
 enum class InteractionEnforcement { node_to_face, mortar };
 
 /// `begin interaction NAME` inside a contact definition: `surfaces = SLAVE MASTER` (the slave
-/// should be the finer surface), `model = frictionless | adhesion | junction`, `symmetric = on|off`
+/// should be the softer surface, else the finer; solver/contact_setup.cpp swaps a one-pass node-to-face
+/// pair whose slave is more than twice as stiff as its master), `model = frictionless | adhesion | junction`, `symmetric = on|off`
 /// (two-pass). Adhesion (physics.md 6) needs `work of adhesion` and `equilibrium separation`;
 /// junction (physics.md 7) needs those and `junction strength`.
 struct InteractionSpec {

@@ -245,7 +245,9 @@ std::vector<BlockSchema> build_table() {
                  false, "contact surfaces and their interactions (physics.md 5)"});
   }
   t.push_back({"interaction", NameRule::required, {}, {}, true,
-               {text("surfaces", ValueKind::strings, true, "SLAVE MASTER (the slave is the finer surface)"),
+               {text("surfaces", ValueKind::strings, true,
+                     "SLAVE MASTER (the softer surface as slave, else the finer; node to face swaps a slave more than twice as "
+                     "stiff as its master, contact/README.md)"),
                 choice("model", ValueKind::enumeration, {"frictionless", "adhesion", "junction", "rough surface"}, false,
                        "frictionless",
                        "interaction model (adhesion: + Lennard-Jones attraction; junction: + shear tau*; rough surface: "

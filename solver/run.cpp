@@ -343,8 +343,16 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   std::vector<double> element_stress(6 * static_cast<std::size_t>(model.mesh.element_count()), 0.0);
   std::vector<std::vector<double>> packed;  // parallel: this rank's rows of each field (output steps only)
   const bool terminal = root && !options.quiet && isatty(STDERR_FILENO);
-  auto last_progress = Clock::now();
+  // Batch jobs and pipes get a heartbeat line instead of the terminal's carriage-return progress.
+  const bool heartbeat = root && options.heartbeat_seconds > 0 && !isatty(STDOUT_FILENO);
+  auto last_progress = Clock::now(), last_heartbeat = Clock::now();
   const double span = end_time - tc.start_time;
+  const auto progress_text = [&](long n, double t, double error) {
+    const double frac = span > 0 ? (t - tc.start_time) / span : 1.0;
+    const double elapsed = seconds_since(loop_start);
+    return format("step %ld | t %.4g s | %5.1f%% | ETA %s | dt %.3g s | energy error %.2e", n, t, 100.0 * frac,
+                  human_seconds(frac > 0 ? elapsed * (1 - frac) / frac : NAN).c_str(), integrator.dt(), error);
+  };
 
   auto write_outputs = [&]() {
     const double t = integrator.time();
@@ -420,12 +428,12 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                                     E.relative_error(), *region.energy_error_limit, n, t));
     if (terminal && seconds_since(last_progress) > 0.5) {
       last_progress = Clock::now();
-      const double frac = span > 0 ? (t - tc.start_time) / span : 1.0;
-      const double elapsed = seconds_since(loop_start);
-      std::fprintf(stderr, "\r  step %ld | t %.4g s | %5.1f%% | ETA %s | dt %.3g s | energy error %.2e   ", n, t,
-                   100.0 * frac, human_seconds(frac > 0 ? elapsed * (1 - frac) / frac : NAN).c_str(), integrator.dt(),
-                   E.relative_error());
+      std::fprintf(stderr, "\r  %s   ", progress_text(n, t, E.relative_error()).c_str());
       std::fflush(stderr);
+    }
+    if (heartbeat && seconds_since(last_heartbeat) >= options.heartbeat_seconds) {
+      last_heartbeat = Clock::now();
+      log.say("heartbeat: " + progress_text(n, t, E.relative_error()));
     }
   };
 

@@ -15,6 +15,8 @@ struct RunOptions {
   bool check_only = false;       // set up, print the pre-flight report, do not integrate
   std::string restart_path;      // non-empty: resume from this restart file (same deck, same rank count)
   long stop_at_step = -1;        // >= 0: stop as if interrupted after this step (writes a restart file)
+  double heartbeat_seconds = 60; // stdout not a terminal (batch, pipe): a progress line to stdout and log.txt
+                                 // this often (wall time); 0: none
 };
 
 struct RunSummary {

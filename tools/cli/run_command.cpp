@@ -6,18 +6,22 @@
 #include "solver/run.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
+#include "tools/common/errors.hpp"
 
 namespace tribex::cli {
 namespace {
 
 const char* run_usage =
-    "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE] [--stop-at-step N]\n"
+    "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE] [--stop-at-step N] [--heartbeat SECONDS]\n"
     "  Runs an input deck. Outputs go to OUTDIR (default ./<deck name>_output): history.csv,\n"
     "  results.h5 + results.xdmf (open the .xdmf in ParaView), summary.json, log.txt.\n"
     "  --quiet   no progress line and no terminal echo (log.txt is still written)\n"
     "  --restart FILE   resume from a restart file (OUT/restart.h5 = the newest) written by the same\n"
     "            deck with 'begin restart output'; same number of MPI ranks; outputs continue in OUTDIR\n"
     "  --stop-at-step N stop after step N as if interrupted (exit 130; writes a restart file)\n"
+    "  --heartbeat SECONDS  when stdout is not a terminal (batch job, pipe, file): a progress line\n"
+    "            (step, time, percent, ETA, dt, energy error) to stdout and log.txt this often\n"
+    "            (wall time, default 60; 0: none; with --quiet to log.txt only)\n"
     "  Exit codes: 0 ok, 2 bad input, 3 numerical failure, 130 interrupted (outputs valid).\n";
 
 const char* check_usage =
@@ -39,12 +43,16 @@ int run_command(const std::vector<std::string>& argv) {
   if (!out) out = args.text("--output");
   const auto restart = args.text("--restart");
   const long stop_at = args.integer("--stop-at-step", -1);
+  const double heartbeat = args.real("--heartbeat", 60.0);
   args.finish();
+  if (!(heartbeat >= 0.0))
+    throw tools::BadInput("tribex run: option --heartbeat expects a number of seconds >= 0 (0 turns the heartbeat off)");
   const inputs::Deck deck = inputs::parse_deck_file(deck_path);
   solver::RunOptions options;
   options.quiet = quiet;
   if (restart) options.restart_path = *restart;
   options.stop_at_step = stop_at;
+  options.heartbeat_seconds = heartbeat;
   options.output_directory = out ? *out : std::filesystem::path(deck_path).stem().string() + "_output";
   return solver::run_deck(deck, options).exit_code;
 }
