@@ -126,7 +126,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   const auto& region = deck.procedure.region;
   const auto& tc = deck.procedure.time_control;
 
-  log.say(format("tribex %s | deck %s", TRIBEX_VERSION, deck.path.c_str()));
+  const RunIdentity identity = identify_run(deck.path, ranks);
+  log.say(identity_line(identity));
   // Bad input is found here, before any file is written. Every rank builds the whole model (the
   // same checks, the same errors), then keeps its part (parallel::localize).
   Model global = build_model(deck);
@@ -165,6 +166,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   for (const auto& line : global.preflight) log.say(line);
 
   RunSummary summary;
+  summary.identity = identity;
   summary.elements = elements;
   summary.nodes = mesh.node_count();
   if (options.check_only) {

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "solver/output/run_identity.hpp"
+
 #include "inputs/deck.hpp"
 
 namespace tribex::solver {
@@ -20,6 +22,7 @@ struct RunOptions {
 };
 
 struct RunSummary {
+  RunIdentity identity;          // version, deck and its SHA-256, start time, host, ranks
   int exit_code = 0;             // 0, 3 (numerical failure) or 130 (interrupted)
   std::string status;            // "normal termination", "numerical failure: ...", "interrupted"
   long steps = 0;                 // step index at the end

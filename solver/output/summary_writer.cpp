@@ -22,6 +22,12 @@ void write_summary_json(const std::string& path, const RunSummary& s, const Ener
   if (!f) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
   std::fprintf(f, "{\n");
   std::fprintf(f, "  \"status\": %s,\n  \"exit_code\": %d,\n", json_string(s.status).c_str(), s.exit_code);
+  const RunIdentity& id = s.identity;
+  std::fprintf(f, "  \"tribex_version\": %s,\n  \"deck\": %s,\n  \"deck_sha256\": %s,\n",
+               json_string(id.version).c_str(), json_string(id.deck_path).c_str(),
+               id.deck_sha256.empty() ? "null" : json_string(id.deck_sha256).c_str());
+  std::fprintf(f, "  \"started\": %s,\n  \"host\": %s,\n", json_string(id.started_utc).c_str(),
+               json_string(id.host).c_str());
   std::fprintf(f, "  \"steps\": %ld,\n  \"final_time\": %s,\n", s.steps, number(s.final_time).c_str());
   std::fprintf(f, "  \"nodes\": %d,\n  \"elements\": %d,\n", s.nodes, s.elements);
   std::fprintf(f, "  \"wall_time_s\": %s,\n  \"loop_time_s\": %s,\n", number(s.wall_seconds).c_str(),
@@ -37,6 +43,7 @@ void write_summary_json(const std::string& path, const RunSummary& s, const Ener
   std::fprintf(f, "  \"initial_stable_time_step\": %s,\n  \"controlling_element\": %d,\n", number(st.dt).c_str(),
                st.controlling_element + 1);
   std::fprintf(f, "  \"energy_error\": %s,\n", number(s.energy_error).c_str());
+  std::fprintf(f, "  \"energy_unit\": \"J\",\n");
   std::fprintf(f, "  \"energies\": {\"kinetic\": %s, \"internal\": %s, \"hourglass\": %s, \"external_work\": %s, "
                "\"silent_boundary_dissipation\": %s, \"damping_dissipation\": %s, \"viscous_dissipation\": %s, "
                "\"contact_work\": %s, \"initial\": %s}\n",
