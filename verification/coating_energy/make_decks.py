@@ -12,42 +12,19 @@ through the coating), coating modulus E_c, work of adhesion W, drive speed, elem
 usage: make_decks.py   (rewrites decks/*.i beside this script)
 """
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "python"))
+from deck_templates import (block_parameters, elastic_material, fixed_displacement,  # noqa: E402
+                            piecewise_linear_function, prescribed, values_lines, write_deck)
 
-DECK = """# {title}
+HEADER = """# {title}
 # Written by verification/coating_energy/make_decks.py; checked by compare.py (max |energy_error| <= 0.5 %).
 # Drive: push {depth} nm at {speed} m/s, hold 10 ps, withdraw to {pull} nm above the start by {t3:g} ps.
-begin sierra {name}
-  begin function push
-    type = piecewise linear
-    abscissa unit = ps
-    ordinate unit = nm
-    begin values
-      0 0
-      {t1:g} {depth}
-      {t2:g} {depth}
-      {t3:g} -{pull}
-    end values
-  end function push
-  begin property specification for material silicon
-    density = 2330 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 161 GPa
-      poissons ratio = 0.23
-    end parameters for model elastic
-  end property specification for material silicon
-  begin property specification for material sam
-    density = 1000 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = {ec} GPa
-      poissons ratio = 0.4
-    end parameters for model elastic
-  end property specification for material sam
-  begin solid section hex8
-    formulation = {formulation}
-  end solid section hex8
-  begin finite element model asperity
+begin sierra {name}"""
+
+MODEL = """  begin finite element model asperity
     begin generated asperity
       radius = {radius} nm
       tip width = {tip_width} nm
@@ -57,40 +34,17 @@ begin sierra {name}
       element size = 1 nm
       coating thickness = 2 nm{layers_line}
     end generated asperity
-    begin parameters for block tip
-      material = silicon
-      section = hex8
-    end parameters for block tip
-    begin parameters for block substrate
-      material = silicon
-      section = hex8
-    end parameters for block substrate
-    begin parameters for block coating
-      material = sam
-      section = hex8
-    end parameters for block coating
-  end finite element model asperity
-  begin presto procedure indent
+{blocks}
+  end finite element model asperity"""
+
+REGION = """  begin presto procedure indent
     begin time control
       termination time = {t3:g} ps
     end time control
     begin presto region main
       use finite element model asperity
       mass damping coefficient = 5e11 1/s
-      begin fixed displacement
-        node set = substrate_bottom
-        components = x y z
-      end fixed displacement
-      begin fixed displacement
-        node set = tip_top
-        components = x y
-      end fixed displacement
-      begin prescribed displacement
-        node set = tip_top
-        component = z
-        function = push
-        scale factor = -1
-      end prescribed displacement
+{constraints}
       begin contact definition tip_on_sam
         contact surface tip contains tip_surface
         contact surface flat contains substrate_top
@@ -133,22 +87,32 @@ def deck(name, title, p):
     t2 = t1 + 10.0
     t3 = p.get("end") or t2 + (p["depth"] + p["pull"]) / p["speed"] * 1000.0
     adhesion = ("\n          work of adhesion = %g J/m^2\n          equilibrium separation = 0.3 nm" % p["w"]) if p["w"] > 0 else ""
-    return DECK.format(title=f"Soft-coating energy study, {name}: {title}.", name=f"coating_energy_{name}",
-                       depth=p["depth"], pull=p["pull"], speed=p["speed"], t1=t1, t2=t2, t3=t3, ec=p["ec"],
-                       formulation=p["formulation"], radius=p["radius"], tip_width=p["tip_width"],
-                       tip_height=p["tip_height"], substrate_width=p["substrate_width"],
-                       substrate_depth=p["substrate_depth"],
-                       layers_line="" if p["layers"] is None else "\n      coating layers = %d" % p["layers"],
-                       model="adhesion" if p["w"] > 0 else "frictionless", adhesion_lines=adhesion)
+    push = values_lines([(0, 0.0), (t1, p["depth"]), (t2, p["depth"]), (t3, -p["pull"])], "g")
+    section = f"  begin solid section hex8\n    formulation = {p['formulation']}\n  end solid section hex8"
+    blocks = "\n".join(block_parameters(b, m) for b, m in (("tip", "silicon"), ("substrate", "silicon"), ("coating", "sam")))
+    constraints = "\n".join([fixed_displacement("substrate_bottom", "x y z"), fixed_displacement("tip_top", "x y"),
+                              prescribed("displacement", "tip_top", "z", "push", "-1")])
+    parts = [
+        HEADER.format(title=f"Soft-coating energy study, {name}: {title}.", name=f"coating_energy_{name}",
+                      depth=p["depth"], pull=p["pull"], speed=p["speed"], t3=t3),
+        piecewise_linear_function("push", push),
+        elastic_material("silicon", 2330, 161, 0.23),
+        elastic_material("sam", 1000, p["ec"], 0.4),
+        section,
+        MODEL.format(radius=p["radius"], tip_width=p["tip_width"], tip_height=p["tip_height"],
+                     substrate_width=p["substrate_width"], substrate_depth=p["substrate_depth"],
+                     layers_line="" if p["layers"] is None else "\n      coating layers = %d" % p["layers"],
+                     blocks=blocks),
+        REGION.format(t3=t3, constraints=constraints, model="adhesion" if p["w"] > 0 else "frictionless",
+                      adhesion_lines=adhesion, name=f"coating_energy_{name}"),
+    ]
+    return "\n".join(parts)
 
 
 def main():
     out = os.path.join(HERE, "decks")
-    os.makedirs(out, exist_ok=True)
     for name, (title, over) in VARIANTS.items():
-        p = dict(BASE, **over)
-        with open(os.path.join(out, name + ".i"), "w") as f:
-            f.write(deck(name, title, p))
+        write_deck(out, name, deck(name, title, dict(BASE, **over)))
     print(f"wrote {len(VARIANTS)} decks to {out}")
 
 

@@ -7,10 +7,10 @@ begin sierra coating_energy_ec16
     abscissa unit = ps
     ordinate unit = nm
     begin values
-      0 0
-      200 1.0
-      210 1.0
-      570 -0.8
+      0  0.00000
+      200  1.00000
+      210  1.00000
+      570  -0.80000
     end values
   end function push
   begin property specification for material silicon

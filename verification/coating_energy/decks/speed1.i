@@ -7,10 +7,10 @@ begin sierra coating_energy_speed1
     abscissa unit = ps
     ordinate unit = nm
     begin values
-      0 0
-      500 0.5
-      510 0.5
-      1410 -0.4
+      0  0.00000
+      500  0.50000
+      510  0.50000
+      1410  -0.40000
     end values
   end function push
   begin property specification for material silicon

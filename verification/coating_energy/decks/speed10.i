@@ -7,10 +7,10 @@ begin sierra coating_energy_speed10
     abscissa unit = ps
     ordinate unit = nm
     begin values
-      0 0
-      100 1.0
-      110 1.0
-      290 -0.8
+      0  0.00000
+      100  1.00000
+      110  1.00000
+      290  -0.80000
     end values
   end function push
   begin property specification for material silicon
