@@ -12,7 +12,7 @@
 // subtracting sigma_a(h_c) (physics.md 6.3):
 //   sigma_s(h) = sigma_a(h) - sigma_a(h_c)   for z0 <= h <= h_c, 0 beyond,
 //   U(h)       = Phi(h) - Phi(h_c) - sigma_a(h_c) (h - h_c)   (dU/dh = sigma_s, U(h_c) = 0).
-// The shift leaves a small repulsion sigma_a(h_c) at touching (0.34 % of the peak for h_c = 10 z0,
+// The shift leaves a small repulsion sigma_a(h_c) at touching (0.26 % of the peak for h_c = 10 z0,
 // 2.1 % for 5 z0), which the penalty contact carries; the work captured is -U(z0) (see captured_work).
 #pragma once
 
