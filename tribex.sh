@@ -10,12 +10,12 @@ set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
 
-# Debian 12 packages (names checked in ../shared/design/DEPENDENCIES.md).
+# Debian 12 packages (names and traps: docs/dependencies.md).
 PACKAGES=(
   cmake make g++ git
   libeigen3-dev libmetis-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
   libgmsh-dev gmsh libcgal-dev libgtest-dev
-  python3 python3-matplotlib python3-numpy python3-h5py
+  python3 python3-matplotlib python3-numpy python3-scipy python3-h5py
   paraview python3-paraview xvfb xauth
 )
 
@@ -36,7 +36,7 @@ ensure_packages() {
   fi
 }
 
-# Open MPI as root in a container, with np > cores (see DEPENDENCIES.md section 4).
+# Open MPI as root in a container, with np > cores (docs/dependencies.md section 4).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 export OMPI_MCA_hwloc_base_binding_policy=none

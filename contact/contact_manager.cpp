@@ -40,7 +40,7 @@ bool at_kink(const ContactSurface& master, int face, const double* p, Projection
 // then the smallest |gap|; fall back to the nearest edge/vertex point.
 // `hint` (the node's face of the previous step, or -1) is tried first and kept when the node still
 // projects over it: between broad-phase searches a node usually stays over the same face, and this
-// skips the projections onto the other candidates (physics.md 5.1: track the current face).
+// skips the projections onto the other candidates (docs/theory.md 5.1: track the current face).
 BestFace closest_face(const double* x, const ContactSurface& master, const int* faces, int count, const double* p,
                       int hint = -1) {
   if (hint >= 0) {
@@ -181,8 +181,8 @@ struct ContactManager::Accumulator {
 };
 
 // 4. interface models on slave surface node k projecting inside master face `face` with gap g:
-// adhesion sigma_s(g + z0) A_I toward the master for g >= 0 (physics.md 6.2), and for the junction
-// model the pair is recorded for the shear of step 5 when in contact (g <= g_j; physics.md 7.1-7.2).
+// adhesion sigma_s(g + z0) A_I toward the master for g >= 0 (docs/theory.md 6.2), and for the junction
+// model the pair is recorded for the shear of step 5 when in contact (g <= g_j; docs/theory.md 7.1-7.2).
 // Penalty contact (g < 0) has been applied and counted by the caller; here a node with
 // 0 <= g <= g_j is counted as in contact (area, status, radius) as well.
 void ContactManager::apply_interface(Pass& p, int k, int face, const double* shape, const double* normal, double gap,
@@ -223,7 +223,7 @@ void ContactManager::apply_interface(Pass& p, int k, int face, const double* sha
   }
 }
 
-// Junction shear tau A_I on a slave node in contact (physics.md 7.1-7.2), added to f (force on the
+// Junction shear tau A_I on a slave node in contact (docs/theory.md 7.1-7.2), added to f (force on the
 // slave node); v_t is the tangential part of v_slave - sum_a N_a v_a (relative to the master point).
 void ContactManager::apply_shear(const Pass& p, const JunctionLaw& law, int node, const int* fn, const double* shape,
                                  const double* normal, double area, const double* v, double* f, Accumulator& acc) {
@@ -293,7 +293,7 @@ void ContactManager::apply_rough_surface(Pass& p, int k, int face, const double*
   }
   // Explicit stability between the node and the face point (m_eff as for the penalty): the normal
   // spring k_I = A_I dp/dd needs dt < 2 sqrt(m_eff / k_I), the shear damper c_I = tau* (A_c/A_0) A_I / v_ref
-  // (its slope at zero slip, physics.md 7.3) needs dt < 2 m_eff / c_I.
+  // (its slope at zero slip, docs/theory.md 7.3) needs dt < 2 m_eff / c_I.
   const double k_spring = p.factor * s.stiffness * area;
   const double c_damper = p.factor * p.junction.strength * s.area_fraction * area / p.junction.reference_speed;
   if (k_spring > 0.0 || c_damper > 0.0) {
@@ -350,7 +350,7 @@ void ContactManager::contact_shares(Pass& p) {
   }
 }
 
-// 5. junction shear on the pairs recorded in step 4 (physics.md 7.1, 7.3; models/junction_shear.hpp).
+// 5. junction shear on the pairs recorded in step 4 (docs/theory.md 7.1, 7.3; models/junction_shear.hpp).
 // Per pair, with the relative velocity v_r = v_slave - sum_a N_a v_a and its tangential part v_t:
 //  - predicted v_t at n+3/2 without the shear: v^{n+1/2} + dt (other + contact normal forces) / m,
 //    node by node, then the same relative tangential projection;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The contact library's narrow API (CONVENTIONS.md A.4.5, after Tribol): the solver registers
+// The contact library's narrow API (docs/conventions.md A.4.5, after Tribol): the solver registers
 // surfaces and interactions once, then calls compute_forces() every step with the current
 // positions and velocities; it never reaches into the search or enforcement.
 //
 // Per step and per interaction pass (slave surface -> master surface; a symmetric interaction runs
-// both passes, each with partition factor 1/2, physics.md 5.1):
+// both passes, each with partition factor 1/2, docs/theory.md 5.1):
 //  1. broad phase (BucketSearch) only when a surface node has moved more than `research_fraction`
 //     of the search margin since the last search; the candidate faces of every slave node are kept
 //     in between;
@@ -12,7 +12,7 @@
 //     (quad_projection), keeping the face over which the node projects with the smallest |gap|;
 //  3. enforcement: penalty normal force f = -k_p g n for g < 0 on the slave node and -N_a f on the
 //     master face nodes (momentum conserved exactly), k_p = penalty_scale m_eff / dt_ref^2 with
-//     m_eff = m_s m_M / (m_s + m_M), 1/m_M = sum_a N_a^2 / m_a (physics.md 5.2): with the default
+//     m_eff = m_s m_M / (m_s + m_M), 1/m_M = sum_a N_a^2 / m_a (docs/theory.md 5.2): with the default
 //     scale 1 the node's frequency stays inside the central-difference limit at the run's time step;
 //  4. interface models (contact/models/): `adhesion` adds the attractive Lennard-Jones traction
 //     sigma_s(g + z0) A_I on slave nodes with 0 <= g <= g_c (nodal tributary areas A_I, shape-function
@@ -26,7 +26,7 @@
 //     node's tributary area (the gap interpolated bilinearly over each slave face and sampled 8 x 8:
 //     int over {g <= g_j} of N_I dA, so the area does not jump by a ring of nodes as rings enter
 //     contact); it is also the reported contact area of a junction interaction. Backward Euler in the relative tangential
-//     velocity of each pair (models/junction_shear.hpp, physics.md 7.3), with the velocity the pair
+//     velocity of each pair (models/junction_shear.hpp, docs/theory.md 7.3), with the velocity the pair
 //     would reach without the shear predicted from the other forces, and a pair mass that counts every
 //     slave sharing a master node (row sums of the pairs' coupling, so the simultaneous updates of
 //     all pairs cannot overshoot: Gershgorin).

@@ -53,7 +53,7 @@ struct MaterialSpec {
 
 enum class ElementFormulation { mean_quadrature, fully_integrated };
 
-/// `begin solid section NAME`. Defaults follow physics.md sections 1.5 and 2.2.
+/// `begin solid section NAME`. Defaults follow docs/theory.md sections 1.5 and 2.2.
 struct SectionSpec {
   std::string name;
   ElementFormulation formulation = ElementFormulation::mean_quadrature;
@@ -197,7 +197,7 @@ struct PrescribedForceSpec {
   SourceLocation where;
 };
 
-/// `begin silent boundary`: Lysmer-Kuhlemeyer dashpots on a side set (physics.md section 4).
+/// `begin silent boundary`: Lysmer-Kuhlemeyer dashpots on a side set (docs/theory.md section 4).
 struct SilentBoundarySpec {
   std::string side_set;
   double normal_coefficient = 1.0;      // a, -
@@ -220,8 +220,8 @@ enum class InteractionEnforcement { node_to_face, mortar };
 /// `begin interaction NAME` inside a contact definition: `surfaces = SLAVE MASTER` (the slave
 /// should be the softer surface, else the finer; solver/contact_setup.cpp swaps a one-pass node-to-face
 /// pair whose slave is more than twice as stiff as its master), `model = frictionless | adhesion | junction`, `symmetric = on|off`
-/// (two-pass). Adhesion (physics.md 6) needs `work of adhesion` and `equilibrium separation`;
-/// junction (physics.md 7) needs those and `junction strength`.
+/// (two-pass). Adhesion (docs/theory.md 6) needs `work of adhesion` and `equilibrium separation`;
+/// junction (docs/theory.md 7) needs those and `junction strength`.
 struct InteractionSpec {
   std::string name;
   std::string slave;   // surface names, checked by the parser
@@ -248,7 +248,7 @@ struct InteractionSpec {
   SourceLocation where;
 };
 
-/// `begin contact definition NAME` inside the region (physics.md 5; CONVENTIONS.md contact).
+/// `begin contact definition NAME` inside the region (docs/theory.md 5; docs/conventions.md contact).
 struct ContactSpec {
   std::string name;
   std::vector<ContactSurfaceSpec> surfaces;

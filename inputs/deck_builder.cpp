@@ -483,7 +483,7 @@ class Builder {
     return spec;
   }
 
-  // `model = adhesion | junction` and their parameters (physics.md 6, 7): each parameter belongs to
+  // `model = adhesion | junction` and their parameters (docs/theory.md 6, 7): each parameter belongs to
   // a model, each model needs its parameters; the cutoff is a separation and must exceed z0.
   void interface_model(const Scope& it, InteractionSpec& i) {
     const std::string m = word(it, "model");
@@ -505,7 +505,7 @@ class Builder {
     if (!adhesive) return;
     for (const char* k : {"work of adhesion", "equilibrium separation"})
       if (!it.find(k))
-        error(where(it, "model"), it, "'model = " + m + "' needs '" + k + "' (the Lennard-Jones adhesion law, physics.md 6); add it to the interaction");
+        error(where(it, "model"), it, "'model = " + m + "' needs '" + k + "' (the Lennard-Jones adhesion law, docs/theory.md 6); add it to the interaction");
     if (junction && !it.find("junction strength"))
       error(where(it, "model"), it, "'model = junction' needs 'junction strength' (tau*, Pa); add it to the interaction");
     i.work_of_adhesion = real(it, "work of adhesion");

@@ -242,7 +242,7 @@ std::vector<BlockSchema> build_table() {
                   real("initial overlap tolerance", dim::length, non_negative(), false, "",
                        "largest overlap accepted at t = 0 (default: 1 % of the mean face edge)")},
                  {{"interaction", 1, unlimited}},
-                 false, "contact surfaces and their interactions (physics.md 5)"});
+                 false, "contact surfaces and their interactions (docs/theory.md 5)"});
   }
   t.push_back({"interaction", NameRule::required, {}, {}, true,
                {text("surfaces", ValueKind::strings, true,
@@ -267,7 +267,7 @@ std::vector<BlockSchema> build_table() {
                      "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s; no stability floor: backward Euler)"),
                 real("junction gap tolerance", dim::length, non_negative(), false, "",
                      "a node is in contact when gap <= this (default 0.05 z0)"),
-                // model = rough surface (physics.md 10.3-10.5): continuous Gaussian summits, or a discrete file
+                // model = rough surface (docs/theory.md 10.3-10.5): continuous Gaussian summits, or a discrete file
                 real("summit density", dim::per_area, positive(), false, "", "eta, summits per nominal area (rough surface)"),
                 real("summit radius", dim::length, positive(), false, "", "R_s, mean summit radius (rough surface)"),
                 real("summit height deviation", dim::length, positive(), false, "",

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Isotropic linear elasticity, small strain (physics.md section 3.1):
+// Isotropic linear elasticity, small strain (docs/theory.md section 3.1):
 //   eps = sym(H),  H = du/dX (displacement gradient, 3x3 row-major)
 //   sigma = lambda tr(eps) I + 2 mu eps                       (Pa)
 //   W = (1/2) sigma : eps                                      (J/m^3)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The material of an element block: a std::variant of small value types. Element kernels are
 // templates over the concrete type and the variant is visited once per block per step, so there
-// is no virtual or variant dispatch per element or quadrature point (CONVENTIONS.md A.4.3).
+// is no virtual or variant dispatch per element or quadrature point (docs/conventions.md A.4.3).
 //
 // Every model provides:
 //   T force_stress(const T H[9], T S[9]) const;  // S with f_iI = S_iJ B0_JI; returns W (J/m^3);

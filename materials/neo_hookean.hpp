@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Compressible neo-Hookean hyperelasticity (physics.md section 3.2c), objective at any rotation:
+// Compressible neo-Hookean hyperelasticity (docs/theory.md section 3.2c), objective at any rotation:
 //   W = (mu/2)(I1 - 3) - mu ln J + (lambda/2)(ln J)^2,   I1 = tr(F^T F),  J = det F     (J/m^3)
 //   P = mu (F - F^{-T}) + lambda ln J F^{-T}              first Piola-Kirchhoff stress (Pa)
 //   sigma = (1/J) [mu (B - I) + lambda ln J I],  B = F F^T  Cauchy stress (Pa)
@@ -53,7 +53,7 @@ struct NeoHookean {
     voigt[5] = mu * b(2, 0) / J;
   }
 
-  /// Dilatational modulus linearised at J (physics.md 1.4): lambda' = lambda/J,
+  /// Dilatational modulus linearised at J (docs/theory.md 1.4): lambda' = lambda/J,
   /// mu' = (mu - lambda ln J)/J, M = lambda' + 2 mu'.
   double wave_modulus(const double* H) const {
     if (!H) return lambda + 2.0 * mu;

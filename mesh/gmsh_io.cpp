@@ -387,7 +387,7 @@ void write_gmsh(const Mesh& mesh, const std::string& path) {
   GmshScratchModel model("write");
   call_gmsh(path, "writing it", "check that the directory exists and is writable", [&] {
     const int nn = mesh.node_count();
-    // Route 1 of DEPENDENCIES.md: discrete entities holding our mesh as it is. One volume per block,
+    // Route 1 of docs/dependencies.md: discrete entities holding our mesh as it is. One volume per block,
     // one surface per side set, one point entity per extra node set.
     for (std::size_t b = 0; b < mesh.blocks.size(); ++b) gmsh::model::addDiscreteEntity(3, static_cast<int>(b) + 1);
     std::vector<std::size_t> node_tags(static_cast<std::size_t>(nn));

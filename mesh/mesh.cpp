@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Mesh queries, append and validation. Geometry of the trilinear hex8 (physics.md section 2.1):
+// Mesh queries, append and validation. Geometry of the trilinear hex8 (docs/theory.md section 2.1):
 // x(xi,eta,zeta) = sum_I N_I x_I, N_I = (1/8)(1+xi_I xi)(1+eta_I eta)(1+zeta_I zeta).
 #include "mesh/mesh.hpp"
 

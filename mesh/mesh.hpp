@@ -4,7 +4,7 @@
 // Layouts (0-based indices everywhere):
 //   coordinates   [node][3]    x, y, z of node n at 3n, 3n+1, 3n+2 (m)
 //   connectivity  [element][8] node indices of element e at 8e..8e+7, in the hex8 order of
-//                              physics.md section 2.1: (xi,eta,zeta) = 0(---) 1(+--) 2(++-) 3(-+-)
+//                              docs/theory.md section 2.1: (xi,eta,zeta) = 0(---) 1(+--) 2(++-) 3(-+-)
 //                              4(--+) 5(+-+) 6(+++) 7(-++) (also gmsh's and Exodus's order)
 //   blocks        each block owns the contiguous element range [first_element, first_element+count)
 //   side sets     (element, local face) pairs; local faces numbered as Exodus sides, see

@@ -12,7 +12,7 @@
 namespace tribex::solver {
 namespace {
 
-// Adhesion / junction parameters (physics.md 6, 7) with their defaults, the capture distance of the
+// Adhesion / junction parameters (docs/theory.md 6, 7) with their defaults, the capture distance of the
 // search raised to the adhesion cut-off gap; each choice goes to the run log.
 void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
                      const contact::ContactSurface& slave, const contact::ContactSurface& master,
@@ -46,7 +46,7 @@ void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpe
   if (!junction) return;
   s.junction.strength = it.junction_strength;
   s.junction.reference_speed = it.junction_reference_speed.value_or(0.1);
-  // The shear is taken backward-Euler per pair (contact/models/junction_shear.hpp, physics.md 7.3),
+  // The shear is taken backward-Euler per pair (contact/models/junction_shear.hpp, docs/theory.md 7.3),
   // so v_ref has no stability floor. For the record, the floor an explicit tanh damper
   // c = tau* A_I / v_ref would need, c dt / m_eff < 2, estimated with the median master node mass.
   std::vector<double> master_mass;

@@ -59,7 +59,7 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
       hex8::hourglass_vectors(X, B, V, &b.gamma[32 * e]);
       double bb = 0.0;
       for (int k = 0; k < 24; ++k) bb += B[k] * B[k];
-      // physics.md 2.2: Q^s = kappa M (B.B)/(3V) q, q = gamma.u/sqrt(8), f = Q gamma/sqrt(8)
+      // docs/theory.md 2.2: Q^s = kappa M (B.B)/(3V) q, q = gamma.u/sqrt(8), f = Q gamma/sqrt(8)
       b.hg_k[e] = b.hourglass_stiffness * M * bb / (24.0 * V);
       // Q^v = nu rho c sqrt(B.B/3) qdot
       b.hg_c[e] = b.hourglass_viscosity * b.rho_c * std::sqrt(bb / 3.0) / 8.0;

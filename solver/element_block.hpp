@@ -71,8 +71,8 @@ struct ElementPassTotals {
 
 /// Internal forces of one block, subtracted from `force` [node][3]:
 ///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dN_I/dX_j(g) (fully integrated),
-/// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (physics.md 1.5),
-/// plus Flanagan-Belytschko hourglass forces (mean quadrature, physics.md 2.2).
+/// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (docs/theory.md 1.5),
+/// plus Flanagan-Belytschko hourglass forces (mean quadrature, docs/theory.md 2.2).
 /// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
 /// When `want_stress` the block's stress buffer is filled (Cauchy stress, element mean).
 ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Energy bookkeeping (physics.md 1.3; CONVENTIONS.md B.3 "Energy balance"). All in J.
+// Energy bookkeeping (docs/theory.md 1.3; docs/conventions.md B.3 "Energy balance"). All in J.
 #pragma once
 
 #include <algorithm>

@@ -180,7 +180,7 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     for (int e = 0; e < b.element_count; ++e) model.element_block[b.first_element + e] = static_cast<int>(model.blocks.size() - 1);
   }
 
-  // Lumped mass: rho V0 / 8 to each node of each element (physics.md 1.2).
+  // Lumped mass: rho V0 / 8 to each node of each element (docs/theory.md 1.2).
   model.mass.assign(static_cast<std::size_t>(nn), 0.0);
   for (const auto& blk : model.blocks) {
     const double rho = materials::density_of(blk.material);

@@ -44,7 +44,7 @@ struct NodalForceLoad {
   double scale = 1.0;       // N per function unit, per node
 };
 
-/// Lysmer-Kuhlemeyer dashpots lumped to nodes (physics.md 4.2): per node an area-weighted unit
+/// Lysmer-Kuhlemeyer dashpots lumped to nodes (docs/theory.md 4.2): per node an area-weighted unit
 /// normal and the coefficients c_n = a rho c_p A_I, c_t = b rho c_s A_I (N s/m).
 struct SilentBoundaryNodes {
   std::vector<int> node;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Element-based stable time step (physics.md 1.4):
+// Element-based stable time step (docs/theory.md 1.4):
 //   dt_e = L_e / c_d * (sqrt(1 + xi^2) - xi),  L_e = V / sqrt(2 B_iI B_iI),  xi = b1 (linear bulk
 //   viscosity as a fraction of critical damping of the highest mode),  c_d = sqrt(M(J) / rho(J)),
 // evaluated on the current configuration x = X + u with the tangent dilatational modulus M; the

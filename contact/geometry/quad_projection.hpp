@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Closest-point projection of a point onto a bilinear quadrilateral face (physics.md 5.1, local
+// Closest-point projection of a point onto a bilinear quadrilateral face (docs/theory.md 5.1, local
 // phase): x(xi, eta) = sum_a N_a x_a, N_a = (1 + xi_a xi)(1 + eta_a eta)/4, nodes (--), (+-), (++), (-+)
 // counter-clockwise seen from outside. Newton on r = (x(xi,eta) - p) . x_{,xi|eta} = 0 from the
 // centre; if the Newton point falls outside the face (beyond the tolerance) the closest point on

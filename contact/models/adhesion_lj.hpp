@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The Lennard-Jones 3-9 half-space traction law of the Adhesion Model (physics.md 6; report 3.2).
+// The Lennard-Jones 3-9 half-space traction law of the Adhesion Model (docs/theory.md 6; report 3.2).
 //
 // Two half-spaces interacting by a 6-12 pair potential give, per unit area at separation h,
 //   sigma_a(h) = (8W/(3 z0)) [ (z0/h)^3 - (z0/h)^9 ]        (Pa, positive = attractive)
@@ -7,9 +7,9 @@
 // zero at h = z0, peak 16W/(9 sqrt(3) z0) = 1.0264 W/z0 at h = 3^(1/6) z0 = 1.2009 z0.
 //
 // Applied with hard (penalty) frictionless contact, the law is offset so that touching surfaces sit
-// at its equilibrium: h = g + z0 for a gap g >= 0 (physics.md 6.2). It is cut off at the separation
+// at its equilibrium: h = g + z0 for a gap g >= 0 (docs/theory.md 6.2). It is cut off at the separation
 // h_c (measured like h, so h_c > z0; the capture gap is g_c = h_c - z0) and made continuous there by
-// subtracting sigma_a(h_c) (physics.md 6.3):
+// subtracting sigma_a(h_c) (docs/theory.md 6.3):
 //   sigma_s(h) = sigma_a(h) - sigma_a(h_c)   for z0 <= h <= h_c, 0 beyond,
 //   U(h)       = Phi(h) - Phi(h_c) - sigma_a(h_c) (h - h_c)   (dU/dh = sigma_s, U(h_c) = 0).
 // The shift leaves a small repulsion sigma_a(h_c) at touching (0.26 % of the peak for h_c = 10 z0,
@@ -59,7 +59,7 @@ inline double adhesive_energy(double gap, const AdhesionLaw& law) {
 }
 
 /// Work to separate touching surfaces to beyond the cut-off with the applied law, -U(z0), J/m^2;
-/// W (1 - (4/3)(z0/h_c)^2 + (1/3)(z0/h_c)^8) minus the shift's share (physics.md 6.3).
+/// W (1 - (4/3)(z0/h_c)^2 + (1/3)(z0/h_c)^8) minus the shift's share (docs/theory.md 6.3).
 inline double captured_work(const AdhesionLaw& law) { return -adhesive_energy(0.0, law); }
 
 }  // namespace tribex::contact

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The junction shear traction of the Junction Model (physics.md 7.1): on a slave point in contact,
+// The junction shear traction of the Junction Model (docs/theory.md 7.1): on a slave point in contact,
 //   tau = -tau* phi(|v_t| / v_ref) v_t / |v_t|,   phi(s) = tanh(s),
 // with v_t the relative tangential velocity of the slave point against the master surface. It
 // opposes slip, has magnitude tau* once |v_t| >> v_ref (Bowden-Tabor: friction = tau* A_real), and
 // is smooth at zero slip, where it acts as a damper tau = -(tau*/v_ref) v_t.
 //
-// Time integration (physics.md 7.3). Evaluated explicitly, that damper c = tau* A_I / v_ref is stable
+// Time integration (docs/theory.md 7.3). Evaluated explicitly, that damper c = tau* A_I / v_ref is stable
 // only for c dt / m_eff < 2, i.e. v_ref > tau* A_I dt / (2 m_eff): about 30 m/s for tau* = 195 MPa on
 // 0.4-0.8 nm silicon elements, far above sliding speeds. `junction_update` instead takes the force
 // backward-Euler in the relative tangential velocity of the pair (the semi-implicit per-pair update

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The grid-scale rough-surface (Greenwood-Williamson) interaction law (report Section 4.3-4.5;
-// physics.md 10.3-10.5). A slave node stands for a patch A_I of a rough surface whose summits face a
+// docs/theory.md 10.3-10.5). A slave node stands for a patch A_I of a rough surface whose summits face a
 // flat counterface (the master) at the mean-plane separation d (measured from the mean of the summit
-// heights, physics.md 10.2). Per unit nominal area A_0:
+// heights, docs/theory.md 10.2). Per unit nominal area A_0:
 //
 //   continuous Gaussian summits (density eta, radius R, height deviation sigma_s, t = d / sigma_s):
 //     N/A_0   = eta F_0(t)                                                       (Eq. 4.1)

@@ -13,7 +13,7 @@
 // Pi = (k_A/2) sum_j A_j (g~_j/A_j)^2 at fixed slave normal and integration points. A uniform pressure p
 // gives f_i = p int N_i dA on both sides (the consistent nodal loads, so the contact patch test
 // passes with non-matching meshes), and sum_i M_ij = int N_j dA = sum_k D_kj conserves momentum
-// exactly. Adhesion (physics.md 6.2) is evaluated at the integration points from the separation
+// exactly. Adhesion (docs/theory.md 6.2) is evaluated at the integration points from the separation
 // there, s = g (-n_s . n_m) (the distance to the master's tangent plane, n_m its outward normal at
 // the point): f_i -= sigma_s(s) w N_i n_m on the slave, f_k += sigma_s(s) w Phi_k n_m on the master,
 // i.e. the node-to-face rule (sigma_s(g_I) A_I along n_m) with the nodal sampling replaced by the
@@ -48,7 +48,7 @@ struct MortarTotals {
 
 /// k_A = s m_A / dt^2 with m_A = a b / (a + b), a and b the smallest mass per overlap area
 /// m_I / A_I on the slave and master surfaces (the per-area analogue of k_p = s m_eff / dt^2,
-/// physics.md 5.2): one value for the whole surface pair, so that a uniform gap gives a uniform
+/// docs/theory.md 5.2): one value for the whole surface pair, so that a uniform gap gives a uniform
 /// pressure; the smallest ratio keeps every node inside the central-difference limit.
 double mortar_penalty_per_area(const ContactSurface& slave, const ContactSurface& master,
                                const std::vector<double>& mass, double scale, double dt);

@@ -31,7 +31,7 @@ std::vector<double> gaussian_population(std::size_t n, std::uint64_t seed);
 /// N heights at the normal quantiles (i + 1/2)/N: a stratified population without sampling noise.
 std::vector<double> stratified_gaussian_population(std::size_t n);
 
-/// DMT-adhesive GW (Eqs. 4.10-4.12, physics.md 10.4). beta = 2 pi W R / ((4/3) E* sqrt(R) sigma_s^{3/2})
+/// DMT-adhesive GW (Eqs. 4.10-4.12, docs/theory.md 10.4). beta = 2 pi W R / ((4/3) E* sqrt(R) sigma_s^{3/2})
 /// = 3 pi W sqrt(R) / (2 E* sigma_s^{3/2}) is the adhesion force of one contacting asperity in load units.
 /// Contacting asperities carry the Hertz force minus 2 pi W R; with z0 > 0 (units of sigma_s) the
 /// asperities out of contact at gap s feel the Derjaguin 3-9 attraction

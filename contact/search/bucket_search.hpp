@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Broad phase of the contact search (physics.md 5.1, global phase): axis-aligned boxes of the
+// Broad phase of the contact search (docs/theory.md 5.1, global phase): axis-aligned boxes of the
 // master faces, inflated by the capture distance, binned in a uniform grid of buckets; each slave
 // node is tested against the boxes of its bucket. Output: the candidate faces of every slave node
 // (CSR). Storage is reused between builds (no allocation once capacities have grown).

@@ -2,7 +2,7 @@
 // An all-hex8 substrate block whose top follows an AFM height map (issue 5, scope item 3): the
 // bicubic-spline surface of the map (cubic_spline.hpp), a structured grid with elements of at
 // most `element_size` in the track, graded (ratio <= 1.3) away from it in x and y and with depth,
-// and an optional bonded coating of its own block. Route 1 of DEPENDENCIES.md section 3: the grid
+// and an optional bonded coating of its own block. Route 1 of docs/dependencies.md section 3: the grid
 // is built here and written with mesh::write_gmsh (gmsh discrete entities).
 //
 // Geometry (mesh coordinates = map coordinates, pixel (ix, iy) centred at ((ix+1/2) dx, (iy+1/2) dy)):

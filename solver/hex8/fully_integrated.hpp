@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Fully integrated hex8: 2x2x2 Gauss quadrature in total-Lagrangian form (physics.md 2.3), no
+// Fully integrated hex8: 2x2x2 Gauss quadrature in total-Lagrangian form (docs/theory.md 2.3), no
 // hourglass control needed. At each point g: H = u_iI dN_I/dX_j, S = material.force_stress(H),
 // f_iI -= wdetJ_g S_ij dN_I/dX_j, the gradients and forces sum-factorised over the element's
 // edges (sum_factorized.hpp). Elements run two at a time, one per SSE lane (lanes.hpp; an odd
@@ -35,7 +35,7 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
     for (int p = 0; p < 8; ++p) Q[k][p] = materials::load_lanes<T>(&blk.inv_jacobian[lane_index(e, 8 * k + p, 72)]);
   for (int p = 0; p < 8; ++p) w[p] = materials::load_lanes<T>(&blk.wdetJ[lane_index(e, p, 8)]);
 
-  // Bulk viscosity (physics.md 1.5): a pressure q = -b1 rho c L edot + rho (b2 L)^2 min(edot, 0)^2
+  // Bulk viscosity (docs/theory.md 1.5): a pressure q = -b1 rho c L edot + rho (b2 L)^2 min(edot, 0)^2
   // from the element's mean volumetric rate edot = B0_iI v_iI / V. Its force -q B0_iI is added
   // through the point stresses (S - q I at each point), since B0 = sum_p wdetJ_p dN/dX(p).
   const T V = from_lanes<T>([&](int l) { return blk.volume0[e + l]; });

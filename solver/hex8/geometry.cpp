@@ -8,12 +8,12 @@
 namespace tribex::solver::hex8 {
 namespace {
 
-// Reference coordinates of the 8 nodes (physics.md 2.1 order).
+// Reference coordinates of the 8 nodes (docs/theory.md 2.1 order).
 constexpr double xi_n[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
 constexpr double eta_n[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
 constexpr double zeta_n[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
 
-// Hourglass base vectors Gamma_a (physics.md 2.2): ~ eta*zeta, zeta*xi, xi*eta, xi*eta*zeta.
+// Hourglass base vectors Gamma_a (docs/theory.md 2.2): ~ eta*zeta, zeta*xi, xi*eta, xi*eta*zeta.
 constexpr double Gamma[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
                                 {1, -1, -1, 1, -1, 1, 1, -1},
                                 {1, -1, 1, -1, 1, -1, 1, -1},

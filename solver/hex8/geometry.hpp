@@ -3,7 +3,7 @@
 // uniform-strain (mean-quadrature) element, hourglass shape vectors and the characteristic length.
 //
 // Array layouts (all row-major, double):
-//   X      [8][3]  nodal coordinates, node I at 3I..3I+2, node order of physics.md 2.1 / mesh.hpp
+//   X      [8][3]  nodal coordinates, node I at 3I..3I+2, node order of docs/theory.md 2.1 / mesh.hpp
 //   B      [3][8]  B_iI = int_V dN_I/dx_i dV (m^2); component i at 8i..8i+7
 //   gamma  [4][8]  Flanagan-Belytschko orthogonal hourglass vectors gamma_aI (dimensionless)
 //   Q      [3][3][8] at the 8 Gauss points (point p at +/-1/sqrt(3) with node p's signs):
@@ -21,11 +21,11 @@ double gradient_operator(const double X[24], double B[24]);
 
 /// Flanagan-Belytschko hourglass vectors gamma_aI = Gamma_aI - (1/V) B_iI x_iJ Gamma_aJ, which
 /// are orthogonal to every linear field (gamma_aI x_jI = 0), so linear motion creates no hourglass
-/// force (physics.md 2.2).
+/// force (docs/theory.md 2.2).
 void hourglass_vectors(const double X[24], const double B[24], double volume, double gamma[32]);
 
 /// Characteristic length of Flanagan & Belytschko, L_e = V / sqrt(2 B_iI B_iI) (= h/sqrt(3) for
-/// a cube of side h); the element's stable step is L_e / c_d (physics.md 1.4).
+/// a cube of side h); the element's stable step is L_e / c_d (docs/theory.md 1.4).
 double characteristic_length(const double B[24], double volume);
 
 /// Inverse Jacobians (over 8) and weights at the 2x2x2 Gauss points (fully integrated element).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Uniform-strain (mean-quadrature) hex8 of Flanagan & Belytschko (1981), total-Lagrangian form,
-// with orthogonal hourglass control and bulk viscosity (physics.md 1.5, 2.1, 2.2):
+// with orthogonal hourglass control and bulk viscosity (docs/theory.md 1.5, 2.1, 2.2):
 //   H_ij   = (1/V0) u_iI B0_jI                         displacement gradient, F = I + H
 //   S      = material.force_stress(H)                  Cauchy (small strain) or first Piola (finite)
 //   edot_v = (1/V0) v_iI B0_iI                          volumetric strain rate (reference operator)
@@ -9,7 +9,7 @@
 //   h_ia   = u_iJ gamma_aJ,  g_ia = v_iJ gamma_aJ
 //   f_iI  -= (k_hg h_ia + c_hg g_ia) gamma_aI         hourglass stiffness and viscosity
 // The hourglass stiffness is written in total form, k_hg gamma gamma^T u, which equals the
-// incremental form of physics.md 2.2 for a constant coefficient; because gamma is orthogonal to
+// incremental form of docs/theory.md 2.2 for a constant coefficient; because gamma is orthogonal to
 // every linear field of the reference coordinates, rigid rotations (u = (R - I) X) produce no
 // hourglass force at any angle.
 #pragma once

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Explicit central-difference time integration with half-step velocities (physics.md 1.3), the
+// Explicit central-difference time integration with half-step velocities (docs/theory.md 1.3), the
 // only time-step loop of tribex. One call of step() advances n -> n+1:
 //
 //   dt^n      = (dt^{n-1/2} + dt^{n+1/2}) / 2            (dt^0 = dt^{1/2} / 2, v^{-1/2} = v^0)
 //   v^{n+1/2} = v^{n-1/2} + dt^n M^{-1} f^n               free dofs
 //             = [(m/dt^n - c/2) v^{n-1/2} + f^n] / (m/dt^n + c/2)
 //                                                         dofs with dashpots / mass damping
-//                                                         (semi-implicit, physics.md 4.3),
+//                                                         (semi-implicit, docs/theory.md 4.3),
 //                                                         normal and tangential parts apart
 //   v^{n+1/2} = prescribed                                constrained dofs; reaction
 //   R^n       = m (v^{n+1/2} - v^{n-1/2}) / dt^n - f^n

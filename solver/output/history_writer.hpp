@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// history.csv: one header row, one row per history interval (ARCHITECTURE.md "Outputs"):
+// history.csv: one header row, one row per history interval (docs/architecture.md "Outputs"):
 //   step,time,dt,kinetic_energy,internal_energy,hourglass_energy,external_work,
 //   silent_boundary_dissipation,contact_work,energy_error,contact_normal_force,
 //   contact_tangential_force,contact_area,contact_nodes,

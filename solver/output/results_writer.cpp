@@ -316,7 +316,7 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     H5Handle g = output::create_group(f, "/mesh", p);
     output::create_group(f, "/steps", p);
     output::write_string_attribute(g.get(), "connectivity_order",
-                                   "hex8 as VTK_HEXAHEDRON / physics.md 2.1, 0-based node indices", p);
+                                   "hex8 as VTK_HEXAHEDRON / docs/theory.md 2.1, 0-based node indices", p);
     // Parallel: the mesh is written once, by rank 0 (the others take part with no rows).
     const auto write_all = [&](hid_t d, hid_t type, const void* data, hsize_t rows, hsize_t cols, const std::string& what) {
       if (!impl_->parallel) return output::write_rows(d, type, data, 0, rows, cols, what);

@@ -92,7 +92,7 @@ void XdmfDocument::add_step(double time, const std::vector<XdmfAttribute>& attri
   if (step_count_ == 0) {
     g += mesh_elements(in);
   } else {
-    // The mesh of step 0, pulled in by reference (CONVENTIONS.md B.2: write the mesh once).
+    // The mesh of step 0, pulled in by reference (docs/conventions.md B.2: write the mesh once).
     g += in + "<xi:include xpointer=\"xpointer(//Grid[@Name='" + step_name(0) +
          "']/*[self::Topology or self::Geometry or self::Attribute[@Name='block_id']])\"/>\n";
   }

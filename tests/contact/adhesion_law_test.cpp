@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The Lennard-Jones 3-9 law and the junction shear law against their closed forms (physics.md 6.1,
+// The Lennard-Jones 3-9 law and the junction shear law against their closed forms (docs/theory.md 6.1,
 // 6.3, 7.1).
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ TEST(AdhesionLaw, IntegralIsWorkOfAdhesionMinusTruncatedTail) {
   EXPECT_NEAR(full / W, 1.0, 1e-6);
   for (double ratio : {3.0, 5.0, 10.0, 20.0}) {
     const AdhesionLaw law{W, z0, ratio * z0};
-    // Tail lost by the cut-off: (4/3)(z0/h_c)^2 - (1/3)(z0/h_c)^8 (physics.md 6.3: 14.8 % at 3 z0,
+    // Tail lost by the cut-off: (4/3)(z0/h_c)^2 - (1/3)(z0/h_c)^8 (docs/theory.md 6.3: 14.8 % at 3 z0,
     // 5.3 % at 5 z0, 1.3 % at 10 z0).
     const double tail = 4.0 / 3.0 / (ratio * ratio) - 1.0 / 3.0 / std::pow(ratio, 8);
     const double truncated = simpson([&](double h) { return lj_traction(h, W, z0); }, z0, law.cutoff, 20000);

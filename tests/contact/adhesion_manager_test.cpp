@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The adhesion and junction models in the contact manager: flats at a fixed separation (summed
-// force = law x area), a sphere above a flat (physics.md 6.5 handle), junction shear on flats
-// (physics.md 7.3 handle). One compute_forces call each, at the reference coordinates.
+// force = law x area), a sphere above a flat (docs/theory.md 6.5 handle), junction shear on flats
+// (docs/theory.md 7.3 handle). One compute_forces call each, at the reference coordinates.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,7 +59,7 @@ TEST(AdhesionManager, FlatsAtSeparationCarryTheLawTimesArea) {
   }
 }
 
-// Sphere (the asperity's tip surface, apex at gap D) above the flat substrate top (physics.md 6.5
+// Sphere (the asperity's tip surface, apex at gap D) above the flat substrate top (docs/theory.md 6.5
 // handle, element size 0.25 nm at the apex, cut-off 20 z0): the summed adhesive force against
 //  - the exact-geometry integral of the applied (offset, cut-off, shifted) law over the sphere, 2 %;
 //  - Derjaguin for the applied law, F = -2 pi R U(D + z0), 2 %;
@@ -68,7 +68,7 @@ TEST(AdhesionManager, FlatsAtSeparationCarryTheLawTimesArea) {
 // The nodal rule uses the slave's true (curved) tributary areas, i.e. 1/cos(theta) times the
 // projected area: on a sphere that is exactly Derjaguin's 2 pi R dg, 1-2 % above the projected-area
 // integral at these slopes. At larger D the constant shift sigma_a(h_c) of the cut-off law
-//    (physics.md 6.3) is no longer small against the law itself and that closed form does not apply.
+//    (docs/theory.md 6.3) is no longer small against the law itself and that closed form does not apply.
 TEST(AdhesionManager, SphereAboveFlatMatchesDerjaguin) {
   const double R = 27 * nm, cutoff = 20.0;  // h_c = 20 z0: truncation removes 0.33 % of W
   const AdhesionLaw law{W, z0, cutoff * z0};
@@ -112,7 +112,7 @@ TEST(AdhesionManager, SphereAboveFlatMatchesDerjaguin) {
   }
 }
 
-// Junction on flats (physics.md 7.3): the slave slab touching the master (gap 0 <= g_j) and sliding
+// Junction on flats (docs/theory.md 7.3): the slave slab touching the master (gap 0 <= g_j) and sliding
 // at V: tangential force = tau* A tanh(V / v_ref), opposite to V. The shear is backward Euler in the
 // slip (models/junction_shear.hpp): the law is met at the slip after the step, which differs from
 // V by at most tau* A_I dt / m_pair; heavy nodes (1e-20 kg: about 5e-6 m/s here) make that negligible,

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Adhesion integrated at face quadrature points (enforcement = mortar) against nodal tributary
-// areas (node to face), on the rigid-sphere-above-rigid-flat handle of physics.md 6.5 with COARSE
+// areas (node to face), on the rigid-sphere-above-rigid-flat handle of docs/theory.md 6.5 with COARSE
 // meshes: element sizes comparable to the range of the law's variation on the sphere.
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ double exact_force(double D, const AdhesionLaw& law) {
   return F;
 }
 
-// Sphere handle (physics.md 6.5) on coarse meshes. The face rule integrates the law over the FE
+// Sphere handle (docs/theory.md 6.5) on coarse meshes. The face rule integrates the law over the FE
 // surface to 0.2 % at every element size (asserted); against the sphere both rules also carry the
 // faceting of the FE surface: bilinear faces lie up to h^2 / (4R) (the face diagonal's sagitta,
 // 0.037 nm = 0.19 z0 at h = 2 nm) above the sphere, which lowers the force by 8-21 % at h = 2-3 nm.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The backward-Euler junction shear (contact/models/junction_shear.hpp, physics.md 7.3): stability
+// The backward-Euler junction shear (contact/models/junction_shear.hpp, docs/theory.md 7.3): stability
 // where the explicit tanh damper fails, the caps (tau* A_I and the stick force), the sign and the
 // bookkeeping of the dissipation, reversal; and in the manager, no overshoot when many slave nodes
 // share master nodes (non-matching flats).
@@ -49,7 +49,7 @@ TEST(JunctionUpdate, SlipSpeedSolvesTheBackwardEulerEquation) {
   EXPECT_EQ(junction_slip_speed(0.0, K, 0.1), 0.0);
 }
 
-// physics.md 7.3: the explicit damper c = tau* A_I / v_ref needs c dt / m = K / v_ref < 2.
+// docs/theory.md 7.3: the explicit damper c = tau* A_I / v_ref needs c dt / m = K / v_ref < 2.
 TEST(JunctionUpdate, StableWhereTheExplicitDamperIsNot) {
   std::printf("K = tau* A_I dt / m = %.3g m/s\n", K);
   // Linear regime (|v| << v_ref): explicit amplification |1 - K/v_ref|, > 1 beyond the bound.
@@ -93,7 +93,7 @@ TEST(JunctionUpdate, ForceCappedAtStrengthTimesAreaAndAtTheStickForce) {
       // F = tau* A_I tanh(|v+| / v_ref) with |v+| = slip_speed: the law at the end of the step.
       EXPECT_NEAR(f, capacity * std::tanh(up.slip_speed / v_ref), 1e-9 * capacity);
     }
-  // v_ref -> 0 is the kinematic cap of physics.md 7.3: stick below K (force = -m v_pred / dt, the
+  // v_ref -> 0 is the kinematic cap of docs/theory.md 7.3: stick below K (force = -m v_pred / dt, the
   // pair stops), slip at the full capacity above it.
   const double slow[3] = {0.3 * K, 0.0, 0.0}, fast[3] = {3.0 * K, 0.0, 0.0};
   const JunctionUpdate stick = junction_update(slow, slow, capacity, mass, dt, law(1e-9));

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The rough-surface (GW) interaction law (contact/models/rough_surface): the start-up table against
-// the GW integrals evaluated directly, the physics.md 10.4 handle, and the discrete law against an
+// the GW integrals evaluated directly, the docs/theory.md 10.4 handle, and the discrete law against an
 // independent direct sum over a map's summits (tools/surface/summit_contact).
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 namespace tribex::contact {
 namespace {
 
-// physics.md 10.4 verification handle (alpha = 10): eta = 3.0629e-3 nm^-2, R_s = 21.019 nm,
+// docs/theory.md 10.4 verification handle (alpha = 10): eta = 3.0629e-3 nm^-2, R_s = 21.019 nm,
 // sigma_s = 0.95411 nm, E* = 84.1 GPa.
 RoughSurfaceParameters handle(double work = 0.0) {
   RoughSurfaceParameters q;

@@ -42,7 +42,7 @@ inline mesh::Mesh two_flats(const TwoFlats& spec) {
   return m;
 }
 
-// Adhesion (physics.md 6.2) with `law`: a node counts as in contact within 0.05 z0 of the master,
+// Adhesion (docs/theory.md 6.2) with `law`: a node counts as in contact within 0.05 z0 of the master,
 // and the search reaches twice the cut-off gap.
 inline InteractionSettings adhesion_settings(const AdhesionLaw& law, Enforcement enforcement = Enforcement::node_to_face) {
   InteractionSettings s;

@@ -3,7 +3,7 @@
 // with known values and 5 % noise, for several parameter sets and every area model; the
 // reported sigmas are checked for calibration by Monte Carlo (about 68 % of fits within 1 sigma),
 // so the per-set 2-sigma bounds below are meaningful rather than loose. Plus the DMT
-// verification handle of physics.md 9.3 and the tau/Ec^(2/3) non-identifiability of report 3.3.
+// verification handle of docs/theory.md 9.3 and the tau/Ec^(2/3) non-identifiability of report 3.3.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -138,7 +138,7 @@ TEST(FrictionFit, UncoatedModelsRecoverTauAndW) {
   FrictionSetup md_lambda = uncoated(AreaModel::maugis_dugdale);
   md_lambda.md_lambda = 0.5;
   FrictionSetup md_z0 = uncoated(AreaModel::maugis_dugdale);
-  md_z0.md_z0 = 0.2e-9;  // lambda ~ 0.12 at W = 0.05 (physics.md 8.5)
+  md_z0.md_z0 = 0.2e-9;  // lambda ~ 0.12 at W = 0.05 (docs/theory.md 8.5)
   FrictionSetup cos_free = uncoated(AreaModel::cos);
   FrictionSetup cos_fixed = uncoated(AreaModel::cos);
   cos_fixed.cos_alpha = 0.5;
@@ -181,7 +181,7 @@ TEST(FrictionFit, PressureDependentShearStrength) {
   EXPECT_LT(fit.sigma("alpha_p"), 0.05);
 }
 
-// physics.md 9.3: DMT data, R = 27 nm, E* = 84.1 GPa, W = 0.05 J/m^2, tau* = 100 MPa, L = -5..30 nN.
+// docs/theory.md 9.3: DMT data, R = 27 nm, E* = 84.1 GPa, W = 0.05 J/m^2, tau* = 100 MPa, L = -5..30 nN.
 TEST(FrictionFit, DmtVerificationHandle) {
   const FrictionModel dmt(uncoated(AreaModel::dmt));
   const FrictionParams truth = dmt.defaults(100e6, 0.05);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Contact-area laws of the friction fit against closed forms: DMT and JKR numbers of physics.md
+// Contact-area laws of the friction fit against closed forms: DMT and JKR numbers of docs/theory.md
 // 8.2-8.5, the coated law's two limits (11.1), COS at alpha = 0 against DMT, the JKR compressive
 // load against direct quadrature, and the coating table.
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@ FrictionSetup si_uncoated(AreaModel m) {
   FrictionSetup s;
   s.model = m;
   s.radius = 27e-9;
-  s.reduced_modulus = 84.1e9;  // physics.md 8.5: Si on Si, E = 160 GPa, nu = 0.22
+  s.reduced_modulus = 84.1e9;  // docs/theory.md 8.5: Si on Si, E = 160 GPa, nu = 0.22
   return s;
 }
 
@@ -40,7 +40,7 @@ TEST(FrictionModel, JkrZeroLoadRadiusAndCompressiveLoadByQuadrature) {
   const FrictionModel m(si_uncoated(AreaModel::jkr));
   const FrictionParams p = m.defaults(1.0, 0.05);
   const double e = 84.1e9, r = 27e-9, w = 0.05;
-  const double a0 = std::cbrt(9 * pi * w * r * r / (2 * e));  // physics.md 8.3
+  const double a0 = std::cbrt(9 * pi * w * r * r / (2 * e));  // docs/theory.md 8.3
   EXPECT_NEAR(std::sqrt(m.contact(p, 0.0)->area / pi), a0, 1e-9 * a0);
   EXPECT_NEAR(m.pull_off_load(p), -1.5 * pi * w * r, 1e-20);
   for (double load : {-5e-9, 0.0, 20e-9}) {
@@ -82,7 +82,7 @@ FrictionSetup coated(double a_fit, double b) {
 }
 
 TEST(FrictionModel, CoatedLawLimits) {
-  // f = 1: Hertz against a half-space of coating, 1/E* = 1/Ebar + 1/Ebar_c (physics.md 11.1).
+  // f = 1: Hertz against a half-space of coating, 1/E* = 1/Ebar + 1/Ebar_c (docs/theory.md 11.1).
   const FrictionModel shallow(coated(1.0, 0.0));
   const FrictionParams p = shallow.defaults(1.0, 0.05);
   const double ebar = 161e9 / (1 - 0.23 * 0.23), ebar_c = 8e9 / (1 - 0.16);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The exact Maugis-Dugdale solver against the solved values of physics.md 8.4 (pull-off load and
+// The exact Maugis-Dugdale solver against the solved values of docs/theory.md 8.4 (pull-off load and
 // zero-load radius per lambda, given to 3 decimals) and the DMT / JKR limits.
 #include <gtest/gtest.h>
 
@@ -34,7 +34,7 @@ TEST(MaugisDugdale, ApproachesDmtAndJkrLimits) {
   const MaugisDugdale dmt(0.01);
   EXPECT_NEAR(dmt.pull_off().p_bar, -2.0, 0.01);
   EXPECT_NEAR(dmt.at_load(0.0).a_bar, std::cbrt(2.0), 0.01 * std::cbrt(2.0));
-  // DMT: the contact carries the Hertzian load a_bar^3 = P_bar + 2 (physics.md 8.2).
+  // DMT: the contact carries the Hertzian load a_bar^3 = P_bar + 2 (docs/theory.md 8.2).
   const MaugisPoint p = dmt.at_load(5.0);
   EXPECT_NEAR(p.carried_bar(0.01), std::pow(p.a_bar, 3), 0.01 * std::pow(p.a_bar, 3));
   const MaugisDugdale jkr(20.0);
@@ -53,7 +53,7 @@ TEST(MaugisDugdale, AtLoadInvertsAtRadius) {
 }
 
 // Pietrement-Troyon closed forms (used by the COS model) agree with the exact MD solution to 2 %
-// (physics.md 9.1), here through the cos and md models at the same lambda.
+// (docs/theory.md 9.1), here through the cos and md models at the same lambda.
 TEST(MaugisDugdale, PietrementTroyonCosModelAgreesWithinTwoPercent) {
   for (double lambda : {0.1, 0.5, 1.0, 3.0}) {
     const double alpha = (1.0 - std::exp(-lambda / 0.924)) / 1.02;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// F_n(t) against closed forms, an independent quadrature and the published values of physics.md 10.3.
+// F_n(t) against closed forms, an independent quadrature and the published values of docs/theory.md 10.3.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -53,7 +53,7 @@ TEST(GwIntegrals, AgreesWithAnIndependentQuadratureTo1e10ForHalfIntegers) {
 }
 
 TEST(GwIntegrals, PublishedValues) {
-  // physics.md 10.3, given to 5 significant digits: tolerance is half a unit of the last digit.
+  // docs/theory.md 10.3, given to 5 significant digits: tolerance is half a unit of the last digit.
   EXPECT_NEAR(gw_integral(0, 0), 0.5, 1e-15);
   EXPECT_NEAR(gw_integral(1, 0), 0.39894, 0.5e-5);
   EXPECT_NEAR(gw_integral(1.5, 0), 0.43002, 0.5e-5);

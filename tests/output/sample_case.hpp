@@ -22,7 +22,7 @@ inline mesh::Mesh make_hand_box(int nx, int ny, int nz) {
       for (int i = 0; i <= nx; ++i) m.coordinates.insert(m.coordinates.end(), {double(i), double(j), double(k)});
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)  // physics.md 2.1 order: bottom face ccw, then top face
+      for (int i = 0; i < nx; ++i)  // docs/theory.md 2.1 order: bottom face ccw, then top face
         m.connectivity.insert(m.connectivity.end(),
                               {node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
                                node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),

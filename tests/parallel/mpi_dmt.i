@@ -92,7 +92,7 @@ begin sierra mpi_dmt
           model = adhesion
           work of adhesion = 0.05 J/m^2
           equilibrium separation = 0.3 nm
-          adhesion cutoff = 6 nm      # 20 z0: the law keeps 99 % of W (physics.md 6.3)
+          adhesion cutoff = 6 nm      # 20 z0: the law keeps 99 % of W (docs/theory.md 6.3)
         end interaction sphere_flat
       end contact definition tip_on_flat
       begin history output hist

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Identities of the hex8 gradient operator and hourglass vectors (physics.md 2.1-2.2).
+// Identities of the hex8 gradient operator and hourglass vectors (docs/theory.md 2.1-2.2).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,7 +44,7 @@ TEST(Hex8Geometry, CubeValues) {
   double B[24];
   const double V = gradient_operator(X, B);
   EXPECT_NEAR(V, h * h * h, 1e-12 * h * h * h);
-  // B_iI B_iI = 3 h^4 / 2 for a cube, so L_e = h / sqrt(3) (physics.md 1.4)
+  // B_iI B_iI = 3 h^4 / 2 for a cube, so L_e = h / sqrt(3) (docs/theory.md 1.4)
   EXPECT_NEAR(characteristic_length(B, V), h / std::sqrt(3.0), 1e-12 * h);
   EXPECT_NEAR(min_corner_jacobian(X), 1.0, 1e-12);
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A single mean-quadrature element driven in the pure hourglass mode Gamma_1 (physics.md 2.2): the
+// A single mean-quadrature element driven in the pure hourglass mode Gamma_1 (docs/theory.md 2.2): the
 // stiffness form returns a non-zero restoring force, and the stored hourglass energy equals the
 // work done by the driver (trapezoidal rule, exact for the linear force) to 1e-10.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Patch test (physics.md 2.2 verification handle): a 2x2x2 hex mesh with its interior node moved
+// Patch test (docs/theory.md 2.2 verification handle): a 2x2x2 hex mesh with its interior node moved
 // to a distorted position, driven by a linear displacement field u = eps0 x, must return the
 // uniform stress C:eps0 in every element to 1e-10 relative, zero net force on the interior node,
 // and zero hourglass energy - for both element formulations and both materials.

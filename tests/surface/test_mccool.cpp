@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// McCool GW table: the verification handle of physics.md 10.5 and the load inversion.
+// McCool GW table: the verification handle of docs/theory.md 10.5 and the load inversion.
 #include <gtest/gtest.h>
 
 #include <cmath>

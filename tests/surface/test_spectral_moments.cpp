@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Spectral moments of synthetic Gaussian random surfaces against the analytic PSD integrals of
-// physics.md 10.1: m0 = 2 pi int q C dq, m2 = pi int q^3 C dq, m4 = (3 pi / 4) int q^5 C dq.
+// docs/theory.md 10.1: m0 = 2 pi int q C dq, m2 = pi int q^3 C dq, m4 = (3 pi / 4) int q^5 C dq.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,7 +68,7 @@ TEST(SpectralMoments, PowerLawPsdWithRollOffAndCutOff) {
 }
 
 TEST(SpectralMoments, SummitRelationsReproduceThePhysicsVerificationHandle) {
-  // physics.md 10.5: m0 = 1 nm^2, m2 = 0.01, m4 = 1e-3 nm^-2 (alpha = 10).
+  // docs/theory.md 10.5: m0 = 1 nm^2, m2 = 0.01, m4 = 1e-3 nm^-2 (alpha = 10).
   const surface::Moments m{1e-18, 0.01, 1e-3 * 1e18};
   const auto s = surface::summit_statistics(m);
   EXPECT_NEAR(s.alpha, 10.0, 1e-12);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The `tribex` front end: dispatches to subcommands and maps every error type of the layers
-// below onto the exit codes of ARCHITECTURE.md (0 ok, 1 internal, 2 bad input, 3 numerical
+// below onto the exit codes of docs/architecture.md (0 ok, 1 internal, 2 bad input, 3 numerical
 // failure, 130 interrupted). A new subcommand is one row in `commands` below plus its function
 // `int NAME_command(const std::vector<std::string>& args)` declared in tools/cli/commands.hpp.
 #include <mpi.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Exit codes of every tribex command (ARCHITECTURE.md, "Interfaces users see") and the errors the
+// Exit codes of every tribex command (docs/architecture.md, "Interfaces users see") and the errors the
 // command-line layer maps onto them. Layers below tools/ throw their own error types
 // (inputs::DeckError, mesh::MeshError, solver::SetupError, solver::NumericalFailure); the front
 // end in tools/cli/main.cpp maps each to one of these codes.

@@ -223,7 +223,7 @@ int friction_command(const std::vector<std::string>& argv) {
   r.tables.emplace_back("correlation", corr);
   if (setup.model == AreaModel::dmt && !setup.pressure_dependent) {
     const auto sc = dmt_shortcut(load, friction, setup.radius, model.reduced_modulus());
-    r.add("shortcut_tau", sc.tau, sc.tau_sigma, "Pa", "DMT F^(3/2)-vs-L line (physics.md 9.2)");
+    r.add("shortcut_tau", sc.tau, sc.tau_sigma, "Pa", "DMT F^(3/2)-vs-L line (docs/theory.md 9.2)");
     r.add("shortcut_W", sc.work_of_adhesion, sc.work_sigma, "J/m^2", "DMT F^(3/2)-vs-L line");
   }
 

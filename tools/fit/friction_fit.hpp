@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Nonlinear least-squares fit of a FrictionModel to friction-vs-load data (tools/common
 // Levenberg-Marquardt: covariance s^2 (J^T J)^-1 and correlation), the DMT straight-line
-// shortcut of physics.md 9.2, and synthetic data with known parameters for the tests.
+// shortcut of docs/theory.md 9.2, and synthetic data with known parameters for the tests.
 #pragma once
 
 #include <cstdint>
@@ -45,7 +45,7 @@ Combination tau_over_ec_power(const FrictionFit& fit, double exponent);
 /// Needs a fit with Ec free.
 Combination tau_over_ec_valley(const FrictionFit& fit);
 
-/// DMT shortcut (physics.md 9.2): F^(3/2) = tau^(3/2) pi^(3/2) (3R/(4E*)) (L + 2 pi W R) is a
+/// DMT shortcut (docs/theory.md 9.2): F^(3/2) = tau^(3/2) pi^(3/2) (3R/(4E*)) (L + 2 pi W R) is a
 /// straight line in L; its L-intercept gives W and its slope s gives tau = (4E* s/(3R))^(2/3)/pi.
 /// Uses the points with F > 0; sigmas from the line fit's covariance.
 struct ShortcutFit {

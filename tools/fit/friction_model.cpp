@@ -14,7 +14,7 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// Pietrement & Troyon (2000) fits to Maugis-Dugdale (physics.md 9.1; lambda^1.4, not lambda^1/4).
+// Pietrement & Troyon (2000) fits to Maugis-Dugdale (docs/theory.md 9.1; lambda^1.4, not lambda^1/4).
 double pt_pull_off_bar(double lambda) {
   if (std::isinf(lambda)) return -1.5;
   const double x = 4.04 * std::pow(lambda, 1.4);
@@ -146,7 +146,7 @@ double FrictionModel::lambda(const FrictionParams& p) const {
   if (s_.model == AreaModel::cos) return cos_lambda(p.cos_alpha);
   if (s_.model != AreaModel::maugis_dugdale) return std::numeric_limits<double>::quiet_NaN();
   if (s_.md_lambda) return *s_.md_lambda;
-  // lambda = 2 sigma0 (R/(pi W K^2))^(1/3) with the LJ peak stress sigma0 = 16W/(9 sqrt3 z0) (physics.md 6.5).
+  // lambda = 2 sigma0 (R/(pi W K^2))^(1/3) with the LJ peak stress sigma0 = 16W/(9 sqrt3 z0) (docs/theory.md 6.5).
   const double k = 4.0 * reduced_modulus() / 3.0;
   const double sigma0 = 16.0 * p.work_of_adhesion / (9.0 * std::sqrt(3.0) * *s_.md_z0);
   return 2.0 * sigma0 * std::cbrt(s_.radius / (pi * p.work_of_adhesion * k * k));

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Friction against applied load for one sliding single-asperity contact: F = tau A(L) (report
 // Eq. C.1), or F = tau0 A + alpha_p int_A p dA for a pressure-dependent shear strength
-// tau = tau0 + alpha_p p (Eq. C.2, Briscoe-Tabor; physics.md 9.3). The contact area A(L) is one of
+// tau = tau0 + alpha_p p (Eq. C.2, Briscoe-Tabor; docs/theory.md 9.3). The contact area A(L) is one of
 //   coated  report Eq. 3.1 with the DMT-like effective load P = L + 2 pi R W (report 3.3):
 //           A = pi [3PR(1 + Ebar/Ebar_c)/(4 Ebar)]^(2/3) f,  f = min(1, max(f_deep, A_fit (P/(Ebar_c h_c^2))^b)),
-//           f_deep = (2/(1 + Ebar/Ebar_c))^(2/3) (physics.md 11.1); carried load P.
-//   dmt     a^3 = R (L + 2 pi W R)/K, K = 4E*/3 (physics.md 8.2); carried load L + 2 pi W R.
+//           f_deep = (2/(1 + Ebar/Ebar_c))^(2/3) (docs/theory.md 11.1); carried load P.
+//   dmt     a^3 = R (L + 2 pi W R)/K, K = 4E*/3 (docs/theory.md 8.2); carried load L + 2 pi W R.
 //   jkr     a^3 = (R/K)[L + 3 pi W R + sqrt(6 pi W R L + (3 pi W R)^2)] (8.3); carried load: the JKR
 //           pressure p0 sqrt(1-r^2/a^2) - p1/sqrt(1-r^2/a^2) integrated where it is compressive.
 //   cos     Carpick-Ogletree-Salmeron a = a0 [(alpha + sqrt(1 - L/L_c))/(1 + alpha)]^(2/3) with

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Maugis-Dugdale (MD) sphere-on-flat adhesive contact, solved exactly in Maugis' non-dimensional
-// variables (physics.md 8.4):
+// variables (docs/theory.md 8.4):
 //   a_bar = a (K/(pi W R^2))^(1/3),  P_bar = P/(pi W R),  lambda = 2 sigma0 (R/(pi W K^2))^(1/3),
 //   m = c/a (outer radius of the Dugdale zone over the contact radius), K = 4E*/3.
 //   (1) (lambda a^2/2)[s + (m^2-2) atan s] + (4 lambda^2 a/3)[s atan s - m + 1] = 1,  s = sqrt(m^2-1)

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Sphere-on-flat contact references shared by the compare scripts (physics.md 8.2), SI units."""
+"""Sphere-on-flat contact references shared by the compare scripts (docs/theory.md 8.2), SI units."""
 import math
 
 from history_checks import max_and_mean, relative_errors

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Steady sliding of a tip with the junction model (physics.md 7): the window figures and checks
+"""Steady sliding of a tip with the junction model (docs/theory.md 7): the window figures and checks
 shared by verification/sphere_sliding/compare.py and inputs/examples/afm_sliding/afm_sliding.py.
 
 The tip top is driven along `axis` (x or y); the sliding distance is the history column

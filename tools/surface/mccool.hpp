@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // McCool's Greenwood-Williamson predictions for two rough surfaces in contact (report Eqs. 4.6-4.9,
-// Table 4.2; physics.md 10.3). With the summit statistics of the combined moments, t = d / sigma_s:
+// Table 4.2; docs/theory.md 10.3). With the summit statistics of the combined moments, t = d / sigma_s:
 //   N    = eta A0 F_0(t)                                      number of contacts
 //   Ac/A0 = pi eta R_s sigma_s F_1(t)  = 0.0640 (alpha - 0.8968)^{1/2} F_1(t)                  (4.6)
 //   P/A0  = (4/3) eta E* R_s^{1/2} sigma_s^{3/2} F_{3/2}(t)

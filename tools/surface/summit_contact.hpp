@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Discrete GW over the summits found on a height map (report Eq. 4.2; physics.md 10.5), with DMT
+// Discrete GW over the summits found on a height map (report Eq. 4.2; docs/theory.md 10.5), with DMT
 // adhesion per contacting asperity (Eq. 4.11): a rigid flat at height h above the map mean touches
 // every summit i with w_i = z_i - h > 0, each of its own radius R_i = 1/kappa_i:
 //   P(h) = sum_i (4/3) E* sqrt(R_i) w_i^{3/2}  [ - 2 pi W R_i for DMT ],   A(h) = sum_i pi R_i w_i.

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The seven cases of the report's Table B.1 (seed-report.md, Appendix B) and the runs of this study.
+"""The seven cases of the report's Table B.1 (the Sandia report "High Fidelity Frictional Models for MEMS", Appendix B; docs/theory.md 11) and the runs of this study.
 
 One table, read by make_decks.py (writes the decks) and study.py (fits A, b). Units: nm, GPa, nN.
 Table B.1 lists R, E_c, Ebar_c/Ebar, h_c/R, nu, nu_c and the largest P/(Ebar_c h_c^2) of the fit;

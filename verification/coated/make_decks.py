@@ -193,7 +193,7 @@ def write(name, run):
     if W > 0:
         adhesion = (f"          model = adhesion\n          work of adhesion = {W:g} J/m^2\n"
                     f"          equilibrium separation = 0.3 nm\n"
-                    f"          adhesion cutoff = 6 nm      # 20 z0: the law keeps 99 % of W (physics.md 6.3)\n")
+                    f"          adhesion cutoff = 6 nm      # 20 z0: the law keeps 99 % of W (docs/theory.md 6.3)\n")
     what = {"limit_thick": "Limit h_c -> infinity: substrate of the coating material (f -> 1).",
             "limit_thin": "Limit h_c -> 0: a 0.02 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), "
                           "coating density scaled to 137,500 kg/m^3 (mass scaling, KE/IE checked)."}.get(

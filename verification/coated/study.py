@@ -123,7 +123,7 @@ def power_fit(pts):
 
 def perriot_barthel_f(P, m):
     """f predicted by the Perriot & Barthel (2004) equivalent modulus of a coated half-space
-    (physics.md 11.2b): E_eq(a) = E_f + (E_s - E_f)/(1 + (x0 h_c/a)^n), n = 1.27,
+    (docs/theory.md 11.2b): E_eq(a) = E_f + (E_s - E_f)/(1 + (x0 h_c/a)^n), n = 1.27,
     log10 x0 = -0.093 + 0.792 L + 0.05 L^2, L = log10(E_s/E_f) (plane-strain moduli), and
     a^3 = 3PR/(4E*), 1/E* = 1/Ebar + 1/E_eq(a), solved by fixed-point iteration. An independent
     estimate, not a reference: their fit covers E_s/E_f up to 100 and flat-ish contacts (a SAM on Si

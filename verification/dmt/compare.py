@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """DMT check of an adhesive asperity indentation (verification/dmt/*.i).
 
-Reference (physics.md 8.2): a^3 = 3R(P + 2 pi W R)/(4E*), pull-off P_c = -2 pi W R, with
+Reference (docs/theory.md 8.2): a^3 = 3R(P + 2 pi W R)/(4E*), pull-off P_c = -2 pi W R, with
 E* = E/(2(1 - nu^2)) = 85.0 GPa, R = 27 nm, W = 0.05 J/m^2 (Tabor mu_T = 0.070 for z0 = 0.3 nm,
 so the Maugis-Dugdale pull-off is 1.95 pi W R, between DMT's 2 and the JKR 1.5).
 Measured: P = contact_normal_force (compressive minus adhesive: the load the tip applies);

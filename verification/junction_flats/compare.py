@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Junction model on flats (physics.md 7.3; issue 4): in steady sliding the friction force equals
+"""Junction model on flats (docs/theory.md 7.3; issue 4): in steady sliding the friction force equals
 tau* x contact area within 1 %, the whole 10 x 10 nm face stays in contact, and the force reverses
 with the sliding direction (base reaction in x changes sign).
 

@@ -1,4 +1,4 @@
-# junction_flats.i -- junction model on flats (physics.md 7.3 handle; issue 4): a block pressed on a
+# junction_flats.i -- junction model on flats (docs/theory.md 7.3 handle; issue 4): a block pressed on a
 # wider block, then slid forth and back at constant speed while the press is held.
 #
 # Run:    build/bin/tribex run verification/junction_flats/junction_flats.i -o junction_flats_output

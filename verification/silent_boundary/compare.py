@@ -4,7 +4,7 @@
 
 At the end time the incident pulse has reached the bottom and whatever reflected is back inside
 the column, so R = (kinetic + internal energy) / external work is the reflected energy fraction.
-Tolerances (issue "Foundation", physics.md 4.4): silent boundary R < 2 % and at least 98 % of the
+Tolerances (issue "Foundation", docs/theory.md 4.4): silent boundary R < 2 % and at least 98 % of the
 input in silent_boundary_dissipation; fixed end R > 95 % (so that the test can fail).
 """
 import argparse
@@ -34,7 +34,7 @@ def main():
     print(f"{a.case}: input energy {wext[-1]:.4e} J, reflected fraction R = {reflected:.4%}, "
           f"absorbed by dashpots {absorbed:.4%}, max energy error {err:.2e}")
     if a.case == "p_half":
-        # physics.md 4.4: R = (1 - a)/(1 + a) = 1/3 in amplitude for a = 0.5, so 1/9 of the energy;
+        # docs/theory.md 4.4: R = (1 - a)/(1 + a) = 1/3 in amplitude for a = 0.5, so 1/9 of the energy;
         # tolerance 0.333 +- 0.02 in amplitude.
         amplitude = reflected ** 0.5
         ok &= abs(amplitude - 1 / 3) < 0.02

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Sphere sliding on a flat with the junction model (issue 4 acceptance; physics.md 7, 8.2).
+"""Sphere sliding on a flat with the junction model (issue 4 acceptance; docs/theory.md 7, 8.2).
 
 Reference: steady friction F = tau* pi a^2 with a the DMT contact radius at the applied load,
 a^3 = 3 R (P + 2 pi W R) / (4 E*), E* = E / (2 (1 - nu^2)) = 85.0 GPa, R = 27 nm, W = 0.05 J/m^2,

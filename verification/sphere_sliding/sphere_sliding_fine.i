@@ -190,7 +190,7 @@ begin sierra sphere_sliding_fine
           model = junction
           work of adhesion = 0.05 J/m^2
           equilibrium separation = 0.3 nm
-          adhesion cutoff = 6 nm        # 20 z0: the law keeps 99 % of W (physics.md 6.3)
+          adhesion cutoff = 6 nm        # 20 z0: the law keeps 99 % of W (docs/theory.md 6.3)
           junction strength = 195 MPa
           junction reference speed = 0.1 m/s   # no stability floor (backward Euler): tanh(V/v_ref) = 1 in sliding
           junction gap tolerance = 0 nm

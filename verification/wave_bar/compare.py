@@ -7,7 +7,7 @@ Theory: c_d = sqrt((lambda + 2 mu)/rho) = 8854 m/s for E = 160 GPa, nu = 0.22, r
 the stress behind the front is rho c_d v0 (piston force rho c_d v0 A at the top) and doubles at the
 fixed bottom (reaction 2 rho c_d v0 A), reached at half height at t = L/c_d + t_r/2.
 Tolerances: arrival time within 1 % of L/c_d (wave speed within 1 %), plateaus within 2 %,
-energy-balance error below 0.5 % (physics.md 1.5 verification handle).
+energy-balance error below 0.5 % (docs/theory.md 1.5 verification handle).
 """
 import argparse
 import math
