@@ -507,7 +507,10 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                    "(%.1f-%.1f %% over the ranks)",
                    ranks, summary.communication_seconds, share, least, most));
   }
-  log.say(summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status);
+  const std::string closing_line = summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status;
+  log.say(closing_line);
+  // --quiet silences the terminal, not the reason a run failed: that still goes to stderr.
+  if (summary.exit_code != 0 && root && options.quiet) std::fprintf(stderr, "%s\n", closing_line.c_str());
   return summary;
 }
 

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # cmake -DTRIBEX=... -DDECK=... -DOUT=... -P expect_exit_3.cmake: the run must stop with exit code 3,
-# print "Error termination" naming an element, and leave a valid summary.json, history.csv with a
+# print "Error termination" naming an element (on stderr even with --quiet), and leave a valid summary.json, history.csv with a
 # header and rows, and a results.h5/.xdmf pair.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${TRIBEX} run ${DECK} -o ${OUT} --quiet RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
@@ -28,5 +28,10 @@ file(READ ${OUT}/log.txt _log)
 string(FIND "${_log}" "Error termination: numerical failure: element" _term)
 if(_term EQUAL -1)
   message(FATAL_ERROR "log.txt lacks the error termination line")
+endif()
+# --quiet hides the progress, not the reason for the failure (issue 29, item 14).
+string(FIND "${_err}" "Error termination: numerical failure: element" _told)
+if(_told EQUAL -1)
+  message(FATAL_ERROR "with --quiet, stderr lacks the error termination line: '${_err}'")
 endif()
 message(STATUS "exit 3 as expected: ${_err}")

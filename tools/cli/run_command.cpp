@@ -29,6 +29,19 @@ const char* check_usage =
     "  Validates a deck and its mesh without running: prints the blocks, element and node counts,\n"
     "  materials, the stable time step and the element that controls it. Writes nothing.\n";
 
+// A second positional argument is refused, not ignored (one deck per run or check).
+void one_deck(tools::Args& args, const char* command) {
+  if (args.positional_count() > 1)
+    throw tools::BadInput(std::string(command) + ": unexpected argument '" + *args.optional_positional(1) +
+                          "' (one DECK; options start with --)");
+}
+
+bool args_has_stop(const std::vector<std::string>& argv) {
+  for (const auto& a : argv)
+    if (a == "--stop-at-step" || a.rfind("--stop-at-step=", 0) == 0) return true;
+  return false;
+}
+
 }  // namespace
 
 int run_command(const std::vector<std::string>& argv) {
@@ -45,6 +58,9 @@ int run_command(const std::vector<std::string>& argv) {
   const long stop_at = args.integer("--stop-at-step", -1);
   const double heartbeat = args.real("--heartbeat", 60.0);
   args.finish();
+  one_deck(args, "tribex run");
+  if (stop_at < 0 && args_has_stop(argv))
+    throw tools::BadInput("tribex run: option --stop-at-step expects a step number >= 0, got " + std::to_string(stop_at));
   if (!(heartbeat >= 0.0))
     throw tools::BadInput("tribex run: option --heartbeat expects a number of seconds >= 0 (0 turns the heartbeat off)");
   const inputs::Deck deck = inputs::parse_deck_file(deck_path);
@@ -65,6 +81,7 @@ int check_command(const std::vector<std::string>& argv) {
   }
   const std::string deck_path = args.positional(0, "DECK");
   args.finish();
+  one_deck(args, "tribex check");
   const inputs::Deck deck = inputs::parse_deck_file(deck_path);
   std::printf("deck %s: %zu material(s), %zu section(s), %zu function(s)\n", deck_path.c_str(),
               deck.materials.size(), deck.sections.size(), deck.functions.size());

@@ -26,8 +26,8 @@ Args::Args(std::vector<std::string> argv, std::string command, std::string usage
       } else {
         options_[a] = std::nullopt;
       }
-    } else if (a == "-o" && i + 1 < argv.size()) {
-      options_["-o"] = argv[++i];
+    } else if (a == "-o") {  // a trailing -o with no folder is an error of take(), not a positional
+      options_["-o"] = i + 1 < argv.size() ? std::optional<std::string>(argv[++i]) : std::nullopt;
     } else {
       positionals_.push_back(a);
     }
