@@ -18,9 +18,9 @@ struct BestFace {
 };
 
 // A node that no candidate face projects in its interior, whose closest point lies on an edge or a
-// vertex inside the master surface (not on its boundary), sits in the wedge in front of or behind a
-// kink of the faceted surface: a soft master folded by the slave's point loads makes such ridges
-// under every loaded node. Its gap is then the signed distance to that point, along the line to it
+// vertex inside the master surface (not on its boundary), sits in the wedge in front of a ridge or
+// behind a valley of the faceted surface: a soft master folds into a valley under each of the slave's
+// point loads, and the loaded node sits below it (tests/contact/kink_test.cpp). Its gap is then the signed distance to that point, along the line to it
 // (the face normal otherwise), so the gap and the force direction stay continuous as the node
 // crosses from a face's region into the wedge. Dropping such a node, as the projection alone would,
 // removes a penalty force with its stored energy 1/2 k g^2 and adds it back on re-entry: on a 2 nm
