@@ -152,6 +152,29 @@ bool ContactManager::needs_search(const Pass& p, const double* x) const {
   return false;
 }
 
+// One-step motion of the pass's surfaces against its capture distance (ContactTotals::motion_ratio). It
+// bounds the relative approach from the nodes' speeds alone, so it also sees a body that is still far
+// from the other one and would pass through it within the step (tunnelling).
+void ContactManager::track_motion(const Pass& p, const double* v, double dt, ContactTotals& totals) const {
+  double fastest[2] = {0.0, 0.0};
+  int node_of[2] = {-1, -1};
+  for (int side = 0; side < 2; ++side)
+    for (int node : surfaces_[side == 0 ? p.slave : p.master].nodes) {
+      const double* vn = v + 3 * node;
+      const double s2 = vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2];
+      if (s2 > fastest[side]) {
+        fastest[side] = s2;
+        node_of[side] = node;
+      }
+    }
+  const double capture = p.mortar && p.capture > 0.0 ? p.capture : p.margin;
+  const double ratio = dt * (std::sqrt(fastest[0]) + std::sqrt(fastest[1])) / capture;
+  if (ratio > totals.motion_ratio) {
+    totals.motion_ratio = ratio;
+    totals.motion_node = fastest[0] >= fastest[1] ? node_of[0] : node_of[1];
+  }
+}
+
 void ContactManager::search(Pass& p, const double* x) {
   if (p.mortar && p.capture == 0.0) p.capture = p.margin + 1.25 * max_face_diameter(surfaces_[p.slave], x);
   bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.mortar ? p.capture : p.margin,
@@ -460,6 +483,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
     const ContactSurface& master = surfaces_[p.master];
     p.gap.assign(slave.nodes.size(), NAN);
     p.stable_dt = INFINITY;
+    if (v) track_motion(p, v, dt, totals);
     if (p.mortar) {
       apply_mortar(p, x, force, totals);
       if (has_axis_ && p.primary) totals.radius_edge = edge_radius(p, x);
@@ -506,6 +530,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       totals.compressive_force += fn_mag;
       if (p.model != InterfaceModel::junction) totals.area += p.factor * area;  // junction: from the shares
       totals.max_penetration = std::max(totals.max_penetration, -best.proj.gap);
+      note_penetration(totals, -best.proj.gap, area, node);
       if (p.primary) ++totals.nodes;
       if (has_axis_) {
         const double r2 = axis_distance_squared(xs, axis_point_, axis_dir_);

@@ -83,6 +83,14 @@ struct ContactTotals {
   double area = 0.0;               // contact area: tributary areas of slave nodes in contact (junction: in-contact face parts), m^2
   int nodes = 0;                   // slave nodes in contact (first pass of each interaction)
   double max_penetration = 0.0;    // m
+  // Run guards (solver/guards/README.md): the deepest penetration in local element sizes, max over
+  // slave nodes of -g / sqrt(A_I) (A_I the node's tributary area), and the largest one-step motion of
+  // the surfaces against the capture distance, max over passes of dt (max|v_slave| + max|v_master|) / margin:
+  // a bound on the relative normal approach per step; past 1 a node can cross the master unseen.
+  double max_penetration_ratio = 0.0;
+  int penetration_node = -1;       // global node of max_penetration_ratio (-1: none)
+  double motion_ratio = 0.0;
+  int motion_node = -1;            // global node moving fastest in the pass of motion_ratio
   double radius_max = 0.0;         // farthest contacting node from the axis (if one is set), m
   double radius_edge = 0.0;        // mean axis distance of the gap sign changes on slave-face edges, m
   double radius_pressure_fit = 0.0;  // a of the elliptic pressure p^2 = p0^2 (1 - r^2/a^2) fitted to the nodal pressures, m
@@ -93,6 +101,17 @@ struct ContactTotals {
   double nominal_area = 0.0;       // sum A_I over nodes with d_I below the contact separation, m^2
   double apparent_pressure() const { return nominal_area > 0.0 ? normal_force / nominal_area : 0.0; }
 };
+
+/// Records a penetration `depth` (m) of a slave node (global index) with tributary area `area` (m^2)
+/// in the guard fields of `t`.
+inline void note_penetration(ContactTotals& t, double depth, double area, int node) {
+  if (!(depth > 0.0) || !(area > 0.0)) return;
+  const double ratio = depth / std::sqrt(area);
+  if (ratio > t.max_penetration_ratio) {
+    t.max_penetration_ratio = ratio;
+    t.penetration_node = node;
+  }
+}
 
 class ContactManager {
  public:
@@ -180,6 +199,7 @@ class ContactManager {
   double edge_radius(const Pass& p, const double* x) const;
   double pressure_fit_radius() const;
   bool needs_search(const Pass& p, const double* x) const;
+  void track_motion(const Pass& p, const double* v, double dt, ContactTotals& totals) const;
   void search(Pass& p, const double* x);
   struct Accumulator;
   void apply_interface(Pass& p, int k, int face, const double* shape, const double* normal, double gap,

@@ -279,6 +279,7 @@ struct HistoryOutputSpec {
   std::optional<int> step_increment;
   std::vector<std::string> reaction_force_node_sets;
   std::vector<std::string> displacement_node_sets;
+  SourceLocation reaction_force_where, displacement_where;  // the key lines (set-up checks the node sets)
   SourceLocation where;
 };
 
@@ -292,6 +293,19 @@ struct RestartOutputSpec {
   SourceLocation where;
 };
 
+/// The run guards' thresholds (keys of `begin presto region`; solver/guards/README.md): each
+/// warning is reported once, at its first crossing, with its maximum at the end; a limit stops the run
+/// (exit 3).
+struct GuardSpec {
+  double energy_error_warning = 0.01;        // relative energy balance error
+  std::optional<double> energy_error_limit;  // stop when the relative error exceeds it
+  double penetration_warning = 0.2;          // contact penetration / local element size sqrt(A_I)
+  bool quasi_static = false;                 // the deck declares the run quasi-static
+  double kinetic_energy_warning = 0.05;      // kinetic / internal energy bound of a quasi-static run
+  double contact_motion_warning = 0.5;       // one-step surface motion / contact capture distance
+  double contact_motion_limit = 1.0;         // the same, stop (tunnelling)
+};
+
 /// `begin presto region NAME`.
 struct RegionSpec {
   std::string name;
@@ -303,7 +317,7 @@ struct RegionSpec {
   std::vector<PrescribedForceSpec> prescribed_forces;
   std::vector<SilentBoundarySpec> silent_boundaries;
   double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
-  std::optional<double> energy_error_limit;  // stop with exit 3 when the relative error exceeds it
+  GuardSpec guards;
   std::optional<ContactSpec> contact;
   std::optional<ResultsOutputSpec> results;
   std::optional<HistoryOutputSpec> history;

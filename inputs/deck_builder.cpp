@@ -336,7 +336,13 @@ class Builder {
     r.finite_element_model = word(s, "use finite element model");
     check_reference(s, "use finite element model", "finite element model", deck.models);
     r.mass_damping_coefficient = real(s, "mass damping coefficient");
-    r.energy_error_limit = optional_real(s, "energy error limit");
+    r.guards.energy_error_warning = real(s, "energy error warning");
+    r.guards.energy_error_limit = optional_real(s, "energy error limit");
+    r.guards.penetration_warning = real(s, "penetration warning");
+    if (auto v = get(s, "quasi static")) r.guards.quasi_static = v->flag;
+    r.guards.kinetic_energy_warning = real(s, "kinetic energy warning");
+    r.guards.contact_motion_warning = real(s, "contact motion warning");
+    r.guards.contact_motion_limit = real(s, "contact motion limit");
     for (const Scope& c : s.children) {
       const std::string& t = c.type();
       if (t == "fixed displacement") {
@@ -407,6 +413,8 @@ class Builder {
         schedule(c, o);
         o.reaction_force_node_sets = words(c, "reaction force");
         o.displacement_node_sets = words(c, "mean displacement");
+        o.reaction_force_where = where(c, "reaction force");
+        o.displacement_where = where(c, "mean displacement");
         r.history = o;
       } else if (t == "restart output") {
         RestartOutputSpec o;

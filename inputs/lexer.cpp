@@ -22,6 +22,8 @@ class Lexer {
 
   void lex_text(std::string_view text, const std::string& file_name) {
     total_bytes_ += text.size();
+    // A UTF-8 byte-order mark (what some Windows editors write first) is not part of the text.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     if (text.size() > limits_.max_file_bytes || total_bytes_ > limits_.max_total_bytes) {
       sink_.error(at(file_name, 1, 1), "",
                   "the deck and its includes exceed " + std::to_string(limits_.max_total_bytes >> 20) +

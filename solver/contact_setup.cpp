@@ -12,12 +12,17 @@
 namespace tribex::solver {
 namespace {
 
+// The default adhesion cut-off h_c = 20 z0 keeps 99.03 % of W (docs/theory.md 6.3; 5 z0 keeps 86.1 %,
+// 10 z0 96.3 %); a cut-off keeping less than 99 % is a set-up warning.
+constexpr double default_cutoff_in_z0 = 20.0;
+constexpr double kept_work_warning = 0.99;
+
 // Adhesion / junction parameters (docs/theory.md 6, 7) with their defaults, the capture distance of the
 // search raised to the adhesion cut-off gap; each choice goes to the run log.
 void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
                      const contact::ContactSurface& slave, const contact::ContactSurface& master,
                      const std::vector<double>& mass, double dt, contact::InteractionSettings& s,
-                     std::vector<std::string>* report) {
+                     std::vector<std::string>* report, SetupFindings* findings) {
   auto log = [&](const std::string& line) {
     if (report) report->push_back("  interaction " + it.name + ": " + line);
   };
@@ -25,13 +30,26 @@ void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpe
   s.model = junction ? contact::InterfaceModel::junction : contact::InterfaceModel::adhesion;
   s.adhesion.work = it.work_of_adhesion;
   s.adhesion.z0 = it.equilibrium_separation;
-  s.adhesion.cutoff = it.adhesion_cutoff.value_or(5.0 * it.equilibrium_separation);
+  s.adhesion.cutoff = it.adhesion_cutoff.value_or(default_cutoff_in_z0 * it.equilibrium_separation);
   s.junction.gap_tolerance = it.junction_gap_tolerance.value_or(0.05 * it.equilibrium_separation);
   log(format("adhesion W = %.4g J/m^2, z0 = %.4g m, cutoff h_c = %.4g m (%.3g z0%s), captured work %.4g J/m^2 "
              "(%.2f %% of W), in contact when gap <= %.4g m",
              s.adhesion.work, s.adhesion.z0, s.adhesion.cutoff, s.adhesion.cutoff / s.adhesion.z0,
-             it.adhesion_cutoff ? "" : ", default 5 z0", contact::captured_work(s.adhesion),
+             it.adhesion_cutoff ? "" : ", the default", contact::captured_work(s.adhesion),
              100.0 * contact::captured_work(s.adhesion) / s.adhesion.work, s.junction.gap_tolerance));
+  const double kept = contact::captured_work(s.adhesion) / s.adhesion.work;
+  if (findings && kept < kept_work_warning) {
+    RunWarning w;
+    w.kind = WarningKind::adhesion_cutoff;
+    w.value = w.max_value = kept;
+    w.threshold = kept_work_warning;
+    w.message = format("%s: interaction '%s': 'adhesion cutoff' %.4g m (%.3g z0) keeps %.1f %% of the work of "
+                       "adhesion W = %.4g J/m^2 (pull-off and adhesion energy fall short by as much); set 'adhesion "
+                       "cutoff = %.4g m' (20 z0, 99.0 %%) or remove it for the default",
+                       it.where.str().c_str(), it.name.c_str(), s.adhesion.cutoff, s.adhesion.cutoff / s.adhesion.z0,
+                       100 * kept, s.adhesion.work, default_cutoff_in_z0 * s.adhesion.z0);
+    findings->warnings.push_back(w);
+  }
   // The search must capture every pair within the cut-off gap g_c, not only penetrating ones.
   const double g_c = s.adhesion.capture_gap();
   const double margin = s.search_margin > 0 ? s.search_margin : master.mean_edge;
@@ -106,10 +124,48 @@ void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& s
                              m_master * 1e-9, m_slave * 1e-9, master.name.c_str(), slave.name.c_str()));
 }
 
+// One-point (mean-quadrature) elements under node-to-face penalty contact: at high contact pressure the
+// point forces excite the elements' hourglass modes; contact work turns negative and elements invert
+// (verification/hertz/README.md, "Element choice"). Recorded for the run guards, which raise it once
+// the penetration shows such a pressure (flat contacts at low pressure run fine on these elements).
+void note_one_point_elements(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const Model& model,
+                             SetupFindings& findings) {
+  std::vector<std::string> blocks;
+  for (const auto& surface : spec.surfaces) {
+    if (surface.name != it.slave && surface.name != it.master) continue;
+    for (const auto& set : surface.side_sets)
+      for (const auto& side : model.mesh.side_sets.at(set)) {
+        const auto& b = model.blocks[static_cast<std::size_t>(model.element_block[static_cast<std::size_t>(side.element)])];
+        if (b.formulation == inputs::ElementFormulation::mean_quadrature &&
+            std::find(blocks.begin(), blocks.end(), b.name) == blocks.end())
+          blocks.push_back(b.name);
+      }
+  }
+  if (blocks.empty()) return;
+  std::string text = format("%s: interaction '%s' on block", it.where.str().c_str(), it.name.c_str());
+  for (std::size_t k = 0; k < blocks.size(); ++k) text += (k ? ", '" : " '") + blocks[k] + "'";
+  findings.one_point_contact += (findings.one_point_contact.empty() ? "" : "; ") + text;
+}
+
+// The two surfaces of an interaction must be two bodies' faces: a side set in both would make every
+// node its own closest face (no self-contact).
+void refuse_shared_side_sets(const inputs::ContactSpec& spec, const inputs::InteractionSpec& it,
+                             const inputs::ContactSurfaceSpec& slave, const inputs::ContactSurfaceSpec& master) {
+  for (const auto& set : master.side_sets)
+    if (std::find(slave.side_sets.begin(), slave.side_sets.end(), set) != slave.side_sets.end()) {
+      const auto& later = slave.where.line > master.where.line ? slave : master;
+      throw SetupError(later.where.str() + ": error: contact surfaces '" + slave.name + "' and '" + master.name +
+                       "' of interaction '" + it.name + "' both contain side set '" + set +
+                       "'; a surface cannot contact itself: give each surface the faces of one body" +
+                       (spec.name.empty() ? "" : " (contact definition '" + spec.name + "')"));
+    }
+}
+
 }  // namespace
 
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
-                                                       std::vector<std::string>* report) {
+                                                       std::vector<std::string>* report,
+                                                       SetupFindings* findings) {
   const auto& mesh = model.mesh;
   std::vector<std::string> known;
   for (const auto& [name, sides] : mesh.side_sets) known.push_back(name);
@@ -137,6 +193,8 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     s.name = it.name;
     s.slave = index_of(it.slave);
     s.master = index_of(it.master);
+    refuse_shared_side_sets(spec, it, spec.surfaces[static_cast<std::size_t>(s.slave)],
+                            spec.surfaces[static_cast<std::size_t>(s.master)]);
     s.symmetric = it.symmetric;
     order_roles(it, spec, model, s, report);
     if (it.enforcement == inputs::InteractionEnforcement::mortar) {
@@ -152,7 +210,10 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
       rough_surface_model(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
     else if (it.model != inputs::InteractionModel::frictionless)
       interface_model(it, spec, surfaces[static_cast<std::size_t>(s.slave)], surfaces[static_cast<std::size_t>(s.master)],
-                      model.mass, dt, s, report);
+                      model.mass, dt, s, report, findings);
+    if (findings && s.enforcement == contact::Enforcement::node_to_face &&
+        it.model != inputs::InteractionModel::rough_surface)
+      note_one_point_elements(it, spec, model, *findings);
     interactions.push_back(s);
   }
   auto manager = std::make_unique<contact::ContactManager>(std::move(surfaces), std::move(interactions), model.mass, dt,

@@ -9,6 +9,7 @@
 
 #include "contact/contact_manager.hpp"
 #include "inputs/deck.hpp"
+#include "solver/guards/run_warning.hpp"
 
 namespace tribex::solver {
 
@@ -16,9 +17,12 @@ struct Model;
 
 /// Builds the manager; `dt` is the run's time step (scale factor x stable estimate, capped by the
 /// maximum time step). Throws SetupError for a side set missing from the mesh (deck line + names)
-/// or an initial overlap beyond the tolerance (the worst nodes named).
+/// or an initial overlap beyond the tolerance (the worst nodes named). Choices that run but are known
+/// to be unsafe (an adhesion cut-off that drops more than 1 % of W, one-point elements under
+/// node-to-face penalty contact) go to `findings`.
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
-                                                       std::vector<std::string>* report);
+                                                       std::vector<std::string>* report,
+                                                       SetupFindings* findings = nullptr);
 
 /// `model = rough surface` (solver/rough_surface_setup.cpp): builds the GW law (reading a summit
 /// file), the shear law and the search margin; each choice goes to the run log.

@@ -288,12 +288,18 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     model.silent.c_tangential.push_back(acc[4]);
   }
   model.mass_damping = region.mass_damping_coefficient;
+  // History columns of node sets: checked here so that `tribex check` finds a missing one.
+  if (region.history) {
+    for (const auto& name : region.history->reaction_force_node_sets)
+      node_set(m, name, region.history->reaction_force_where);
+    for (const auto& name : region.history->displacement_node_sets) node_set(m, name, region.history->displacement_where);
+  }
 
   if (region.contact) {
     const auto& tc = deck.procedure.time_control;
     const double dt = std::min(tc.time_step_scale_factor * compute_stable_time_step(model, nullptr).dt,
                                tc.maximum_time_step.value_or(INFINITY));
-    model.contact = build_contact(*region.contact, model, dt, &model.preflight);
+    model.contact = build_contact(*region.contact, model, dt, &model.preflight, &model.setup);
   }
   model.domain.init_serial(nn, m.element_count());
   return model;

@@ -13,6 +13,7 @@
 #include "inputs/deck.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/element_block.hpp"
+#include "solver/guards/run_warning.hpp"
 #include "solver/parallel/domain.hpp"
 #include "solver/time_function.hpp"
 
@@ -70,6 +71,7 @@ struct Model {
   /// Contact, when the region has a contact definition (set up by build_model).
   std::unique_ptr<contact::ContactManager> contact;
   std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)
+  SetupFindings setup;  // warnings and unsafe choices found at set-up, for the run guards (solver/guards/README.md)
   /// This rank's share of a parallel run (parallel::localize); identity on one rank.
   parallel::Domain domain;
 };

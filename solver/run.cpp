@@ -14,6 +14,8 @@
 #include <span>
 
 #include "solver/errors.hpp"
+#include "solver/guards/block_translation.hpp"
+#include "solver/guards/run_guards.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/model.hpp"
 #include "solver/output/history_writer.hpp"
@@ -164,6 +166,12 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   log.say(format("constraints: %zu dofs; silent-boundary nodes: %zu; pressure loads: %zu", global.constraints.dof.size(),
                  global.silent.node.size(), global.pressures.size()));
   for (const auto& line : global.preflight) log.say(line);
+  // Warnings go to stderr too when the terminal is otherwise quiet.
+  const auto announce = [&log, root, quiet = options.quiet](const RunWarning& w) {
+    log.say("warning: " + w.message);
+    if (root && quiet) std::fprintf(stderr, "warning: %s\n", w.message.c_str());
+  };
+  for (const auto& w : global.setup.warnings) announce(w);
 
   RunSummary summary;
   summary.identity = identity;
@@ -212,12 +220,15 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
 
   // A restart file is read and checked against the model before any output file is touched.
   CentralDifference integrator(model, tc);
+  RunGuards guards(region.guards, model.setup, static_cast<long>(std::ceil(est_steps)), announce);
+  BlockTranslation block_translation(model);
   std::optional<StateArchive> resume;
   if (!options.restart_path.empty()) {
     std::exception_ptr error;
     try {
       resume = read_restart_file(options.restart_path);
       integrator.restore_state(*resume);
+      guards.restore(*resume);
     } catch (...) {
       error = std::current_exception();
     }
@@ -325,6 +336,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   const auto write_restart = [&]() {
     StateArchive archive;
     integrator.save_state(archive);
+    guards.save(archive);
     archive.put("history_next", history_schedule.next());
     archive.put("results_next", field_schedule ? field_schedule->next() : 0.0);
     archive.put("run_wall_seconds", earlier_wall_seconds + seconds_since(wall_start));
@@ -425,9 +437,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
       if (results) results->write_step(t, nodal, element);
       field_schedule->done(t);
     }
-    if (region.energy_error_limit && E.relative_error() > *region.energy_error_limit && n > 0)
-      throw NumericalFailure(format("energy error %.3g exceeds the limit %.3g of the deck at step %ld, t = %.6g s",
-                                    E.relative_error(), *region.energy_error_limit, n, t));
+    guards.observe(n, t, E, model.contact ? &integrator.contact_totals() : nullptr,
+                   guards.wants_sample(n) ? block_translation.kinetic_energy(integrator.velocity()) : 0.0);
     if (terminal && seconds_since(last_progress) > 0.5) {
       last_progress = Clock::now();
       std::fprintf(stderr, "\r  %s   ", progress_text(n, t, E.relative_error()).c_str());
@@ -466,6 +477,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   }
   summary.loop_seconds = seconds_since(loop_start);
   if (terminal) std::fprintf(stderr, "\n");
+  guards.finish();
+  summary.warnings = guards.warnings();
   if (results) results->flush();  // collective in a parallel run: every rank gets here
 
   summary.steps = integrator.step_index();
@@ -507,7 +520,13 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                    "(%.1f-%.1f %% over the ranks)",
                    ranks, summary.communication_seconds, share, least, most));
   }
-  const std::string closing_line = summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status;
+  std::string closing_line = summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status;
+  if (!summary.warnings.empty()) {
+    std::string kinds;
+    for (const auto& w : summary.warnings) kinds += (kinds.empty() ? "" : ", ") + std::string(kind_name(w.kind));
+    closing_line += format(" (%zu warning%s: %s; see summary.json)", summary.warnings.size(),
+                           summary.warnings.size() == 1 ? "" : "s", kinds.c_str());
+  }
   log.say(closing_line);
   // --quiet silences the terminal, not the reason a run failed: that still goes to stderr.
   if (summary.exit_code != 0 && root && options.quiet) std::fprintf(stderr, "%s\n", closing_line.c_str());

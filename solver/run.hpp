@@ -4,7 +4,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "solver/guards/run_warning.hpp"
 #include "solver/output/run_identity.hpp"
 
 #include "inputs/deck.hpp"
@@ -39,6 +41,7 @@ struct RunSummary {
   double communication_seconds = 0.0;  // rank 0's loop time in halo exchange, surface gather, energy sums
   int elements = 0;
   int nodes = 0;
+  std::vector<RunWarning> warnings;  // set-up and run guards (solver/guards/README.md), in the order raised
 };
 
 /// Runs `deck`. Bad input (deck vs mesh) throws SetupError/MeshError before anything is written

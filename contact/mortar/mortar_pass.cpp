@@ -37,6 +37,7 @@ void ContactManager::apply_mortar(Pass& p, const double* x, double* force, Conta
     totals.area += p.factor * area[k];
     if (p.primary) ++totals.nodes;
     totals.max_penetration = std::max(totals.max_penetration, -mean_gap[k]);
+    note_penetration(totals, -mean_gap[k], slave.node_area[k], node);
     if (has_axis_) totals.radius_max = std::max(totals.radius_max, axis_distance(x + 3 * node, axis_point_, axis_dir_));
   }
 }

@@ -53,6 +53,10 @@ void for_each_member(C& c, Visit&& visit) {
   visit(c.real_area);
   visit(c.asperity_contacts);
   visit(c.nominal_area);
+  visit(c.max_penetration_ratio);
+  visit(c.penetration_node);  // int, stored as a double (exact)
+  visit(c.motion_ratio);
+  visit(c.motion_node);  // int, stored as a double (exact)
 }
 
 template <class T>

@@ -44,6 +44,19 @@ void write_summary_json(const std::string& path, const RunSummary& s, const Ener
                st.controlling_element + 1);
   std::fprintf(f, "  \"energy_error\": %s,\n", number(s.energy_error).c_str());
   std::fprintf(f, "  \"energy_unit\": \"J\",\n");
+  // The warnings list (solver/guards/README.md): step/time of the first crossing, the value there, the
+  // bound, and the largest value with its step/time; node 1-based (null: none).
+  std::fprintf(f, "  \"warnings\": [");
+  for (std::size_t i = 0; i < s.warnings.size(); ++i) {
+    const RunWarning& w = s.warnings[i];
+    std::fprintf(f, "%s\n    {\"kind\": %s, \"step\": %ld, \"time\": %s, \"value\": %s, \"threshold\": %s, "
+                 "\"max_value\": %s, \"max_step\": %ld, \"max_time\": %s, \"node\": %s, \"message\": %s}",
+                 i ? "," : "", json_string(kind_name(w.kind)).c_str(), w.step, number(w.time).c_str(),
+                 number(w.value).c_str(), number(w.threshold).c_str(), number(w.max_value).c_str(), w.max_step,
+                 number(w.max_time).c_str(), w.node >= 0 ? std::to_string(w.node + 1).c_str() : "null",
+                 json_string(w.message).c_str());
+  }
+  std::fprintf(f, "%s],\n", s.warnings.empty() ? "" : "\n  ");
   std::fprintf(f, "  \"energies\": {\"kinetic\": %s, \"internal\": %s, \"hourglass\": %s, \"external_work\": %s, "
                "\"silent_boundary_dissipation\": %s, \"damping_dissipation\": %s, \"viscous_dissipation\": %s, "
                "\"contact_work\": %s, \"initial\": %s}\n",

@@ -324,6 +324,7 @@ Model localize(Model&& global, const std::vector<int>& part) {
   local.total_mass = global.total_mass;
   local.contact = std::move(global.contact);
   local.preflight = std::move(global.preflight);
+  local.setup = std::move(global.setup);
   return local;
 }
 

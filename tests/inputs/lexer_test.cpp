@@ -140,3 +140,12 @@ TEST(Lexer, InputSizeIsBounded) {
 }
 
 }  // namespace
+
+// Issue 29, item 4: a deck saved with a UTF-8 byte-order mark (some Windows editors) reads as without it.
+TEST(Lexer, SkipsAUtf8ByteOrderMark) {
+  DiagnosticSink sink;
+  EXPECT_EQ(words_of("\xEF\xBB\xBF# deck\nbegin sierra s\n", sink), (Lines{{"begin", "sierra", "s"}}));
+  EXPECT_TRUE(sink.empty());
+  // Only at the start: elsewhere the bytes are part of the text as before.
+  EXPECT_EQ(words_of("a = x\xEF\xBB\xBFy\n", sink), (Lines{{"a", "=", "x\xEF\xBB\xBFy"}}));
+}

@@ -132,7 +132,7 @@ TEST(Parser, FullDeckValues) {
   EXPECT_EQ(r.silent_boundaries[0].normal_coefficient, 0.5);
   EXPECT_EQ(r.silent_boundaries[0].tangential_coefficient, 0.25);
   EXPECT_EQ(r.mass_damping_coefficient, 1e8);
-  EXPECT_EQ(r.energy_error_limit.value(), 0.1);
+  EXPECT_EQ(r.guards.energy_error_limit.value(), 0.1);
   ASSERT_TRUE(r.results.has_value());
   expect_close(r.results->time_increment.value(), 100e-12);
   EXPECT_FALSE(r.results->step_increment.has_value());
@@ -165,7 +165,7 @@ TEST(Parser, DefaultsOfTheMinimalDeck) {
   EXPECT_EQ(d.procedure.time_control.time_step_scale_factor, 0.9);
   EXPECT_FALSE(d.procedure.time_control.maximum_time_step.has_value());
   EXPECT_EQ(d.procedure.region.mass_damping_coefficient, 0.0);
-  EXPECT_FALSE(d.procedure.region.energy_error_limit.has_value());
+  EXPECT_FALSE(d.procedure.region.guards.energy_error_limit.has_value());
   EXPECT_FALSE(d.procedure.region.results.has_value());
   EXPECT_NE(d.resolved_text.find("hourglass stiffness = 0.05"), std::string::npos);
   EXPECT_NE(d.resolved_text.find("time step scale factor = 0.9"), std::string::npos);

@@ -109,6 +109,7 @@ begin sierra dmt_fine
     begin presto region main
       use finite element model asperity
       mass damping coefficient = 5e11 1/s
+      quasi static = on             # run guards: kinetic energy below 5 % of internal energy while loaded
       begin fixed displacement
         node set = substrate_bottom
         components = x y z

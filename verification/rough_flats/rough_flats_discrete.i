@@ -59,6 +59,8 @@ begin sierra rough_flats_discrete
     begin presto region main
       use finite element model blocks
       mass damping coefficient = 2e8 1/s
+      quasi static = on             # run guards: kinetic energy below 5 % of internal energy while loaded
+      energy error warning = 0.015  # the damped approach peaks at 1.18 % (1.1 ns, energies 1e-16 J); 0.4 % once loaded
       begin fixed displacement
         node set = lower_all
         components = x y z

@@ -78,6 +78,7 @@ begin sierra {name}
     begin presto region main
       use finite element model asperity
       mass damping coefficient = {damping} 1/s
+      quasi static = on             # run guards: kinetic energy below 5 % of internal energy while loaded
 {boundary_conditions}
 {contact}
 {outputs}

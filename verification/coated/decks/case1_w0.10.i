@@ -115,6 +115,7 @@ begin sierra case1_w0.10
     begin presto region main
       use finite element model asperity
       mass damping coefficient = 5e11 1/s
+      quasi static = on             # run guards: kinetic energy below 5 % of internal energy while loaded
       # Symmetry planes hold x (y); with them no rigid lateral motion or spin is left, so the
       # bottom is a roller (z) and the tip top is only driven in z (a node is constrained once).
       begin fixed displacement

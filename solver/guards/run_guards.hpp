@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// The run guards (solver/guards/README.md): watched every step, they turn a run that goes physically
+// wrong into warnings (each once, at its first crossing, its maximum kept) and, past a limit, into a
+// numerical failure (exit 3). Set-up warnings (the model's) open the list.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "contact/contact_manager.hpp"
+#include "inputs/deck.hpp"
+#include "solver/energy.hpp"
+#include "solver/guards/run_warning.hpp"
+
+namespace tribex::solver {
+
+class StateArchive;
+
+/// The message of a run-time warning from its numbers (also for warnings read back from a restart file);
+/// `one_point_contact` names the interactions and blocks of an unsafe_choice raised in the run.
+std::string describe(const RunWarning& w, const std::string& one_point_contact = "");
+
+/// Contact penetration, in local element sizes, that marks high pressure for one-point elements under
+/// node-to-face penalty contact (solver/guards/README.md).
+inline constexpr double one_point_penetration = 0.1;
+
+class RunGuards {
+ public:
+  /// `say` prints a warning as it is raised (terminal and log); `expected_steps` sizes the quasi-static
+  /// samples once (no allocation in the loop).
+  RunGuards(const inputs::GuardSpec& spec, SetupFindings setup, long expected_steps,
+            std::function<void(const RunWarning&)> say);
+
+  /// At time n of step `step` (after its outputs). Throws NumericalFailure past a limit; `contact`
+  /// null without contact. `translational_kinetic`: the kinetic energy of the blocks' mean translation
+  /// (BlockTranslation), needed on the steps where wants_sample() is true.
+  void observe(long step, double t, const Energies& energies, const contact::ContactTotals* contact,
+               double translational_kinetic = 0.0);
+
+  /// Whether this step's observe takes a quasi-static sample (and so needs translational_kinetic).
+  bool wants_sample(long step) const { return spec_.quasi_static && step % stride_ == 0; }
+
+  /// At the end of the run (any exit): the quasi-static check over the loaded part of the run.
+  void finish();
+
+  const std::vector<RunWarning>& warnings() const { return warnings_; }
+
+  /// The run-time warnings and the quasi-static samples, for a restart file (set-up warnings are
+  /// made again by the resumed run's set-up).
+  void save(StateArchive& archive) const;
+  void restore(const StateArchive& archive);
+
+ private:
+  struct Watch {
+    WarningKind kind;
+    double threshold;
+    int entry = -1;  // index in warnings_ once raised
+  };
+  void watch(Watch& w, long step, double t, double value, int node);
+  void scan_quasi_static();
+  RunWarning& entry(const Watch& w) { return warnings_[static_cast<std::size_t>(w.entry)]; }
+  std::string text(const RunWarning& w) const { return describe(w, one_point_contact_); }
+
+  inputs::GuardSpec spec_;
+  std::vector<RunWarning> warnings_;
+  std::function<void(const RunWarning&)> say_;
+  Watch energy_, penetration_, motion_, one_point_;
+  std::string one_point_contact_;  // SetupFindings::one_point_contact
+  // Quasi-static samples (step, t, kinetic, internal) every stride_ steps; thinned in place when full.
+  std::vector<double> samples_;
+  std::size_t capacity_ = 0;
+  long stride_ = 1;
+};
+
+
+}  // namespace tribex::solver
