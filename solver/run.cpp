@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 
+#include "inputs/sha256.hpp"
 #include "solver/errors.hpp"
 #include "solver/guards/block_translation.hpp"
 #include "solver/guards/run_guards.hpp"
@@ -27,30 +28,10 @@
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/restart_output.hpp"
 #include "solver/restart/state_archive.hpp"
+#include "solver/stop_signal.hpp"
 
 namespace tribex::solver {
 namespace {
-
-volatile std::sig_atomic_t g_stop_signal = 0;
-extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
-
-/// Installs SIGINT/SIGTERM handlers for the lifetime of the run and restores the old ones.
-class SignalGuard {
- public:
-  SignalGuard() {
-    g_stop_signal = 0;
-    old_int_ = std::signal(SIGINT, on_stop_signal);
-    old_term_ = std::signal(SIGTERM, on_stop_signal);
-  }
-  ~SignalGuard() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-
- private:
-  void (*old_int_)(int);
-  void (*old_term_)(int);
-};
 
 /// "Every N steps or every dt seconds of simulated time", plus the first and the last state.
 class Schedule {
@@ -83,6 +64,67 @@ std::string human_seconds(double s) {
   if (s < 120) return format("%.0f s", s);
   if (s < 7200) return format("%.1f min", s / 60);
   return format("%.1f h", s / 3600);
+}
+
+// A fresh run into an existing output folder first removes the files tribex writes there (an earlier
+// run's outputs and restart files, never anything else), so that runs are not mixed; a symbolic link in
+// one of those names is removed as a link, its target untouched. A resumed run continues the folder.
+std::size_t clear_owned_outputs(const std::filesystem::path& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return 0;
+  std::vector<fs::path> owned;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    const bool restart = name.rfind("restart", 0) == 0 && (name.ends_with(".h5") || name.ends_with(".h5.link"));
+    const bool output = name == "history.csv" || name == "results.h5" || name == "results.xdmf" ||
+                        name == "summary.json" || name == "summary.json.tmp" || name == "log.txt" ||
+                        name == "results.xdmf.tmp";
+    if (restart || output) owned.push_back(entry.path());
+  }
+  for (const auto& p : owned) {
+    fs::remove(p, ec);  // a symlink itself, not its target
+    if (ec) throw SetupError("cannot remove the earlier run's " + p.string() + " (" + ec.message() +
+                             "); remove it or choose another output folder (-o)");
+  }
+  return owned.size();
+}
+
+// What a restart file records of the run that wrote it: the resolved deck (text, as integer codes) and the
+// SHA-256 of the mesh (coordinates and connectivity). A resumed run compares them with its own.
+std::vector<long long> as_codes(const std::string& text) {
+  return std::vector<long long>(text.begin(), text.end());
+}
+std::string from_codes(const std::vector<long long>& codes) {
+  std::string text;
+  for (long long c : codes) text.push_back(static_cast<char>(c));
+  return text;
+}
+std::string mesh_sha256(const mesh::Mesh& m) {
+  std::string bytes(reinterpret_cast<const char*>(m.coordinates.data()), m.coordinates.size() * sizeof(double));
+  bytes.append(reinterpret_cast<const char*>(m.connectivity.data()), m.connectivity.size() * sizeof(int));
+  return inputs::sha256_hex(bytes);
+}
+
+// "" when the restart file was written by this deck and mesh; else what differs, one line.
+std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash) {
+  if (!archive.has("deck_text") || !archive.has("mesh_sha256")) return "";  // an earlier tribex: not recorded
+  if (from_codes(archive.integer_array("mesh_sha256")) != mesh_hash) return "the mesh differs (coordinates or connectivity)";
+  const std::string old_text = from_codes(archive.integer_array("deck_text"));
+  if (old_text == deck_text) return "";
+  std::size_t line = 1, a = 0, b = 0;
+  while (true) {
+    const std::size_t ea = old_text.find('\n', a), eb = deck_text.find('\n', b);
+    const std::string la = old_text.substr(a, ea == std::string::npos ? std::string::npos : ea - a);
+    const std::string lb = deck_text.substr(b, eb == std::string::npos ? std::string::npos : eb - b);
+    if (la != lb)
+      return format("the resolved deck differs at its line %zu: '%s' then, '%s' now", line,
+                    la.c_str(), lb.c_str());
+    if (ea == std::string::npos || eb == std::string::npos) return "the resolved deck differs at its end";
+    a = ea + 1;
+    b = eb + 1;
+    ++line;
+  }
 }
 
 // Exit code of an error thrown inside run_deck (the CLI maps the same types the same way).
@@ -128,6 +170,15 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   const auto& region = deck.procedure.region;
   const auto& tc = deck.procedure.time_control;
 
+  // Set-up is not interrupted half-way: a stop that arrives before the outputs exist ends the run here,
+  // with nothing written (every rank at the same point).
+  const auto stop_before_outputs = [&](const char* stage) {
+    int stop = stop_signal();
+    if (ranks > 1) stop = static_cast<int>(parallel::max(static_cast<long long>(stop)));
+    if (stop && !options.check_only)
+      throw Interrupted(std::string("interrupted during set-up (") + stage + "); nothing was written");
+  };
+  fault_signal_point("setup");
   const RunIdentity identity = identify_run(deck.path, ranks);
   log.say(identity_line(identity));
   // Bad input is found here, before any file is written. Every rank builds the whole model (the
@@ -215,6 +266,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                    "on partition boundaries",
                    ranks, *fewest, *most, shared));
   }
+  stop_before_outputs("after the model was built");
+  const std::string mesh_hash = mesh_sha256(global.mesh);
   Model model = parallel::localize(std::move(global), part);
   auto& domain = model.domain;
 
@@ -227,6 +280,12 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     std::exception_ptr error;
     try {
       resume = read_restart_file(options.restart_path);
+      const std::string changed = restart_difference(*resume, deck.resolved_text, mesh_hash);
+      if (!changed.empty() && !options.restart_allow_changed)
+        throw SetupError(options.restart_path + ": error: this restart file was written by another run: " + changed +
+                         "; resume with the deck and mesh that wrote it, or add --restart-allow-changed to go on with "
+                         "these (for example a longer termination time)");
+      if (!changed.empty()) log.say("restart: --restart-allow-changed: " + changed);
       integrator.restore_state(*resume);
       guards.restore(*resume);
     } catch (...) {
@@ -237,6 +296,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                    integrator.step_index(), integrator.time()));
   }
 
+  stop_before_outputs("before the output files were opened");
   // Outputs.
   namespace fs = std::filesystem;
   const fs::path out(options.output_directory);
@@ -244,9 +304,12 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   if (root) {
     try {
       std::error_code ec;
+      const std::size_t cleared = resume ? 0 : clear_owned_outputs(out);
       fs::create_directories(options.output_directory, ec);
       if (ec) throw SetupError("cannot create output folder " + options.output_directory + ": " + ec.message());
       log.open((out / "log.txt").string(), resume.has_value());
+      if (cleared) log.say(format("output folder %s: removed %zu file(s) of an earlier run (outputs, restart files)",
+                                  out.string().c_str(), cleared));
       log.record("# resolved deck (defaults filled in, SI units)\n" + deck.resolved_text + "\n");
     } catch (...) {
       output_error = std::current_exception();
@@ -337,6 +400,8 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     StateArchive archive;
     integrator.save_state(archive);
     guards.save(archive);
+    archive.put_integers("deck_text", as_codes(deck.resolved_text));
+    archive.put_integers("mesh_sha256", as_codes(mesh_hash));
     archive.put("history_next", history_schedule.next());
     archive.put("results_next", field_schedule ? field_schedule->next() : 0.0);
     archive.put("run_wall_seconds", earlier_wall_seconds + seconds_since(wall_start));
@@ -450,27 +515,27 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
     }
   };
 
+  fault_signal_point("outputs");
   const std::function<void()> on_time_n = write_outputs;  // built once: no allocation per step
   const double contact_seconds_before = integrator.contact_seconds();  // earlier segments' (restart file)
-  SignalGuard signals;
   log.say("running ...");
   loop_start = Clock::now();
+  bool stopped_at_step = false;
   try {
     if (!resume) integrator.init();
     while (!integrator.finished()) {
       integrator.step(on_time_n);
-      bool stop = g_stop_signal || (options.stop_at_step >= 0 && integrator.step_index() >= options.stop_at_step);
+      stopped_at_step = options.stop_at_step >= 0 && integrator.step_index() >= options.stop_at_step;
+      bool stop = stop_signal() || stopped_at_step;
       if (ranks > 1) stop = parallel::max(static_cast<long long>(stop)) > 0;  // every rank stops at the same step
       if (restart_output && (stop || restart_output->due(integrator.step_index()))) write_restart();
-      if (stop) {
-        if (!g_stop_signal) g_stop_signal = SIGINT;
-        break;
-      }
+      if (stop) break;
     }
     closing = true;
     integrator.close(on_time_n);
-    summary.exit_code = g_stop_signal ? 130 : 0;
-    summary.status = g_stop_signal ? "interrupted" : "normal termination";
+    const bool interrupted = stop_signal() || stopped_at_step;
+    summary.exit_code = interrupted ? 130 : 0;
+    summary.status = interrupted ? "interrupted" : "normal termination";
   } catch (const NumericalFailure& e) {
     summary.exit_code = 3;
     summary.status = std::string("numerical failure: ") + e.what();

@@ -23,6 +23,13 @@ std::string nm(double v) {
   return b;
 }
 
+// An element count as "%.3g" (1e+14 for what no integer type of the mesh could hold).
+std::string format_count(double count) {
+  char b[32];
+  std::snprintf(b, sizeof b, count < 1e9 ? "%.0f" : "%.3g", count);
+  return b;
+}
+
 std::string rect(const std::array<double, 4>& r) {
   std::string s = "(";  // built by appends: GCC 12 gives a false -Wrestrict on "(" + std::string
   s += nm(r[0]);
@@ -35,7 +42,6 @@ std::string rect(const std::array<double, 4>& r) {
   return s;
 }
 
-constexpr long max_elements = 20'000'000;  // ~ 6 GB of mesh + solver state: refuse rather than swap
 
 void check_spec(const HeightMap& map, const AfmMeshSpec& s) {
   const std::string& f = map.source;
@@ -97,9 +103,22 @@ Mesh generate_afm_mesh(const HeightMap& map, const AfmMeshSpec& spec, AfmMeshRep
     throw MeshError(f + ": track " + rect(track) + " must be non-empty and inside the window " + rect(window));
 
   const double h = spec.element_size, r = spec.grading_ratio;
+  // The element count is estimated before anything of the mesh's size is allocated: the track alone
+  // needs (W/h) x (H/h) columns of at least one element each.
+  const auto over_limit = [&](double count, const std::string& what) {
+    return MeshError(f + ": " + what + " " + format_count(count) + " elements, over the limit of " +
+                     std::to_string(spec.max_elements) + "; use a larger element size, a smaller track or window, or " +
+                     "raise the limit (--max-elements)");
+  };
+  const double track_columns = std::ceil(track[2] / h) * std::ceil(track[3] / h);
+  if (!(track_columns <= static_cast<double>(spec.max_elements)))
+    throw over_limit(track_columns, "the track alone (" + nm(track[2]) + " x " + nm(track[3]) + " at " + nm(h) + ") needs at least");
   const auto xs = graded_axis(window[0], window[0] + window[2], track[0], track[0] + track[2], h, r);
   const auto ys = graded_axis(window[1], window[1] + window[3], track[1], track[1] + track[3], h, r);
   const int nx = static_cast<int>(xs.size()) - 1, ny = static_cast<int>(ys.size()) - 1;
+  if (static_cast<double>(nx) * ny > static_cast<double>(spec.max_elements))
+    throw over_limit(static_cast<double>(nx) * ny, "the window's " + std::to_string(nx) + " x " + std::to_string(ny) +
+                                                       " columns need at least");
 
   // Layers with depth. Reference substrate thickness T = depth - t_c under the mean height; the
   // blended layers stretch by (s - t_c - z_bot)/T over a point of the surface, so the first layer is
@@ -122,10 +141,9 @@ Mesh generate_afm_mesh(const HeightMap& map, const AfmMeshSpec& spec, AfmMeshRep
   sigma[nzs] = 1.0;
 
   const long elements = static_cast<long>(nx) * ny * nz;
-  if (elements > max_elements)
-    throw MeshError(f + ": the mesh would have " + std::to_string(elements) + " elements (" + std::to_string(nx) + " x " +
-                    std::to_string(ny) + " x " + std::to_string(nz) + "), over the limit of " + std::to_string(max_elements) +
-                    "; use a larger element size, a smaller track or window");
+  if (elements > spec.max_elements)
+    throw over_limit(static_cast<double>(elements), "the mesh (" + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
+                                                        std::to_string(nz) + ") would have");
 
   Mesh m;
   const int px = nx + 1, py = ny + 1;

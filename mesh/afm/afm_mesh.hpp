@@ -32,6 +32,7 @@ struct AfmMeshSpec {
   double coating_thickness = 0.0;   // m, 0: no coating
   int coating_layers = 6;           // elements through the coating
   double grading_ratio = 1.3;       // in [1, 1.3]: size ratio of neighbouring elements outside the track
+  long max_elements = 20'000'000;   // refuse a larger mesh before allocating it (~ 6 GB of mesh + solver state)
 };
 
 /// What was built, for the command line and the tests.

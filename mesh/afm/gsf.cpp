@@ -18,7 +18,7 @@ HeightMap read_gsf(const std::string& path) {
   const std::string bytes = read_file_bytes(path);
   const std::string magic = "Gwyddion Simple Field 1.0\n";
   if (bytes.compare(0, magic.size(), magic) != 0)
-    throw MeshError(path + ": byte 0: expected the magic line 'Gwyddion Simple Field 1.0' (not a GSF file)");
+    throw MeshError(path + ":1:1: expected the magic line 'Gwyddion Simple Field 1.0' (not a GSF file)");
   const std::size_t nul = bytes.find('\0');
   if (nul == std::string::npos)
     throw MeshError(path + ": byte " + std::to_string(bytes.size()) +

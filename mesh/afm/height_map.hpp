@@ -52,7 +52,8 @@ HeightMap read_xyz_text(const std::string& path);
 /// accept -1 or 0.
 HeightMap read_height_map(const std::string& path, int channel = -1);
 
-/// Reads a whole file into memory (MeshError if it cannot be opened).
+/// Reads a whole regular file of at most 1 GiB into memory (MeshError otherwise: a device, pipe or folder,
+/// a missing or unreadable file, a larger one).
 std::string read_file_bytes(const std::string& path);
 
 /// Throws MeshError unless the map is usable: >= 2x2 pixels, finite positive spacings and finite heights.

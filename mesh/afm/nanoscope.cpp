@@ -26,12 +26,17 @@ namespace {
 struct HeaderLine {
   std::string key, value;
   std::size_t offset;  // byte offset of the line in the file
+  int line = 0;        // 1-based line number (messages say FILE:LINE:1)
 };
 
 struct Channel {
   std::map<std::string, HeaderLine> keys;  // lower-case key -> line
   std::size_t offset;                      // of the section line
+  int line = 0;
 };
+
+// "FILE:LINE:1" for a header line (the header is text; the data after it are binary, named by byte).
+std::string at(const std::string& path, int line) { return path + ":" + std::to_string(line) + ":1"; }
 
 struct Header {
   std::size_t size = 0;
@@ -79,29 +84,30 @@ Header parse_header(const std::string& path, const std::string& bytes) {
   std::string section;
   bool ended = false;
   const std::size_t limit = std::min<std::size_t>(bytes.size(), 1u << 20);
+  int line_no = 0;
   while (pos < limit) {
     std::size_t eol = bytes.find('\n', pos);
     if (eol == std::string::npos || eol > limit) eol = limit;
     std::string line = bytes.substr(pos, eol - pos);
     const std::size_t line_offset = pos;
+    ++line_no;
     pos = eol + 1;
     while (!line.empty() && (line.back() == '\r' || line.back() == '\x1a')) line.pop_back();
     if (line.empty()) continue;
     if (line[0] != '\\')
-      throw MeshError(path + ": byte " + std::to_string(line_offset) +
-                      ": expected a Nanoscope header line starting with '\\' (the header is corrupt)");
+      throw MeshError(at(path, line_no) + ": expected a Nanoscope header line starting with '\\' (the header is corrupt)");
     if (line.size() > 1 && line[1] == '*') {
       section = lower(trim(line.substr(2)));
       if (section == "file list end") {
         ended = true;
         break;
       }
-      if (section == "ciao image list") h.channels.push_back(Channel{{}, line_offset});
+      if (section == "ciao image list") h.channels.push_back(Channel{{}, line_offset, line_no});
       continue;
     }
     const std::size_t colon = line.find(':', (line.size() > 1 && line[1] == '@') ? 4 : 1);
     if (colon == std::string::npos) continue;  // keys without value carry nothing we need
-    HeaderLine hl{lower(trim(line.substr(1, colon - 1))), trim(line.substr(colon + 1)), line_offset};
+    HeaderLine hl{lower(trim(line.substr(1, colon - 1))), trim(line.substr(colon + 1)), line_offset, line_no};
     if (section == "file list" && !h.file_list.count(hl.key)) h.file_list[hl.key] = hl;
     if (hl.key.rfind("@sens. ", 0) == 0) {
       // "\@Sens. Zsens: V 34.55678 nm/V"
@@ -109,20 +115,26 @@ Header parse_header(const std::string& path, const std::string& bytes) {
       if (v.rfind("V ", 0) == 0) v = v.substr(2);
       v = trim(v);
       const std::size_t sp = v.find(' ');
-      auto num = to_number(v.substr(0, sp));
+      const std::string token = v.substr(0, sp);
+      auto num = to_number(token);
+      // A NaN, infinite, zero or negative sensitivity would silently uncalibrate (or invert) its channel.
+      const std::string word = lower(token);
+      if ((num && !(*num > 0.0)) || (!num && (word.find("nan") != std::string::npos || word.find("inf") != std::string::npos)))
+        throw MeshError(at(path, line_no) + ": '\\" + line.substr(1) + "': the sensitivity must be a positive finite "
+                        "number (the header is corrupt)");
       if (num) h.sens[hl.key.substr(7)] = {*num, sp == std::string::npos ? "" : trim(v.substr(sp + 1))};
     }
     if (section == "ciao image list" && !h.channels.empty()) h.channels.back().keys[hl.key] = hl;
   }
   if (!ended)
-    throw MeshError(path + ": byte " + std::to_string(pos > bytes.size() ? bytes.size() : pos) +
-                    ": expected the header line '\\*File list end' (the file is truncated or not a Nanoscope file)");
+    throw MeshError(at(path, line_no) +
+                    ": expected the header line '\\*File list end' by here (the file is truncated or not a Nanoscope file)");
   auto dl = h.file_list.find("data length");
   if (dl == h.file_list.end())
     throw MeshError(path + ": expected '\\Data length' in the '\\*File list' section (the header size is unknown)");
   auto size = to_number(dl->second.value);
   if (!size || *size <= 0 || *size > static_cast<double>(bytes.size()))
-    throw MeshError(path + ": byte " + std::to_string(dl->second.offset) + ": '\\Data length: " + dl->second.value +
+    throw MeshError(at(path, dl->second.line) + ": '\\Data length: " + dl->second.value +
                     "' is not a header size within the file's " + std::to_string(bytes.size()) + " bytes");
   h.size = static_cast<std::size_t>(*size);
   if (h.channels.empty())
@@ -133,7 +145,7 @@ Header parse_header(const std::string& path, const std::string& bytes) {
 const HeaderLine& need(const std::string& path, const Channel& c, const std::string& key, int index) {
   auto it = c.keys.find(key);
   if (it == c.keys.end())
-    throw MeshError(path + ": byte " + std::to_string(c.offset) + ": channel " + std::to_string(index) +
+    throw MeshError(at(path, c.line) + ": channel " + std::to_string(index) +
                     " lacks the header key '\\" + key + "' (the header is incomplete)");
   return it->second;
 }
@@ -142,7 +154,7 @@ long need_int(const std::string& path, const Channel& c, const std::string& key,
   const HeaderLine& l = need(path, c, key, index);
   auto v = to_number(l.value);
   if (!v || *v != std::floor(*v) || *v < static_cast<double>(lo) || *v > static_cast<double>(hi))
-    throw MeshError(path + ": byte " + std::to_string(l.offset) + ": '\\" + key + ": " + l.value +
+    throw MeshError(at(path, l.line) + ": '\\" + key + ": " + l.value +
                     "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return static_cast<long>(*v);
 }
@@ -164,6 +176,7 @@ struct ZScale {
   double soft = 0.0;       // unit per V
   double unit_to_m = 0.0;  // 0 when the soft unit is not a length
   std::size_t offset = 0;
+  int line = 0;
 };
 
 std::optional<ZScale> z_scale(const std::string& path, const Header& h, const Channel& c) {
@@ -172,9 +185,10 @@ std::optional<ZScale> z_scale(const std::string& path, const Header& h, const Ch
   const std::string& v = it->second.value;  // V [Sens. ZsensSens] (0.000375 V/LSB) 24.57563 V
   ZScale z;
   z.offset = it->second.offset;
+  z.line = it->second.line;
   const auto a = v.find('['), b = v.find(']'), close = v.rfind(')');
   if (a == std::string::npos || b == std::string::npos || close == std::string::npos || b < a)
-    throw MeshError(path + ": byte " + std::to_string(z.offset) +
+    throw MeshError(at(path, z.line) +
                     ": expected '\\@2:Z scale: V [Sens. NAME] (x V/LSB) VALUE V', got '" + v + "'");
   std::string sens = lower(trim(v.substr(a + 1, b - a - 1)));
   if (sens.rfind("sens. ", 0) == 0) sens = sens.substr(6);
@@ -182,9 +196,12 @@ std::optional<ZScale> z_scale(const std::string& path, const Header& h, const Ch
   const auto sp = tail.find(' ');
   auto hard = to_number(tail.substr(0, sp));
   if (!hard)
-    throw MeshError(path + ": byte " + std::to_string(z.offset) + ": expected a number after ')' in the Z scale line, got '" +
+    throw MeshError(at(path, z.line) + ": expected a number after ')' in the Z scale line, got '" +
                     tail + "'");
   z.hard = *hard;
+  if (!(z.hard > 0.0))
+    throw MeshError(at(path, z.line) + ": the Z scale " + tail + " must be positive (a negative or zero scale would "
+                    "invert or flatten the surface; the header is corrupt)");
   auto s = h.sens.find(sens);
   if (s == h.sens.end()) return z;  // no soft scale: not a calibrated height
   z.soft = s->second.first;
@@ -234,7 +251,7 @@ HeightMap read_nanoscope(const std::string& path, int channel) {
   const std::string name = channel_name(c);
   const long bpp = need_int(path, c, "bytes/pixel", channel, 1, 8);
   if (bpp != 2 && bpp != 4)
-    throw MeshError(path + ": byte " + std::to_string(need(path, c, "bytes/pixel", channel).offset) +
+    throw MeshError(at(path, need(path, c, "bytes/pixel", channel).line) +
                     ": Bytes/pixel must be 2 or 4, got " + std::to_string(bpp));
   const long samps = need_int(path, c, "samps/line", channel, 1, 1 << 16);
   const long lines = need_int(path, c, "number of lines", channel, 1, 1 << 16);
@@ -245,7 +262,7 @@ HeightMap read_nanoscope(const std::string& path, int channel) {
                     ") is not a height channel (its Z scale has no length unit); pick a height channel with --channel");
   if (!(std::isfinite(z->hard) && std::isfinite(z->soft)) || z->hard == 0.0 || z->soft == 0.0 ||
       std::fabs(z->hard * z->soft * z->unit_to_m) > 1.0)
-    throw MeshError(path + ": byte " + std::to_string(z->offset) + ": Z scale " + std::to_string(z->hard) + " V x " +
+    throw MeshError(at(path, z->line) + ": Z scale " + std::to_string(z->hard) + " V x " +
                     std::to_string(z->soft) + " per V is zero or absurd (> 1 m full scale); the header is corrupt");
   // Scan size "sx sy unit" (older files: "\Scan size"; both lower-cased here).
   const HeaderLine& ss = need(path, c, "scan size", channel);
@@ -258,7 +275,7 @@ HeightMap read_nanoscope(const std::string& path, int channel) {
     auto b = s2 == std::string::npos ? std::nullopt : to_number(v.substr(s1 + 1, s2 - s1 - 1));
     auto u = s2 == std::string::npos ? std::nullopt : length_unit(v.substr(s2 + 1));
     if (!a || !b || !u || *a <= 0 || *b <= 0)
-      throw MeshError(path + ": byte " + std::to_string(ss.offset) + ": expected '\\Scan Size: SX SY UNIT' with positive sizes and a length unit, got '" +
+      throw MeshError(at(path, ss.line) + ": expected '\\Scan Size: SX SY UNIT' with positive sizes and a length unit, got '" +
                       v + "'");
     sx = *a * *u;
     sy = *b * *u;
@@ -268,7 +285,7 @@ HeightMap read_nanoscope(const std::string& path, int channel) {
   if (c.keys.count("data length")) {
     const long declared = need_int(path, c, "data length", channel, 0, 1L << 40);
     if (static_cast<std::size_t>(declared) < need_bytes)
-      throw MeshError(path + ": byte " + std::to_string(need(path, c, "data length", channel).offset) + ": channel " +
+      throw MeshError(at(path, need(path, c, "data length", channel).line) + ": channel " +
                       std::to_string(channel) + " declares " + std::to_string(declared) + " data bytes but " +
                       std::to_string(samps) + " x " + std::to_string(lines) + " pixels x " + std::to_string(bpp) +
                       " bytes need " + std::to_string(need_bytes) + " (Samps/line, Number of lines or Bytes/pixel is wrong)");

@@ -10,6 +10,9 @@
 #include <functional>
 #include <string>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "mesh/afm/height_map.hpp"
 #include "mesh/mesh_error.hpp"
 
@@ -136,4 +139,53 @@ TEST(CorruptInputs, XyzText) {
   expect_one_line_error("one_point.xyz", "0 0 0\n", rd);
   expect_one_line_error("absurd.xyz", replace_first(good, "4e-9", "4e3"), rd);
   expect_one_line_error("line.xyz", "0 0 0\n1e-9 0 0\n2e-9 0 0\n3e-9 0 0\n", rd);
+}
+
+// Issue 29, items 7-11: the readers open only regular files of a size a map can have, say which format
+// the extension asked for, refuse scales that would invert or uncalibrate the surface, and name header
+// lines as FILE:LINE:COL.
+namespace {
+std::string error_of(const std::string& path) {
+  try {
+    read_height_map(path);
+  } catch (const MeshError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+}  // namespace
+
+TEST(CorruptInputs, OnlyRegularFilesOfAMapSize) {
+  EXPECT_NE(error_of("/dev/zero").find("/dev/zero: not a regular file"), std::string::npos) << error_of("/dev/zero");
+  const std::string fifo = ::testing::TempDir() + "/corrupt_fifo.di";
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_NE(error_of(fifo).find("not a regular file"), std::string::npos);  // returns: nothing opened the pipe
+  std::remove(fifo.c_str());
+  // A sparse file whose size claims a map far beyond any AFM scan: refused before it is read.
+  const std::string big = write_variant("sparse.gsf", "Gwyddion Simple Field 1.0\nXRes = 65536\nYRes = 65536\n");
+  ASSERT_EQ(truncate(big.c_str(), (off_t(1) << 31) + 100), 0);
+  EXPECT_NE(error_of(big).find("more than the 1024 MiB"), std::string::npos) << error_of(big);
+  std::remove(big.c_str());
+  EXPECT_NE(error_of(write_variant("empty.di", "")).find("the file is empty"), std::string::npos);
+  const std::string text = "0 0 1e-9\n1e-9 0 2e-9\n0 1e-9 3e-9\n1e-9 1e-9 4e-9\n";
+  const std::string gsf = write_variant("text.gsf", text), di = write_variant("text.di", text);
+  EXPECT_NE(error_of(gsf).find(gsf + ":1:1: a .gsf file must start with 'Gwyddion Simple Field 1.0'"), std::string::npos)
+      << error_of(gsf);
+  EXPECT_NE(error_of(di).find(di + ":1:1: a Nanoscope file"), std::string::npos) << error_of(di);
+  EXPECT_NO_THROW(read_height_map(write_variant("text.xyz", text)));  // the same text as .xyz is a map
+}
+
+TEST(CorruptInputs, ScalesThatInvertOrUncalibrate) {
+  const std::string base = read_file_bytes(afm_dir + "di-3.di");
+  const std::size_t img = base.find("\\*Ciao image list");
+  auto rd = [](const std::string& p) { return read_height_map(p, -1); };
+  expect_one_line_error("zscale_negative.di", replace_first(base, "24.57563 V", "-24.5756 V", img), rd);
+  expect_one_line_error("zsens_nan.di", replace_first(base, "Zsens: V 34.55678 nm/V", "Zsens: V nan nm/V"), rd);
+  expect_one_line_error("zsens_negative.di", replace_first(base, "Zsens: V 34.55678 nm/V", "Zsens: V -34.5567 nm/V"), rd);
+  // Header errors name the line: FILE:LINE:1 (line 144 holds the Zsens sensitivity).
+  const std::string path = write_variant("zsens_line.di", replace_first(base, "Zsens: V 34.55678 nm/V", "Zsens: V -34.5567 nm/V"));
+  EXPECT_NE(error_of(path).find(path + ":144:1: "), std::string::npos) << error_of(path);
+  const std::string gsf = read_file_bytes(afm_dir + "example_gsf.gsf");
+  expect_one_line_error("xreal_tiny.gsf", replace_first(gsf, "XReal = 2e-05", "XReal = 2e-300"), rd);
 }

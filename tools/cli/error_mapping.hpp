@@ -9,6 +9,7 @@
 #include "inputs/diagnostics.hpp"
 #include "mesh/mesh_error.hpp"
 #include "solver/errors.hpp"
+#include "solver/stop_signal.hpp"
 #include "tools/common/errors.hpp"
 
 namespace tribex::cli {
@@ -36,6 +37,9 @@ int run_mapping_errors(F&& body, std::FILE* err = stderr) {
     const bool located = std::string(e.what()).find(": error: ") != std::string::npos;
     std::fprintf(err, "%s%s\n", located ? "" : "error: ", e.what());
     return tools::exit_bad_input;
+  } catch (const solver::Interrupted& e) {
+    std::fprintf(err, "%s\n", e.what());
+    return tools::exit_interrupted;
   } catch (const solver::NumericalFailure& e) {
     std::fprintf(err, "Error termination: numerical failure: %s\n", e.what());
     return tools::exit_numerical_failure;

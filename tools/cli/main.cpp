@@ -15,6 +15,7 @@
 
 #include "inputs/did_you_mean.hpp"
 #include "tools/cli/commands.hpp"
+#include "solver/stop_signal.hpp"
 #include "tools/cli/error_mapping.hpp"
 
 namespace {
@@ -95,7 +96,10 @@ int main(int argc, char** argv) {
   }
   std::vector<std::string> args(argv + 2, argv + argc);
   for (const auto& c : commands) {
-    if (name == c.name && name == "run") return run_parallel(argc, argv, c, args);
+    if (name == c.name && name == "run") {
+      tribex::solver::install_stop_handlers();  // before anything is read or written (solver/stop_signal.hpp)
+      return run_parallel(argc, argv, c, args);
+    }
     if (name == c.name) return tribex::cli::run_mapping_errors([&] { return c.run(args); });
   }
   std::vector<std::string> names;

@@ -12,12 +12,15 @@ namespace tribex::cli {
 namespace {
 
 const char* run_usage =
-    "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE] [--stop-at-step N] [--heartbeat SECONDS]\n"
+    "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE [--restart-allow-changed]] [--stop-at-step N]\n"
+    "           [--heartbeat SECONDS]\n"
     "  Runs an input deck. Outputs go to OUTDIR (default ./<deck name>_output): history.csv,\n"
     "  results.h5 + results.xdmf (open the .xdmf in ParaView), summary.json, log.txt.\n"
     "  --quiet   no progress line and no terminal echo (log.txt is still written)\n"
     "  --restart FILE   resume from a restart file (OUT/restart.h5 = the newest) written by the same\n"
-    "            deck with 'begin restart output'; same number of MPI ranks; outputs continue in OUTDIR\n"
+    "            deck with 'begin restart output'; same number of MPI ranks; outputs continue in OUTDIR.\n"
+    "            A restart file written by another deck or mesh is refused (exit 2, naming the difference)\n"
+    "  --restart-allow-changed   resume although the deck differs (e.g. a longer termination time)\n"
     "  --stop-at-step N stop after step N as if interrupted (exit 130; writes a restart file)\n"
     "  --heartbeat SECONDS  when stdout is not a terminal (batch job, pipe, file): a progress line\n"
     "            (step, time, percent, ETA, dt, energy error) to stdout and log.txt this often\n"
@@ -45,7 +48,7 @@ bool args_has_stop(const std::vector<std::string>& argv) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& argv) {
-  tools::Args args(argv, "tribex run", run_usage, {"--quiet"});
+  tools::Args args(argv, "tribex run", run_usage, {"--quiet", "--restart-allow-changed"});
   if (args.help_requested()) {
     std::fputs(run_usage, stdout);
     return 0;
@@ -55,6 +58,7 @@ int run_command(const std::vector<std::string>& argv) {
   auto out = args.text("-o");
   if (!out) out = args.text("--output");
   const auto restart = args.text("--restart");
+  const bool allow_changed = args.flag("--restart-allow-changed");
   const long stop_at = args.integer("--stop-at-step", -1);
   const double heartbeat = args.real("--heartbeat", 60.0);
   args.finish();
@@ -67,6 +71,7 @@ int run_command(const std::vector<std::string>& argv) {
   solver::RunOptions options;
   options.quiet = quiet;
   if (restart) options.restart_path = *restart;
+  options.restart_allow_changed = allow_changed;
   options.stop_at_step = stop_at;
   options.heartbeat_seconds = heartbeat;
   options.output_directory = out ? *out : std::filesystem::path(deck_path).stem().string() + "_output";

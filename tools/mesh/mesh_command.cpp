@@ -40,6 +40,7 @@ const char* afm_usage =
     "  --coating T             bonded coating of thickness T on top, block `coating` (default: none)\n"
     "  --coating-layers N      elements through the coating (default 6)\n"
     "  --grading-ratio R       size ratio of neighbours outside the track and with depth, in [1, 1.3] (default 1.3)\n"
+    "  --max-elements N        refuse a larger mesh, counted before it is built (default 20000000, ~6 GB to run)\n"
     "  -o FILE                 output .msh (required)\n"
     "Blocks substrate (+ coating); side sets = node sets: substrate_top (contact surface), substrate_track,\n"
     "substrate_bottom, substrate_sides, substrate_xmin/_xmax/_ymin/_ymax. Prints the element count, the track\n"
@@ -69,6 +70,7 @@ int afm(const std::vector<std::string>& argv) {
   spec.coating_thickness = a.quantity("--coating", 0.0, inputs::dim::length);
   const long layers = a.integer("--coating-layers", spec.coating_layers);
   spec.grading_ratio = a.real("--grading-ratio", spec.grading_ratio);
+  spec.max_elements = a.integer("--max-elements", spec.max_elements);
   const auto out = a.text("-o");
   a.finish();
   if (a.positional_count() > 1) throw BadInput("tribex mesh afm takes one FILE, got " + std::to_string(a.positional_count()));
@@ -76,6 +78,8 @@ int afm(const std::vector<std::string>& argv) {
   if (channel < -1 || channel > 64) throw BadInput("--channel " + std::to_string(channel) + " is out of range (0 to 64)");
   if (layers < 1 || layers > 100) throw BadInput("--coating-layers " + std::to_string(layers) + " must lie in 1 to 100");
   spec.coating_layers = static_cast<int>(layers);
+  if (spec.max_elements < 1 || spec.max_elements > 2'000'000'000)
+    throw BadInput("--max-elements " + std::to_string(spec.max_elements) + " must lie in 1 to 2000000000");
   if (!(spec.grading_ratio >= 1.0 && spec.grading_ratio <= 1.3))
     throw BadInput("--grading-ratio " + std::to_string(spec.grading_ratio) + " must lie in [1, 1.3]");
 

@@ -31,13 +31,15 @@ const char* stats_usage =
     "FILE: Nanoscope (.di/.spm/.000), Gwyddion .gsf, Gwyddion ASCII matrix, or x y z text.\n"
     "  --channel N         Nanoscope channel index (default: first height channel)\n"
     "  --window X0,Y0,WX,WY  crop a window in physical units first, e.g. 0,0,100nm,35nm\n"
+    "  --level plane|mean|none  subtract the least-squares plane (default), the mean height only (what\n"
+    "                      Gwyddion and SurfaceTopography report), or nothing; rms_m is about the mean either way\n"
     "  --resample N        interpolate onto N x N pixels (the report used 1024)\n"
     "  --median            3x3 median filter after resampling\n"
     "  --smooth            3x3 [1 2 1] weighted smoothing after the median filter\n"
     "  --json              JSON instead of the text table\n"
     "  --summits FILE.csv  write the summits found (height_m,radius_m; positive curvature only) for a\n"
     "                      rough-surface contact interaction's 'summit file' (its 'summit map area' is printed)\n"
-    "Steps: read, crop, level (least-squares plane), resample, median, smooth, then the moments.\n";
+    "Steps: read, crop, level (--level), resample, median, smooth, then the moments.\n";
 
 const char* mccool_usage =
     "usage: tribex surface mccool FILE1 [FILE2] [options]\n"
@@ -60,6 +62,7 @@ struct Prepared {
 // The pre-processing options every subcommand takes (--window, --resample, --median, --smooth).
 struct Preprocess {
   std::vector<double> window;  // X0, Y0, WX, WY, m; empty: the whole map
+  std::string level = "plane";  // plane | mean | none
   long resample = 0;           // pixels per side; 0: as read
   bool median = false, smooth = false;
 };
@@ -69,6 +72,9 @@ Preprocess preprocess_options(Args& a) {
   o.window = a.list("--window", inputs::dim::length);
   if (!o.window.empty() && o.window.size() != 4)
     throw BadInput("--window needs 4 lengths X0,Y0,WX,WY (e.g. 0,0,100nm,35nm), got " + std::to_string(o.window.size()));
+  o.level = a.text("--level").value_or("plane");
+  if (o.level != "plane" && o.level != "mean" && o.level != "none")
+    throw BadInput("--level " + o.level + " is not one of plane, mean, none");
   o.resample = a.integer("--resample", 0);
   if (o.resample != 0 && (o.resample < 8 || o.resample > 8192))
     throw BadInput("--resample " + std::to_string(o.resample) + " is out of range; use 8 to 8192 pixels per side");
@@ -85,8 +91,9 @@ Prepared prepare(const std::string& file, int channel, const Preprocess& o) {
     p.map = mesh::afm::crop(p.map, o.window[0], o.window[1], o.window[2], o.window[3]);
     p.steps += ", crop";
   }
-  p.map = mesh::afm::level_plane(p.map);
-  p.steps += ", level plane";
+  if (o.level == "plane") p.map = mesh::afm::level_plane(p.map);
+  if (o.level == "mean") p.map = mesh::afm::remove_mean(p.map);
+  p.steps += ", level " + o.level;
   if (o.resample > 0) {
     p.map = mesh::afm::resample(p.map, static_cast<std::size_t>(o.resample), static_cast<std::size_t>(o.resample));
     p.steps += ", resample " + std::to_string(o.resample);
@@ -172,10 +179,10 @@ int stats(const std::vector<std::string>& argv) {
                     m.m0, m.m2, m.m4, s.alpha, s.density, s.radius, s.sigma_s, s.mean_height);
       return std::string(b);
     };
-    std::printf("{\"file\": \"%s\", \"channel\": \"%s\", \"preprocessing\": \"%s\", \"nx\": %zu, \"ny\": %zu, "
+    std::printf("{\"file\": \"%s\", \"channel\": \"%s\", \"preprocessing\": \"%s\", \"level\": \"%s\", \"nx\": %zu, \"ny\": %zu, "
                 "\"dx_m\": %.9g, \"dy_m\": %.9g, \"rms_m\": %.9g,\n \"along_x\": %s,\n \"along_y\": %s,\n \"isotropic\": %s,\n"
                 " \"summits_found\": {\"count\": %zu, \"density_per_m2\": %.9g, \"mean_radius_m\": %.9g, \"sigma_m\": %.9g}}\n",
-                file.c_str(), p.map.channel.c_str(), p.steps.c_str(), p.map.nx, p.map.ny, p.map.dx, p.map.dy,
+                file.c_str(), p.map.channel.c_str(), p.steps.c_str(), pre.level.c_str(), p.map.nx, p.map.ny, p.map.dx, p.map.dy,
                 std::sqrt(mi.m0), mom(mx, sx).c_str(), mom(my, sy).c_str(), mom(mi, si).c_str(), found.size(),
                 found_density, mean_k > 0 ? 1.0 / mean_k : 0.0, found_sigma);
     return tools::exit_ok;
@@ -183,7 +190,7 @@ int stats(const std::vector<std::string>& argv) {
   std::printf("file %s, channel %s\n", file.c_str(), p.map.channel.c_str());
   std::printf("map %zu x %zu pixels, %.4g x %.4g um, pixel %.4g x %.4g nm; %s\n", p.map.nx, p.map.ny, p.map.size_x() * 1e6,
               p.map.size_y() * 1e6, p.map.dx * 1e9, p.map.dy * 1e9, p.steps.c_str());
-  std::printf("RMS height Rq = sqrt(m0)          %12.5g nm\n\n", std::sqrt(mi.m0) * 1e9);
+  std::printf("RMS height Rq = sqrt(m0)          %12.5g nm   (levelled: %s)\n\n", std::sqrt(mi.m0) * 1e9, pre.level.c_str());
   std::printf("%-34s %12s %12s %12s\n", "quantity", "along x", "along y", "isotropic");
   auto row = [](const char* name, double a_, double b_, double c_) { std::printf("%-34s %12.5g %12.5g %12.5g\n", name, a_, b_, c_); };
   row("m0 (nm^2)", mx.m0 * 1e18, my.m0 * 1e18, mi.m0 * 1e18);
