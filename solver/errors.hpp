@@ -2,6 +2,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
 
 namespace tribex::solver {
 
@@ -19,6 +20,16 @@ class NumericalFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// An output file could not be written during the run (a full disk, a removed folder): the run stops
+/// with exit code 3 and "output failure: ... while writing FILE"; what was written before stays.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// OutputError naming the file, errno's reason (e.g. "No space left on device") and the fix.
+OutputError output_failure(const std::string& path, int error_number);
 
 /// Parallel runs: another rank met an error (it prints the one message); this rank stops with the
 /// same exit code and prints nothing.

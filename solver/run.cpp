@@ -539,12 +539,22 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   } catch (const NumericalFailure& e) {
     summary.exit_code = 3;
     summary.status = std::string("numerical failure: ") + e.what();
+  } catch (const OutputError& e) {
+    summary.exit_code = 3;
+    summary.status = std::string("output failure: ") + e.what();
   }
   summary.loop_seconds = seconds_since(loop_start);
   if (terminal) std::fprintf(stderr, "\n");
   guards.finish();
   summary.warnings = guards.warnings();
-  if (results) results->flush();  // collective in a parallel run: every rank gets here
+  try {
+    if (results) results->flush();  // collective in a parallel run: every rank gets here
+  } catch (const OutputError& e) {
+    if (summary.exit_code == 0 || summary.exit_code == 130) {
+      summary.exit_code = 3;
+      summary.status = std::string("output failure: ") + e.what();
+    }
+  }
 
   summary.steps = integrator.step_index();
   summary.first_step = first_step;
@@ -559,7 +569,17 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   summary.ns_per_element_step =
       steps_run > 0 && elements > 0 ? 1e9 * summary.loop_seconds / (double(elements) * double(steps_run)) : 0.0;
   summary.wall_seconds = seconds_since(wall_start);
-  if (root) write_summary_json((out / "summary.json").string(), summary, integrator.energies(), stable0);
+  if (root) {
+    try {
+      write_summary_json((out / "summary.json").string(), summary, integrator.energies(), stable0);
+    } catch (const std::exception& e) {  // a full disk: say so; the status still ends the log and stderr
+      std::fprintf(stderr, "error: %s\n", e.what());
+      if (summary.exit_code == 0) {
+        summary.exit_code = 3;
+        summary.status = std::string("output failure: ") + e.what();
+      }
+    }
+  }
   log.say(format("%ld steps to t = %.6g s in %.3g s wall (loop %.3g s, %.1f ns per element per step); energy error %.3e",
                  steps_run, summary.final_time, summary.wall_seconds, summary.loop_seconds,
                  summary.ns_per_element_step, summary.energy_error));

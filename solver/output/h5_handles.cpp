@@ -2,14 +2,17 @@
 #include "solver/output/h5_handles.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <stdexcept>
+
+#include "solver/errors.hpp"
 
 namespace tribex::solver::output {
 namespace {
 
 [[noreturn]] void fail(const std::string& what, const std::string& action) {
-  throw std::runtime_error(what + ": HDF5 could not " + action +
-                           " (disk full or file removed while running?)");
+  const int error_number = errno;
+  throw output_failure(what + " (HDF5 could not " + action + ")", error_number);
 }
 
 }  // namespace

@@ -28,7 +28,8 @@ const std::vector<std::string>& HistoryWriter::standard_columns() {
   return columns;
 }
 
-HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns, long resume_step) {
+HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns, long resume_step)
+    : path_(path) {
   std::string header = "step";
   for (const auto& c : standard_columns()) header += "," + c;
   for (const auto& c : extra_columns) header += "," + c;
@@ -56,7 +57,7 @@ void HistoryWriter::write_row(long step, const std::vector<double>& values) {
   std::fprintf(file_, "%ld", step);
   for (std::size_t k = 0; k < columns_; ++k) std::fprintf(file_, ",%.17g", k < values.size() ? values[k] : 0.0);
   std::fputc('\n', file_);
-  std::fflush(file_);
+  if (std::fflush(file_) != 0 || std::ferror(file_)) throw output_failure(path_, errno);
 }
 
 }  // namespace tribex::solver

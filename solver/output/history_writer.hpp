@@ -35,6 +35,7 @@ class HistoryWriter {
 
  private:
   std::FILE* file_ = nullptr;
+  std::string path_;
   std::size_t columns_ = 0;
 };
 

@@ -389,7 +389,7 @@ void ResultsWriter::flush() {
   QuietHdf5Errors quiet;
   // HDF5 first: the XDMF must never name a dataset that is not on disk yet.
   if (H5Fflush(impl_->file.get(), H5F_SCOPE_LOCAL) < 0)
-    throw std::runtime_error(impl_->h5_path + ": H5Fflush failed (disk full?)");
+    throw output_failure(impl_->h5_path + " (H5Fflush)", errno);
   if (impl_->root) impl_->doc.write_atomically(impl_->xdmf_path);
 }
 

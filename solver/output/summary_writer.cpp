@@ -65,8 +65,15 @@ void write_summary_json(const std::string& path, const RunSummary& s, const Ener
                number(e.damping_dissipation).c_str(), number(e.viscous_dissipation).c_str(),
                number(e.contact_work).c_str(), number(e.initial).c_str());
   std::fprintf(f, "}\n");
-  std::fclose(f);
-  std::rename(tmp.c_str(), path.c_str());
+  // Written whole or not at all: a full disk keeps the earlier summary.json (if any) and says so.
+  const bool written = !std::ferror(f);
+  const int write_errno = errno;
+  if (std::fclose(f) != 0 || !written) {
+    const int err = written ? errno : write_errno;
+    std::remove(tmp.c_str());
+    throw output_failure(path, err);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw output_failure(path, errno);
 }
 
 }  // namespace tribex::solver

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "solver/output/xdmf_document.hpp"
 
+#include "solver/errors.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -127,17 +129,19 @@ void XdmfDocument::write_atomically(const std::string& path) const {
   const std::string t = text();
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (f == nullptr)
-    throw std::runtime_error("cannot write '" + tmp + "': " + std::strerror(errno));
+    throw output_failure(tmp, errno);
   const bool ok = std::fwrite(t.data(), 1, t.size(), f) == t.size();
+  const int write_errno = errno;
   const bool closed = std::fclose(f) == 0;
   if (!ok || !closed) {
+    const int err = ok ? errno : write_errno;
     std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + tmp + "' (disk full?)");
+    throw output_failure(path, err);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     std::remove(tmp.c_str());
-    throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + std::strerror(err));
+    throw output_failure(path, err);
   }
 }
 

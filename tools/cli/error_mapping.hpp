@@ -40,6 +40,9 @@ int run_mapping_errors(F&& body, std::FILE* err = stderr) {
   } catch (const solver::Interrupted& e) {
     std::fprintf(err, "%s\n", e.what());
     return tools::exit_interrupted;
+  } catch (const solver::OutputError& e) {
+    std::fprintf(err, "Error termination: output failure: %s\n", e.what());
+    return tools::exit_numerical_failure;
   } catch (const solver::NumericalFailure& e) {
     std::fprintf(err, "Error termination: numerical failure: %s\n", e.what());
     return tools::exit_numerical_failure;
