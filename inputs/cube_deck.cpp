@@ -10,7 +10,7 @@ Deck cube_deck(const CubeDeckSpec& spec) {
   MaterialSpec material;
   material.name = spec.material;
   material.density = spec.density;
-  material.models.push_back({spec.model, spec.youngs_modulus, spec.poissons_ratio, {}});
+  material.models.push_back({spec.model, spec.youngs_modulus, spec.poissons_ratio, {}, {}});
   deck.materials.push_back(material);
   SectionSpec section;
   section.name = spec.section;

@@ -19,7 +19,7 @@ struct CubeDeckSpec {
   std::string section = "s";
   int intervals = 1;  // elements per edge
   double size = 1.0;  // edge length, m
-  MaterialModel model = MaterialModel::elastic;
+  MaterialModel model = "elastic";
   ElementFormulation formulation = ElementFormulation::mean_quadrature;
   double youngs_modulus = 200e9;  // Pa
   double poissons_ratio = 0.3;

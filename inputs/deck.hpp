@@ -32,14 +32,16 @@ struct FunctionSpec {
   SourceLocation where;
 };
 
-enum class MaterialModel { elastic, neo_hookean };
+/// A material model by its deck name: one of materials::model_names() (materials/material.hpp).
+using MaterialModel = std::string;
 
 /// `begin parameters for model MODEL` inside a material. Either (E, nu) or (K, G) may be given in
 /// the deck; the parser stores the pair (E, nu) with E > 0 and -1 < nu < 0.5.
 struct MaterialModelParameters {
-  MaterialModel model = MaterialModel::elastic;
+  MaterialModel model = "elastic";
   double youngs_modulus = 0.0;  // Pa
   double poissons_ratio = 0.0;  // -
+  std::vector<double> parameters;  // the model's own keys, SI, in materials::model_parameters order
   SourceLocation where;
 };
 
@@ -123,7 +125,7 @@ struct AfmSurfaceSpec {
 struct BlockParameters {
   std::string block;     // must exist in the mesh (checked when the mesh is built)
   std::string material;  // checked by the parser
-  MaterialModel model = MaterialModel::elastic;  // the material must define this model
+  MaterialModel model = "elastic";  // the material must define this model
   std::string section;   // checked by the parser
   SourceLocation where;
 };

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 
 #include "inputs/did_you_mean.hpp"
 #include "inputs/lexer.hpp"
+#include "materials/material.hpp"
 
 namespace tribex::inputs {
 namespace {
@@ -133,7 +135,8 @@ class Builder {
     for (const Scope* p : s.children_of("parameters for model")) {
       MaterialModelParameters mp;
       mp.where = p->where;
-      mp.model = p->name == "neo_hookean" ? MaterialModel::neo_hookean : MaterialModel::elastic;
+      mp.model = p->name;
+      mp.parameters = model_parameters(*p, mp.model);
       const bool e = p->find("youngs modulus"), nu = p->find("poissons ratio");
       const bool k = p->find("bulk modulus"), g = p->find("shear modulus");
       if (e && nu && !k && !g) {
@@ -153,6 +156,38 @@ class Builder {
       m.models.push_back(mp);
     }
     return m;
+  }
+
+  // The model's own keys (materials::model_parameters) in their order, its defaults filled in; a
+  // key that belongs to another model is an error naming the model it belongs to.
+  std::vector<double> model_parameters(const Scope& p, const std::string& model) {
+    const int index = materials::model_index(model);
+    std::vector<double> values;
+    for (const materials::ParameterDecl& d : materials::model_parameters(index)) {
+      const std::string key(d.key);
+      if (p.find(key)) {
+        values.push_back(real(p, key));
+      } else if (!d.default_text.empty()) {
+        values.push_back(std::strtod(std::string(d.default_text).c_str(), nullptr));
+      } else {
+        values.push_back(0.0);
+        error(p.where, p, "model '" + model + "' needs '" + key + "' (" + std::string(d.help) + ", " +
+                              std::string(d.unit.empty() ? "dimensionless" : d.unit) + "); add it to 'begin parameters for model " +
+                              model + "'");
+      }
+    }
+    for (int m = 0; m < materials::model_count; ++m) {
+      if (m == index) continue;
+      for (const materials::ParameterDecl& d : materials::model_parameters(m)) {
+        const std::string key(d.key);
+        const auto own = materials::model_parameters(index);
+        if (std::any_of(own.begin(), own.end(), [&](const materials::ParameterDecl& o) { return o.key == d.key; })) continue;
+        if (p.find(key))
+          error(where(p, key), p, "'" + key + "' applies to 'parameters for model " + materials::model_names()[m] +
+                                      "', not '" + model + "'; remove the key or change the model");
+      }
+    }
+    return values;
   }
 
   SectionSpec section(const Scope& s) {
@@ -235,13 +270,13 @@ class Builder {
       bp.where = b->where;
       bp.material = word(*b, "material");
       bp.section = word(*b, "section");
-      bp.model = word(*b, "model") == "neo_hookean" ? MaterialModel::neo_hookean : MaterialModel::elastic;
+      bp.model = word(*b, "model");
       if (check_reference(*b, "material", "property specification for material", deck.materials)) {
         const MaterialSpec* mat = deck.find_material(bp.material);
         bool defined = false;
         for (const auto& mp : mat->models) defined = defined || mp.model == bp.model;
         if (!defined) {
-          const std::string model_name = bp.model == MaterialModel::neo_hookean ? "neo_hookean" : "elastic";
+          const std::string& model_name = bp.model;
           error(where(*b, "model"), *b,
                 "material '" + bp.material + "' (" + line_of(mat->where) + ") does not define model '" + model_name +
                     "'; add 'begin parameters for model " + model_name + "' to it or change 'model'");

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "inputs/schema.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "inputs/lexer.hpp"
+#include "materials/material.hpp"
 
 namespace tribex::inputs {
 namespace {
@@ -79,8 +81,33 @@ KeySchema boolean_key(std::string name, std::string def, std::string help) {
 
 const std::vector<std::string> components{"x", "y", "z"};
 const std::vector<std::string> faces{"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
-const std::vector<std::string> models{"elastic", "neo_hookean"};
-const std::vector<std::pair<std::string, std::string>> model_aliases{{"neohookean", "neo_hookean"}};
+// Material models and their own keys come from the one list in materials/material.hpp.
+const std::vector<std::string> models = materials::model_names();
+const std::vector<std::pair<std::string, std::string>> model_aliases = materials::model_aliases();
+
+// `begin parameters for model`: the elastic constants every model takes, then each model's own keys
+// (declared beside its law; no schema default, so that the resolved text of one model never carries
+// another's key: the builder fills the model's defaults and rejects the keys of other models).
+std::vector<KeySchema> material_model_keys() {
+  std::vector<KeySchema> keys{
+      real("youngs modulus", dim::pressure, positive(), false, "", "E (give E and nu, or K and G)"),
+      real("poissons ratio", dim::none, {-1.0, 0.5, true, true}, false, "", "nu"),
+      real("bulk modulus", dim::pressure, positive(), false, "", "K (give E and nu, or K and G)"),
+      real("shear modulus", dim::pressure, positive(), false, "", "G")};
+  for (int m = 0; m < materials::model_count; ++m)
+    for (const materials::ParameterDecl& p : materials::model_parameters(m)) {
+      const std::string key(p.key);
+      if (std::any_of(keys.begin(), keys.end(), [&](const KeySchema& k) { return k.name == key; })) continue;
+      std::string unit_error;
+      const auto unit = parse_unit(p.unit.empty() ? std::string_view("1") : p.unit, &unit_error);
+      const Dimension d = p.unit.empty() || !unit ? dim::none : unit->dimension;
+      const std::string model(materials::model_names()[static_cast<std::size_t>(m)]);
+      keys.push_back(real(key, d, {p.lower_bound, Range{}.hi, p.lower_open, false}, false, "",
+                          std::string(p.help) + " (model " + model +
+                              (p.default_text.empty() ? "" : ", default " + std::string(p.default_text)) + ")"));
+    }
+  return keys;
+}
 
 // Output scheduling shared by results and history output: exactly one of the two (checked by
 // the builder).
@@ -116,13 +143,8 @@ std::vector<BlockSchema> build_table() {
                {{"parameters for model", 1}},
                false, "a material"});
 
-  t.push_back({"parameters for model", NameRule::required, models, model_aliases, true,
-               {real("youngs modulus", dim::pressure, positive(), false, "", "E (give E and nu, or K and G)"),
-                real("poissons ratio", dim::none, {-1.0, 0.5, true, true}, false, "", "nu"),
-                real("bulk modulus", dim::pressure, positive(), false, "", "K (give E and nu, or K and G)"),
-                real("shear modulus", dim::pressure, positive(), false, "", "G")},
-               {},
-               false, "elastic constants of one material model"});
+  t.push_back({"parameters for model", NameRule::required, models, model_aliases, true, material_model_keys(), {},
+               false, "elastic constants and parameters of one material model"});
 
   t.push_back({"solid section", NameRule::required, {}, {}, true,
                {choice("formulation", ValueKind::enumeration, {"mean_quadrature", "fully_integrated"}, false,

@@ -59,6 +59,24 @@ inline double2 lane_log(double2 x) {
   return double2{std::log(x[0]), std::log(x[1])};
 #endif
 }
+/// max(x, 0), max(x, y) and sqrt lane by lane (sqrt is correctly rounded: a lane's result does
+/// not depend on its partner).
+inline double positive_part(double x) { return x > 0.0 ? x : 0.0; }
+inline double2 positive_part(double2 x) { return x > double2{} ? x : double2{}; }
+inline double lane_max(double x, double y) { return x > y ? x : y; }
+inline double2 lane_max(double2 x, double y) {
+  const double2 yy{y, y};
+  return x > yy ? x : yy;
+}
+inline double lane_sqrt(double x) { return std::sqrt(x); }
+inline double2 lane_sqrt(double2 x) { return double2{std::sqrt(x[0]), std::sqrt(x[1])}; }
+
+/// Store the lanes of x at p (the inverse of load_lanes).
+template <class T>
+inline void store_lanes(double* p, const T& x) {
+  std::memcpy(p, &x, sizeof(T));
+}
+
 inline double lane_log(double x) {
 #ifdef TRIBEX_HAVE_LIBMVEC_LOG
   return lane_log(double2{x, x})[0];

@@ -8,12 +8,29 @@
 // Parameters: lambda, mu (Pa), density (kg/m^3).
 #pragma once
 
+#include <array>
+#include <span>
+#include <string_view>
+
+#include "materials/parameter.hpp"
+
 namespace tribex::materials {
 
 struct LinearElastic {
+  static constexpr std::string_view deck_name = "elastic";
+  static constexpr std::string_view alias = "";
+  static constexpr std::string_view description = "isotropic linear elasticity, small strain";
+  static constexpr std::array<ParameterDecl, 0> parameters{};  // E and nu only
+  static constexpr int state_size = 0;
+  static constexpr bool dissipates = false;
+
   double lambda = 0.0;
   double mu = 0.0;
   double density = 0.0;
+
+  static LinearElastic make(double lambda_, double mu_, double density_, std::span<const double> /*parameters*/) {
+    return {lambda_, mu_, density_};
+  }
 
   /// Stress from the displacement gradient H (row-major 3x3): the stress that multiplies the
   /// reference gradient operator in the internal force, f_iI = S_ij B0_jI. For small strain this is

@@ -6,6 +6,12 @@
 // Reduces to linear elasticity with the same (lambda, mu) at small strain.
 #pragma once
 
+#include <array>
+#include <span>
+#include <string_view>
+
+#include "materials/parameter.hpp"
+
 #include <cmath>
 
 #include "materials/small_matrix.hpp"
@@ -14,9 +20,20 @@
 namespace tribex::materials {
 
 struct NeoHookean {
+  static constexpr std::string_view deck_name = "neo_hookean";
+  static constexpr std::string_view alias = "neohookean";
+  static constexpr std::string_view description = "compressible neo-Hookean hyperelasticity, finite strain";
+  static constexpr std::array<ParameterDecl, 0> parameters{};  // E and nu only
+  static constexpr int state_size = 0;
+  static constexpr bool dissipates = false;
+
   double lambda = 0.0;
   double mu = 0.0;
   double density = 0.0;
+
+  static NeoHookean make(double lambda_, double mu_, double density_, std::span<const double> /*parameters*/) {
+    return {lambda_, mu_, density_};
+  }
 
   /// First Piola-Kirchhoff stress from the displacement gradient H = F - I (row-major 3x3);
   /// f_iI = P_iJ B0_JI. Returns W; where J <= 0 (inverted element) ln J is NaN or -inf and W is

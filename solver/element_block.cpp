@@ -42,6 +42,8 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
     b.inv_jacobian.assign(interleaved_size(b.count, 72), 0.0);
     b.wdetJ.assign(interleaved_size(b.count, 8), 0.0);
   }
+  if (const int ns = materials::state_size_of(material); ns > 0)
+    b.state.assign(mq ? ns * n : interleaved_size(b.count, 8 * ns), 0.0);
   for (int e = 0; e < b.count; ++e) {
     const int global = b.first_element + e;
     double X[24];
@@ -74,12 +76,12 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
 }
 
 ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
-                                      const double* v, double* force, bool want_stress) {
+                                      const double* v, double* force, double dt, bool want_stress) {
   return std::visit(
       [&](const auto& mat) {
         if (block.formulation == inputs::ElementFormulation::mean_quadrature)
-          return hex8::mean_quadrature_forces(mat, block, connectivity, u, v, force, want_stress);
-        return hex8::fully_integrated_forces(mat, block, connectivity, u, v, force, want_stress);
+          return hex8::mean_quadrature_forces(mat, block, connectivity, u, v, force, dt, want_stress);
+        return hex8::fully_integrated_forces(mat, block, connectivity, u, v, force, dt, want_stress);
       },
       block.material);
 }

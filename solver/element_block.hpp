@@ -39,6 +39,9 @@ struct ElementBlock {
   // the pairs' values interleaved, element e's value k at lane_index(e, k, per_element)
   std::vector<double> inv_jacobian;  // J^{-1}/8 at the 8 points, [3][3][8] per element (1/m), geometry.hpp
   std::vector<double> wdetJ;         // Gauss weight x det J, [8] per element (m^3)
+  // material state, state_size_of(material) doubles per material point, n -> n+1 in the force pass:
+  // [e][k] (mean quadrature), pair-interleaved [e][point][k] (fully integrated); empty if stateless
+  std::vector<double> state;
   // output (filled only on steps that write element fields)
   std::vector<double> stress;    // [e][6] Cauchy, Voigt xx yy zz xy yz zx (Pa)
 };
@@ -66,6 +69,7 @@ struct ElementPassTotals {
   double strain_energy = 0.0;     // sum V0 W (J)
   double hourglass_energy = 0.0;  // stored hourglass energy (J)
   double viscous_power = 0.0;     // hourglass viscosity + bulk viscosity dissipation rate (W)
+  double plastic_work = 0.0;      // work the material updates of this pass dissipated (J)
   int first_inverted = -1;        // global element index of the first inverted element, or -1
 };
 
@@ -74,8 +78,9 @@ struct ElementPassTotals {
 /// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (docs/theory.md 1.5),
 /// plus Flanagan-Belytschko hourglass forces (mean quadrature, docs/theory.md 2.2).
 /// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
-/// When `want_stress` the block's stress buffer is filled (Cauchy stress, element mean).
+/// The material state goes from t^n to t^{n+1} (dt = t^{n+1} - t^n). When `want_stress` the block's
+/// stress buffer is filled (Cauchy stress, element mean).
 ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
-                                      const double* v, double* force, bool want_stress);
+                                      const double* v, double* force, double dt, bool want_stress);
 
 }  // namespace tribex::solver

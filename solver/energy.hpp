@@ -16,17 +16,19 @@ struct Energies {
   double damping_dissipation = 0.0;     // mass-proportional damping
   double viscous_dissipation = 0.0;     // bulk viscosity + hourglass viscosity
   double contact_work = 0.0;            // filled by contact (later issues)
+  double plastic_dissipation = 0.0;     // work of the material updates (J2 plasticity), sum V0 sigma:deps_p
   double initial = 0.0;                 // kinetic + internal at t = 0
 
   /// Stored + dissipated minus what was put in.
   double balance() const {
     return kinetic + internal + hourglass + silent_boundary_dissipation + damping_dissipation +
-           viscous_dissipation + contact_work - initial - external_work;
+           viscous_dissipation + plastic_dissipation + contact_work - initial - external_work;
   }
   /// |balance| relative to the largest energy magnitude of the run so far.
   double relative_error() const {
     const double scale = std::max({std::abs(initial) + std::abs(external_work), kinetic + internal + hourglass,
-                                   silent_boundary_dissipation + damping_dissipation + viscous_dissipation});
+                                   silent_boundary_dissipation + damping_dissipation + viscous_dissipation +
+                                       plastic_dissipation});
     return scale > 0.0 ? std::abs(balance()) / scale : 0.0;
   }
 };

@@ -59,13 +59,10 @@ int function_index(const Model& model, const std::string& name) {
 }
 
 materials::Material make_material(const inputs::MaterialSpec& spec, inputs::MaterialModel model) {
-  for (const auto& p : spec.models) {
-    if (p.model != model) continue;
-    const double lambda = materials::lame_lambda(p.youngs_modulus, p.poissons_ratio);
-    const double mu = materials::lame_mu(p.youngs_modulus, p.poissons_ratio);
-    if (model == inputs::MaterialModel::elastic) return materials::LinearElastic{lambda, mu, spec.density};
-    return materials::NeoHookean{lambda, mu, spec.density};
-  }
+  for (const auto& p : spec.models)
+    if (p.model == model)
+      return materials::make_material(materials::model_index(model), p.youngs_modulus, p.poissons_ratio, spec.density,
+                                      p.parameters);
   throw SetupError(spec.where.str() + ": error: material '" + spec.name + "' has no parameters for the model used");
 }
 

@@ -191,7 +191,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                  global.blocks.size(), global.total_mass));
   for (const auto& b : global.blocks)
     log.say(format("  block %-16s %8d elements  %s  %s", b.name.c_str(), b.count,
-                   std::holds_alternative<materials::LinearElastic>(b.material) ? "elastic" : "neo_hookean",
+                   std::string(materials::model_name(b.material)).c_str(),
                    b.formulation == inputs::ElementFormulation::mean_quadrature ? "mean_quadrature" : "fully_integrated"));
   {
     double worst = 1.0, sum = 0.0;
@@ -318,6 +318,11 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
 
   std::vector<std::string> extra = {};
   const auto* hist_spec = region.history ? &*region.history : nullptr;
+  // The material dissipation column only where a block's material dissipates (J2 plasticity), so
+  // that the history of every other run keeps its columns.
+  const bool material_dissipation = std::any_of(model.blocks.begin(), model.blocks.end(),
+                                                [](const ElementBlock& b) { return materials::dissipates(b.material); });
+  if (material_dissipation) extra.push_back("plastic_dissipation");
   if (hist_spec) {
     for (const auto& s : hist_spec->reaction_force_node_sets)
       for (const char* c : {"x", "y", "z"}) extra.push_back(s + "_reaction_" + c);
@@ -448,6 +453,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
                              C.compressive_force, C.tangential_force, C.junction_capacity, C.adhesion_energy,
                              C.friction_power, C.radius_pressure_fit, C.real_area, C.asperity_contacts,
                              C.apparent_pressure()});
+      if (material_dissipation) row.push_back(E.plastic_dissipation);
       std::fill(set_sums.begin(), set_sums.end(), 0.0);
       std::size_t c = 0;
       for (const auto& set : reaction_sets) {

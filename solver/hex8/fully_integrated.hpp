@@ -2,7 +2,8 @@
 // Fully integrated hex8: 2x2x2 Gauss quadrature in total-Lagrangian form (docs/theory.md 2.3), no
 // hourglass control needed. At each point g: H = u_iI dN_I/dX_j, S = material.force_stress(H),
 // f_iI -= wdetJ_g S_ij dN_I/dX_j, the gradients and forces sum-factorised over the element's
-// edges (sum_factorized.hpp). Elements run two at a time, one per SSE lane (lanes.hpp; an odd
+// edges (sum_factorized.hpp). A material with state keeps it per point, pair-interleaved like the
+// operators: value k of point p of element e at lane_index(e, p state_size + k, 8 state_size). Elements run two at a time, one per SSE lane (lanes.hpp; an odd
 // last element alone, bitwise as it would in a pair). Bulk viscosity uses the element-mean
 // volumetric rate (B0, as in the mean-quadrature element), which is adequate for the damping role
 // it has here. Locks volumetrically as nu -> 0.5 (use mean quadrature there).
@@ -17,7 +18,8 @@ namespace tribex::solver::hex8 {
 /// Elements e .. e + lane_count<T> - 1 of the block (e even).
 template <class T, class Material>
 void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
-                            const double* v, double* force, bool want_stress, ElementPassTotals& totals) {
+                            const double* v, double* force, double dt, bool want_stress, ElementPassTotals& totals) {
+  constexpr int ns = Material::state_size;
   using materials::from_lanes;
   using materials::lane;
   constexpr int n = materials::lane_count<T>;
@@ -51,23 +53,28 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   T G[3][3][8];
   reference_gradients_at_points(ue, G);
   T Sw[9][8];  // wdetJ_p (S - q I) at each point: the weight folded into the 9 stresses, not the 24 forces
-  T energy{}, not_finite{};
+  T energy{}, not_finite{}, plastic_work{};
   double stress_mean[n][6] = {};
   for (int p = 0; p < 8; ++p) {
-    T H[9], S[9];
+    T H[9], S[9], dissipated;
     point_gradient(G, Q, p, H);
-    const T W = mat.force_stress(H, S);
+    T state[ns > 0 ? ns : 1];
+    for (int k = 0; k < ns; ++k) state[k] = materials::load_lanes<T>(&blk.state[lane_index(e, ns * p + k, 8 * ns)]);
+    const T W = materials::point_stress(mat, H, state, dt, S, dissipated);
+    for (int k = 0; k < ns; ++k) materials::store_lanes(&blk.state[lane_index(e, ns * p + k, 8 * ns)], state[k]);
     not_finite += 0.0 * W;  // NaN in a lane once any of its W is NaN or inf (inverted element)
     energy += w[p] * W;
+    if constexpr (Material::dissipates) plastic_work += w[p] * dissipated;
     S[0] -= q;
     S[4] -= q;
     S[8] -= q;
     for (int k = 0; k < 9; ++k) Sw[k][p] = w[p] * S[k];
     if (want_stress)
       for (int l = 0; l < n; ++l) {
-        double Hl[9], sv[6];
+        double Hl[9], state_l[ns > 0 ? ns : 1], sv[6];
         for (int k = 0; k < 9; ++k) Hl[k] = lane(H[k], l);
-        mat.cauchy_stress(Hl, sv);
+        for (int k = 0; k < ns; ++k) state_l[k] = lane(state[k], l);
+        materials::point_cauchy_stress(mat, Hl, state_l, sv);
         for (int k = 0; k < 6; ++k) stress_mean[l][k] += lane(w[p], l) * sv[k];
       }
   }
@@ -83,6 +90,7 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
       for (int i = 0; i < 3; ++i) force[3 * nodes[l][I] + i] -= lane(fe[8 * i + I], l);
     totals.strain_energy += lane(energy, l);
     totals.viscous_power += lane(viscous_power, l);
+    if constexpr (Material::dissipates) totals.plastic_work += lane(plastic_work, l);
     if (want_stress)
       for (int k = 0; k < 6; ++k) blk.stress[6 * (e + l) + k] = stress_mean[l][k] / blk.volume0[e + l];
   }
@@ -90,13 +98,13 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
 
 template <class Material>
 ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk, const int* conn,
-                                          const double* u, const double* v, double* force,
+                                          const double* u, const double* v, double* force, double dt,
                                           bool want_stress) {
   ElementPassTotals totals;
   int e = 0;
   for (; e + 1 < blk.count; e += 2)
-    fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, want_stress, totals);
-  if (e < blk.count) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, want_stress, totals);
+    fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
+  if (e < blk.count) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
   return totals;
 }
 

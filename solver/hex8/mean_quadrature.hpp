@@ -2,7 +2,8 @@
 // Uniform-strain (mean-quadrature) hex8 of Flanagan & Belytschko (1981), total-Lagrangian form,
 // with orthogonal hourglass control and bulk viscosity (docs/theory.md 1.5, 2.1, 2.2):
 //   H_ij   = (1/V0) u_iI B0_jI                         displacement gradient, F = I + H
-//   S      = material.force_stress(H)                  Cauchy (small strain) or first Piola (finite)
+//   S      = point_stress(material, H, state)         Cauchy (small strain) or first Piola (finite);
+//                                                      the point's state (if any) goes n -> n+1
 //   edot_v = (1/V0) v_iI B0_iI                          volumetric strain rate (reference operator)
 //   q      = -b1 rho c L edot_v + rho (b2 L)^2 edot_v^2 [edot_v < 0]
 //   f_iI  -= (S_ij - q delta_ij) B0_jI
@@ -22,8 +23,11 @@ namespace tribex::solver::hex8 {
 
 template <class Material, bool HourglassViscosity>
 ElementPassTotals mean_quadrature_forces_impl(const Material& mat, ElementBlock& blk, const int* conn,
-                                              const double* u, const double* v, double* force, bool want_stress) {
+                                              const double* u, const double* v, double* force, double dt,
+                                              bool want_stress) {
+  constexpr int ns = Material::state_size;  // one material point per element: [e][ns]
   ElementPassTotals totals;
+  double* state = blk.state.data();
   const double b1 = blk.linear_bulk_viscosity, b2 = blk.quadratic_bulk_viscosity;
   const double rho = mat.density, rho_c = blk.rho_c;
   const double* B0 = blk.B0.data();
@@ -55,8 +59,8 @@ ElementPassTotals mean_quadrature_forces_impl(const Material& mat, ElementBlock&
     double edot = 0.0;
     for (int k = 0; k < 24; ++k) edot += ve[k] * B[k];
     edot *= inv_v0;
-    double S[9];
-    const double W = mat.force_stress(H, S);
+    double S[9], dissipated;
+    const double W = materials::point_stress(mat, H, state + ns * e, dt, S, dissipated);
     if (!std::isfinite(W)) {
       if (totals.first_inverted < 0) totals.first_inverted = blk.first_element + e;
       continue;
@@ -97,18 +101,19 @@ ElementPassTotals mean_quadrature_forces_impl(const Material& mat, ElementBlock&
     totals.hourglass_energy += 0.5 * k * hg_energy;
     totals.viscous_power -= q * edot * blk.volume0[e];
     if constexpr (HourglassViscosity) totals.viscous_power += blk.hg_c[e] * hg_power;
-    if (want_stress) mat.cauchy_stress(H, &blk.stress[6 * e]);
+    if constexpr (Material::dissipates) totals.plastic_work += dissipated * blk.volume0[e];
+    if (want_stress) materials::point_cauchy_stress(mat, H, state + ns * e, &blk.stress[6 * e]);
   }
   return totals;
 }
 
 template <class Material>
 ElementPassTotals mean_quadrature_forces(const Material& mat, ElementBlock& blk, const int* conn,
-                                         const double* u, const double* v, double* force,
+                                         const double* u, const double* v, double* force, double dt,
                                          bool want_stress) {
   if (blk.hourglass_viscosity > 0.0)
-    return mean_quadrature_forces_impl<Material, true>(mat, blk, conn, u, v, force, want_stress);
-  return mean_quadrature_forces_impl<Material, false>(mat, blk, conn, u, v, force, want_stress);
+    return mean_quadrature_forces_impl<Material, true>(mat, blk, conn, u, v, force, dt, want_stress);
+  return mean_quadrature_forces_impl<Material, false>(mat, blk, conn, u, v, force, dt, want_stress);
 }
 
 }  // namespace tribex::solver::hex8

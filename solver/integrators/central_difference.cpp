@@ -127,6 +127,7 @@ void CentralDifference::init() {
   for (std::size_t d = 0; d < v_.size(); ++d) ke += 0.5 * owned_mass_[d / 3] * v_[d] * v_[d];
   parallel::sum(&ke, 1);
   const bool stress0 = wants_stress_ && wants_stress_(time_, 0);
+  force_time_ = time_;
   compute_forces(time_, stress0);
   energies_.kinetic = ke;
   stable_ = {};
@@ -167,14 +168,17 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
   double strain = 0.0, hourglass = 0.0;
   viscous_power_ = 0.0;
   for (auto& blk : model_.blocks) {
-    const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), u_.data(), v_.data(), f_.data(), want_stress);
+    const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), u_.data(), v_.data(), f_.data(),
+                                            t - force_time_, want_stress);
     if (totals.first_inverted >= 0 && pending_failure_.empty())
       pending_failure_ = "element " + std::to_string(global_element(totals.first_inverted) + 1) + " of block '" +
                          blk.name + "' inverted (det F <= 0)" + where_and_when(step_ + 1, t);
     strain += totals.strain_energy;
     hourglass += totals.hourglass_energy;
     viscous_power_ += totals.viscous_power;
+    plastic_work_ += totals.plastic_work;
   }
+  force_time_ = t;
   // This rank's parts; account_time_n sums them over the ranks.
   energies_.internal = strain;
   energies_.hourglass = hourglass;
@@ -369,7 +373,7 @@ void CentralDifference::account_time_n() {
   // One reduction over the ranks for every sum of this step (no-op on one rank).
   double sums[16] = {ke,        momentum_[0],  momentum_[1],  momentum_[2],       power_left,        power_right,
                      c_left,    c_right,       silent_left,   silent_right,      damp_left,         damp_right,
-                     energies_.internal,       energies_.hourglass,              viscous_power_,    0.0};
+                     energies_.internal,       energies_.hourglass,              viscous_power_,    plastic_work_};
   if (!model_.domain.serial()) {
     const auto start = std::chrono::steady_clock::now();
     parallel::sum(sums, 16);
@@ -388,6 +392,7 @@ void CentralDifference::account_time_n() {
   energies_.internal = sums[12];
   energies_.hourglass = sums[13];
   viscous_power_ = sums[14];
+  energies_.plastic_dissipation = sums[15];
   if (!std::isfinite(ke)) {
     for (std::size_t d = 0; d < v_.size() && pending_failure_.empty(); ++d)
       if (!std::isfinite(v_[d]))

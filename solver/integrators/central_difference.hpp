@@ -113,6 +113,8 @@ class CentralDifference {
   StableStep stable_;
   double external_power_right_ = 0.0;  // F_ext^{n-1} . v^{n-1/2}, for the trapezoidal work rule
   double viscous_power_ = 0.0;        // element viscous dissipation rate of the last force pass
+  double plastic_work_ = 0.0;         // this rank's material dissipation so far (J), summed in account_time_n
+  double force_time_ = 0.0;           // the time of the last force pass (the material updates' dt)
   double silent_power_right_ = 0.0, damping_power_right_ = 0.0, viscous_power_right_ = 0.0;
   // Contact: current positions of surface nodes, contact forces, totals, lagged contact power.
   // x_, v_contact_, f_other_contact_ (the summed non-contact forces) and f_contact_ are in global

@@ -31,6 +31,7 @@ void for_each_member(E& e, Visit&& visit) {
   visit(e.viscous_dissipation);
   visit(e.contact_work);
   visit(e.initial);
+  visit(e.plastic_dissipation);
 }
 
 template <class C, class Visit>
@@ -104,8 +105,11 @@ void CentralDifference::save_state(StateArchive& a) const {
                                             damping_power_right_, viscous_power_right_, contact_power_right_,
                                             contact_seconds_});
   a.put("momentum", std::vector<double>(momentum_, momentum_ + 3));
-  for (std::size_t b = 0; b < model_.blocks.size(); ++b)
+  a.put("material_work", std::vector<double>{plastic_work_, force_time_});
+  for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
     a.put("block_" + std::to_string(b) + "_stress", model_.blocks[b].stress);
+    if (!model_.blocks[b].state.empty()) a.put("block_" + std::to_string(b) + "_state", model_.blocks[b].state);
+  }
   if (model_.contact) {
     a.put("contact_x", x_);
     a.put("contact_force", f_contact_);
@@ -167,7 +171,14 @@ void CentralDifference::restore_state(const StateArchive& a) {
   std::vector<double> p(3);
   a.get("momentum", p);
   for (int i = 0; i < 3; ++i) momentum_[i] = p[i];
-  for (std::size_t b = 0; b < model_.blocks.size(); ++b) a.get("block_" + std::to_string(b) + "_stress", model_.blocks[b].stress);
+  std::vector<double> material_work(2);
+  a.get("material_work", material_work);
+  plastic_work_ = material_work[0];
+  force_time_ = material_work[1];
+  for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
+    a.get("block_" + std::to_string(b) + "_stress", model_.blocks[b].stress);
+    if (!model_.blocks[b].state.empty()) a.get("block_" + std::to_string(b) + "_state", model_.blocks[b].state);
+  }
   if (model_.contact) {
     a.get("contact_x", x_);
     a.get("contact_force", f_contact_);

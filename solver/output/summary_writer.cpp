@@ -59,11 +59,11 @@ void write_summary_json(const std::string& path, const RunSummary& s, const Ener
   std::fprintf(f, "%s],\n", s.warnings.empty() ? "" : "\n  ");
   std::fprintf(f, "  \"energies\": {\"kinetic\": %s, \"internal\": %s, \"hourglass\": %s, \"external_work\": %s, "
                "\"silent_boundary_dissipation\": %s, \"damping_dissipation\": %s, \"viscous_dissipation\": %s, "
-               "\"contact_work\": %s, \"initial\": %s}\n",
+               "\"plastic_dissipation\": %s, \"contact_work\": %s, \"initial\": %s}\n",
                number(e.kinetic).c_str(), number(e.internal).c_str(), number(e.hourglass).c_str(),
                number(e.external_work).c_str(), number(e.silent_boundary_dissipation).c_str(),
                number(e.damping_dissipation).c_str(), number(e.viscous_dissipation).c_str(),
-               number(e.contact_work).c_str(), number(e.initial).c_str());
+               number(e.plastic_dissipation).c_str(), number(e.contact_work).c_str(), number(e.initial).c_str());
   std::fprintf(f, "}\n");
   // Written whole or not at all: a full disk keeps the earlier summary.json (if any) and says so.
   const bool written = !std::ferror(f);

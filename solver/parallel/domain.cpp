@@ -263,6 +263,10 @@ Model localize(Model&& global, const std::vector<int>& part) {
     blk.inv_jacobian = select_interleaved(g.inv_jacobian, members, 72);
     blk.wdetJ = select_interleaved(g.wdetJ, members, 8);
     take(g.stress, blk.stress);
+    if (g.formulation == inputs::ElementFormulation::mean_quadrature)
+      take(g.state, blk.state);
+    else
+      blk.state = select_interleaved(g.state, members, 8 * materials::state_size_of(g.material));
     m.blocks.push_back({blk.name, blk.first_element, blk.count});
     local.blocks.push_back(std::move(blk));
   }

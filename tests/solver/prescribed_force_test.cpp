@@ -17,7 +17,7 @@ namespace {
 
 TEST(PrescribedForce, UniaxialBlockReachesTheStaticSolution) {
   const double L = 10e-9, E = 160e9, F = 100e-9;  // 100 nN on 100 nm^2: 1 GPa
-  auto deck = test::box_deck(1, L, inputs::MaterialModel::elastic, inputs::ElementFormulation::mean_quadrature, E, 0.22,
+  auto deck = test::box_deck(1, L, "elastic", inputs::ElementFormulation::mean_quadrature, E, 0.22,
                              2330.0);
   // No bulk viscosity: its ledger entry is approximate to O(dt^2) per step (solver/README.md), and
   // this test checks the load's work, which the scheme's pairing makes exact.
@@ -58,7 +58,7 @@ TEST(PrescribedForce, UniaxialBlockReachesTheStaticSolution) {
 }
 
 TEST(PrescribedForce, RefusesAConstrainedComponent) {
-  auto deck = test::box_deck(1, 10e-9, inputs::MaterialModel::elastic, inputs::ElementFormulation::mean_quadrature);
+  auto deck = test::box_deck(1, 10e-9, "elastic", inputs::ElementFormulation::mean_quadrature);
   using C = inputs::Component;
   deck.procedure.region.fixed_displacements.push_back({"b_zmax", {C::z}, {}});
   deck.functions.push_back({"load", {0.0, 1.0}, {0.0, 1.0}, {}});

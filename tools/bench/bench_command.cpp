@@ -84,8 +84,8 @@ int bench_command(const std::vector<std::string>& argv) {
   else if (element == "fully_integrated") formulation = inputs::ElementFormulation::fully_integrated;
   else throw tools::BadInput("tribex bench: --element must be mean_quadrature or fully_integrated");
   inputs::MaterialModel model;
-  if (material == "elastic") model = inputs::MaterialModel::elastic;
-  else if (material == "neohookean" || material == "neo_hookean") model = inputs::MaterialModel::neo_hookean;
+  if (material == "elastic") model = "elastic";
+  else if (material == "neohookean" || material == "neo_hookean") model = "neo_hookean";
   else throw tools::BadInput("tribex bench: --material must be elastic or neohookean");
 
   const inputs::Deck deck = block_deck(static_cast<int>(n), formulation, model);

@@ -93,7 +93,7 @@ int check_command(const std::vector<std::string>& argv) {
   for (const auto& m : deck.materials)
     for (const auto& p : m.models)
       std::printf("  material %-12s %-11s rho %.6g kg/m^3, E %.6g Pa, nu %.4g\n", m.name.c_str(),
-                  p.model == inputs::MaterialModel::elastic ? "elastic" : "neo_hookean", m.density, p.youngs_modulus,
+                  p.model.c_str(), m.density, p.youngs_modulus,
                   p.poissons_ratio);
   solver::RunOptions options;
   options.check_only = true;
