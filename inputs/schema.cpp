@@ -369,7 +369,8 @@ std::vector<BlockSchema> build_table() {
                                    "contact_status"},
                                   false, "", "nodal fields"));
     results.keys.push_back(
-        choice("element variables", ValueKind::enumerations, {"stress"}, false, "", "element fields"));
+        choice("element variables", ValueKind::enumerations, {"stress", "equivalent_plastic_strain"}, false, "",
+               "element fields: Cauchy stress (Pa); equivalent plastic strain (J2 plasticity, element mean)"));
     t.push_back(results);
   }
   {

@@ -42,6 +42,7 @@ struct J2Plasticity {
   }};
   /// Per material point: eps_p (xx yy zz xy yz zx, tensor components) and alpha.
   static constexpr int state_size = 7;
+  static constexpr int equivalent_plastic_strain_index = 6;  // alpha: the element field of that name
   static constexpr bool dissipates = true;
 
   double lambda = 0.0;

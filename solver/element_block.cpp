@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "solver/element_block.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -82,6 +83,29 @@ ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivi
         if (block.formulation == inputs::ElementFormulation::mean_quadrature)
           return hex8::mean_quadrature_forces(mat, block, connectivity, u, v, force, dt, want_stress);
         return hex8::fully_integrated_forces(mat, block, connectivity, u, v, force, dt, want_stress);
+      },
+      block.material);
+}
+
+void equivalent_plastic_strain(const ElementBlock& block, double* out) {
+  std::visit(
+      [&](const auto& mat) {
+        using M = std::decay_t<decltype(mat)>;
+        if constexpr (requires { M::equivalent_plastic_strain_index; }) {
+          constexpr int ns = M::state_size, k = M::equivalent_plastic_strain_index;
+          for (int e = 0; e < block.count; ++e) {
+            if (block.formulation == inputs::ElementFormulation::mean_quadrature) {
+              out[e] = block.state[static_cast<std::size_t>(ns) * e + k];
+              continue;
+            }
+            double sum = 0.0;  // volume average over the 8 points
+            for (int p = 0; p < 8; ++p)
+              sum += block.wdetJ[lane_index(e, p, 8)] * block.state[lane_index(e, ns * p + k, 8 * ns)];
+            out[e] = sum / block.volume0[e];
+          }
+        } else {
+          std::fill(out, out + block.count, 0.0);
+        }
       },
       block.material);
 }

@@ -59,6 +59,10 @@ inline std::size_t interleaved_size(int count, int per_element) {
 /// a rank's share of a block, or one element on its own. Empty stays empty (no such data).
 std::vector<double> select_interleaved(const std::vector<double>& from, std::span<const int> elements, int per_element);
 
+/// Element mean of the equivalent plastic strain (materials that declare
+/// equivalent_plastic_strain_index; 0 for the others) into out[e], e over the block.
+void equivalent_plastic_strain(const ElementBlock& block, double* out);
+
 /// Build the reference data of one block. Throws solver::SetupError naming the first element with
 /// a non-positive volume or Jacobian (1-based, as gmsh and ParaView show them + 1).
 ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block,

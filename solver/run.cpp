@@ -425,6 +425,7 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
   std::vector<double> row;
   row.reserve(HistoryWriter::standard_columns().size() + extra.size());
   std::vector<double> element_stress(6 * static_cast<std::size_t>(model.mesh.element_count()), 0.0);
+  std::vector<double> element_plastic_strain(static_cast<std::size_t>(model.mesh.element_count()), 0.0);
   std::vector<std::vector<double>> packed;  // parallel: this rank's rows of each field (output steps only)
   const bool terminal = root && !options.quiet && isatty(STDERR_FILENO);
   // Batch jobs and pipes get a heartbeat line instead of the terminal's carriage-return progress.
@@ -500,10 +501,14 @@ RunSummary run_deck(const inputs::Deck& deck, const RunOptions& options) {
         if (model.contact && name == "contact_status") nodal.push_back({name, 1, owned_rows(model.contact->status(), 1, true)});
       }
       for (const auto& name : region.results->element_variables) {
-        if (name != "stress") continue;
-        for (const auto& b : model.blocks)
-          std::copy(b.stress.begin(), b.stress.end(), element_stress.begin() + 6 * b.first_element);
-        element.push_back({"stress", 6, element_stress});
+        if (name == "stress") {
+          for (const auto& b : model.blocks)
+            std::copy(b.stress.begin(), b.stress.end(), element_stress.begin() + 6 * b.first_element);
+          element.push_back({"stress", 6, element_stress});
+        } else if (name == "equivalent_plastic_strain") {
+          for (const auto& b : model.blocks) equivalent_plastic_strain(b, element_plastic_strain.data() + b.first_element);
+          element.push_back({name, 1, element_plastic_strain});
+        }
       }
       if (results) results->write_step(t, nodal, element);
       field_schedule->done(t);

@@ -101,7 +101,7 @@ begin sierra mpi_plasticity
       begin results output fields
         time increment = 15 ps
         nodal variables = displacement
-        element variables = stress
+        element variables = stress equivalent_plastic_strain
       end results output fields
       begin restart output
         step increment = 1000   # written only when a run stops early
