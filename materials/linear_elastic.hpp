@@ -16,20 +16,17 @@
 
 namespace tribex::materials {
 
-struct LinearElastic {
+struct LinearElastic : Hyperelastic {
   static constexpr std::string_view deck_name = "elastic";
   static constexpr std::string_view alias = "";
   static constexpr std::string_view description = "isotropic linear elasticity, small strain";
-  static constexpr std::array<ParameterDecl, 0> parameters{};  // E and nu only
-  static constexpr int state_size = 0;
-  static constexpr bool dissipates = false;
 
   double lambda = 0.0;
   double mu = 0.0;
   double density = 0.0;
 
   static LinearElastic make(double lambda_, double mu_, double density_, std::span<const double> /*parameters*/) {
-    return {lambda_, mu_, density_};
+    return {{}, lambda_, mu_, density_};
   }
 
   /// Stress from the displacement gradient H (row-major 3x3): the stress that multiplies the

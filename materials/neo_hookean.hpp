@@ -19,20 +19,17 @@
 
 namespace tribex::materials {
 
-struct NeoHookean {
+struct NeoHookean : Hyperelastic {
   static constexpr std::string_view deck_name = "neo_hookean";
   static constexpr std::string_view alias = "neohookean";
   static constexpr std::string_view description = "compressible neo-Hookean hyperelasticity, finite strain";
-  static constexpr std::array<ParameterDecl, 0> parameters{};  // E and nu only
-  static constexpr int state_size = 0;
-  static constexpr bool dissipates = false;
 
   double lambda = 0.0;
   double mu = 0.0;
   double density = 0.0;
 
   static NeoHookean make(double lambda_, double mu_, double density_, std::span<const double> /*parameters*/) {
-    return {lambda_, mu_, density_};
+    return {{}, lambda_, mu_, density_};
   }
 
   /// First Piola-Kirchhoff stress from the displacement gradient H = F - I (row-major 3x3);

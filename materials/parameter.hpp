@@ -4,6 +4,7 @@
 // (inputs/schema.cpp, inputs/deck_builder.cpp), so a model declares its keys once, beside its law.
 #pragma once
 
+#include <array>
 #include <string_view>
 
 namespace tribex::materials {
@@ -15,6 +16,14 @@ struct ParameterDecl {
   bool lower_open = false;
   std::string_view default_text;  // in deck syntax; "" means the key is required
   std::string_view help;          // one line for the key reference and error messages
+};
+
+/// What the hyperelastic models share: no keys beyond E and nu, no state, no dissipation
+/// (materials/README.md lists the interface).
+struct Hyperelastic {
+  static constexpr std::array<ParameterDecl, 0> parameters{};
+  static constexpr int state_size = 0;
+  static constexpr bool dissipates = false;
 };
 
 }  // namespace tribex::materials
