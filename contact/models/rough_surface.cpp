@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "contact/rough/asperity_contact.hpp"
 #include "contact/rough/gw_integrals.hpp"
 
 namespace tribex::contact {
@@ -109,12 +110,12 @@ RoughSurfaceState RoughSurfaceLaw::evaluate_direct(double d) const {
   RoughSurfaceState s;
   double count = 0.0;
   for (std::size_t i = 0; i < heights_.size() && heights_[i] > d; ++i) {
-    const double w = heights_[i] - d, r = radii_[i];
+    const auto a = gw::asperity_contact(heights_[i] - d, radii_[i], q.composite_modulus, q.work_of_adhesion);
     count += 1.0;
-    s.area_fraction += M_PI * r * w;                                        // a_i = pi R_i w_i
-    s.pressure += (4.0 / 3.0) * q.composite_modulus * std::sqrt(r) * w * std::sqrt(w);  // Hertz, Eq. 4.4
-    s.adhesion += 2.0 * M_PI * q.work_of_adhesion * r;                                   // DMT pull, Eq. 4.10
-    s.stiffness += 2.0 * q.composite_modulus * std::sqrt(r * w);           // dP_i/dw = 2 E* a_i
+    s.area_fraction += a.area;
+    s.pressure += a.force;
+    s.adhesion += a.pull;
+    s.stiffness += a.stiffness;
   }
   s.contact_density = count / q.map_area;
   s.area_fraction /= q.map_area;

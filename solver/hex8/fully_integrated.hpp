@@ -11,6 +11,7 @@
 
 #include "materials/lanes.hpp"
 #include "solver/element_block.hpp"
+#include "solver/hex8/internal_forces.hpp"
 #include "solver/hex8/sum_factorized.hpp"
 
 namespace tribex::solver::hex8 {

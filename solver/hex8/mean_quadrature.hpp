@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "solver/element_block.hpp"
+#include "solver/hex8/internal_forces.hpp"
 
 namespace tribex::solver::hex8 {
 

@@ -8,6 +8,7 @@
 
 #include "solver/errors.hpp"
 #include "solver/parallel/communicator.hpp"
+#include "solver/hex8/internal_forces.hpp"
 
 namespace tribex::solver {
 namespace {

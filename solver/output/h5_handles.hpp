@@ -47,6 +47,23 @@ class H5Handle {
   Closer closer_ = nullptr;
 };
 
+/// Silences HDF5's own error-stack printing for its lifetime (HDF5 prints its whole stack to stderr
+/// on any failure; the caller reports one line itself), restoring the previous handler after.
+class QuietHdf5Errors {
+ public:
+  QuietHdf5Errors() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietHdf5Errors(const QuietHdf5Errors&) = delete;
+  QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
 /// Creates group `name` under `loc`; throws std::runtime_error naming `file` on failure.
 /// track_order: the group records the order its links are made in (H5_INDEX_CRT_ORDER), so that
 /// a reader can list them in that order rather than by name.

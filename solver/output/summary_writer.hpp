@@ -5,7 +5,7 @@
 #include <string>
 
 #include "solver/energy.hpp"
-#include "solver/run.hpp"
+#include "solver/output/run_summary.hpp"
 #include "solver/stable_time_step.hpp"
 
 namespace tribex::solver {

@@ -21,21 +21,6 @@ using output::H5Handle;
 // Bumped when the archive layout changes; a file of another version is refused (exit 2).
 constexpr double kRestartFormatVersion = 1;
 
-class QuietErrors {
- public:
-  QuietErrors() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietErrors(const QuietErrors&) = delete;
-  QuietErrors& operator=(const QuietErrors&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
 void write_group(hid_t file, const StateArchive& a, const std::string& path) {
   H5Handle group = output::create_group(file, "rank_" + std::to_string(parallel::rank()), path);
   for (const auto& [name, values] : a.reals) {
@@ -81,7 +66,7 @@ herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data)
 }  // namespace
 
 void write_restart_file(const std::string& path, const StateArchive& archive) {
-  QuietErrors quiet;
+  output::QuietHdf5Errors quiet;
   const std::string part = path + ".part";
   int failed = 0;
   for (int r = 0; r < parallel::size(); ++r) {
@@ -114,7 +99,7 @@ void write_restart_file(const std::string& path, const StateArchive& archive) {
 }
 
 StateArchive read_restart_file(const std::string& path) {
-  QuietErrors quiet;
+  output::QuietHdf5Errors quiet;
   if (!std::filesystem::is_regular_file(path))
     throw SetupError(path + ": error: no such restart file; give a restart_<k>.h5 or restart.h5 written by a run with "
                             "'begin restart output'");

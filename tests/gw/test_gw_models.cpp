@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "contact/rough/gw_integrals.hpp"
-#include "contact/rough/gw_models.hpp"
+#include "tools/gw/gw_models.hpp"
 
 using namespace tribex::gw;
 

@@ -9,6 +9,7 @@
 #include "solver/integrators/central_difference.hpp"
 #include "solver/model.hpp"
 #include "support.hpp"
+#include "solver/hex8/internal_forces.hpp"
 
 using namespace tribex;
 

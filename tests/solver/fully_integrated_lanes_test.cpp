@@ -11,6 +11,7 @@
 #include "mesh/box.hpp"
 #include "solver/model.hpp"
 #include "support.hpp"
+#include "solver/hex8/internal_forces.hpp"
 
 using namespace tribex;
 

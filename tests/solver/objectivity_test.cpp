@@ -7,6 +7,7 @@
 
 #include "solver/model.hpp"
 #include "support.hpp"
+#include "solver/hex8/internal_forces.hpp"
 
 using namespace tribex;
 

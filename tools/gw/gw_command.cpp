@@ -10,7 +10,7 @@
 #include "tools/common/errors.hpp"
 #include "tools/common/text_file.hpp"
 #include "contact/rough/gw_integrals.hpp"
-#include "contact/rough/gw_models.hpp"
+#include "tools/gw/gw_models.hpp"
 
 namespace tribex::cli {
 namespace {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tools/surface/summit_contact.hpp"
 
-#include <cmath>
+#include "contact/rough/asperity_contact.hpp"
 
 namespace tribex::surface {
 
@@ -11,12 +11,11 @@ SummitContact summit_contact(const std::vector<Summit>& summits, double e_star, 
   for (const auto& s : summits) {
     const double w = s.height - h;
     if (w <= 0.0 || s.curvature <= 0.0) continue;
-    const double r = 1.0 / s.curvature;
-    const double hertz = (4.0 / 3.0) * e_star * std::sqrt(r) * w * std::sqrt(w);  // Eq. 4.4
+    const auto a = gw::asperity_contact(w, 1.0 / s.curvature, e_star, work_of_adhesion);
     ++c.contacts;
-    c.area += M_PI * r * w;
-    c.load_hertz += hertz;
-    c.load_dmt += hertz - 2.0 * M_PI * work_of_adhesion * r;  // DMT pull-off force 2 pi W R per contact
+    c.area += a.area;
+    c.load_hertz += a.force;
+    c.load_dmt += a.force - a.pull;
   }
   return c;
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "contact/rough/gw_models.hpp"
+#include "tools/gw/gw_models.hpp"
 
 #include <cmath>
 #include <random>

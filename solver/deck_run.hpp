@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+// The stages of run_deck (solver/run.hpp), private to solver/: deck_run_setup.cpp holds pre-flight,
+// the rank's part and the restart state, and the output files; deck_run_loop.cpp the loop, what it
+// writes at time n, and the close.
+#pragma once
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solver/guards/block_translation.hpp"
+#include "solver/guards/run_guards.hpp"
+#include "solver/integrators/central_difference.hpp"
+#include "solver/model.hpp"
+#include "solver/output/history_writer.hpp"
+#include "solver/output/results_writer.hpp"
+#include "solver/output/run_log.hpp"
+#include "solver/output/schedule.hpp"
+#include "solver/parallel/communicator.hpp"
+#include "solver/restart/restart_output.hpp"
+#include "solver/restart/state_archive.hpp"
+#include "solver/run.hpp"
+#include "solver/stop_signal.hpp"
+
+namespace tribex::solver {
+
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// One run of a deck, in its stages: pre-flight (the whole model, checked and reported), the
+/// rank's part and the restart state, the output files, the loop, the close (summary.json and the
+/// closing lines). What the stages share is kept here; the loop allocates nothing.
+class DeckRun {
+ public:
+  DeckRun(const inputs::Deck& deck, const RunOptions& options)
+      : deck_(deck), options_(options), region_(deck.procedure.region), tc_(deck.procedure.time_control),
+        root_(parallel::is_root()), ranks_(parallel::size()), log_(options.quiet || !root_) {}
+
+  RunSummary run() {
+    preflight();
+    if (options_.check_only) {
+      summary_.status = "checked";
+      return summary_;
+    }
+    distribute_and_resume();
+    stop_before_outputs("before the output files were opened");
+    open_outputs();
+    loop();
+    close();
+    return summary_;
+  }
+
+ private:
+  // ---- stage 1: the whole model, checked and reported; nothing written ----
+  void preflight();
+  void report_mesh(const Model& global);
+  // ---- stage 2: this rank's part, the integrator and the restart state ----
+  void distribute_and_resume();
+  // ---- stage 3: the output folder, history.csv, results.h5, restart output ----
+  void open_outputs();
+  void choose_history_columns();  // every rank: the row is built everywhere, written by rank 0
+  void open_results();
+  // ---- stage 4: the loop and what it writes at time n ----
+  void loop();
+  void write_outputs();
+  void write_history_row(double t, long n);
+  void write_fields(double t);
+  void write_restart();
+  std::string progress_text(long n, double t, double error) const;
+  // ---- stage 5: summary.json and the closing lines ----
+  void close();
+  void close_log_lines();
+
+  /// A stop that arrives before the outputs exist ends the run here, with nothing written (every
+  /// rank at the same point): set-up is not interrupted half-way.
+  void stop_before_outputs(const char* stage) {
+    int stop = stop_signal();
+    if (ranks_ > 1) stop = static_cast<int>(parallel::max(static_cast<long long>(stop)));
+    if (stop && !options_.check_only)
+      throw Interrupted(std::string("interrupted during set-up (") + stage + "); nothing was written");
+  }
+  /// Warnings go to stderr too when the terminal is otherwise quiet.
+  void announce(const RunWarning& w) {
+    log_.say("warning: " + w.message);
+    if (root_ && options_.quiet) std::fprintf(stderr, "warning: %s\n", w.message.c_str());
+  }
+
+  const inputs::Deck& deck_;
+  const RunOptions& options_;
+  const inputs::RegionSpec& region_;
+  const inputs::TimeControlSpec& tc_;
+  const Clock::time_point wall_start_ = Clock::now();
+  const bool root_;
+  const int ranks_;
+  RunLog log_;  // printed once, by rank 0
+  RunSummary summary_;
+
+  // stage 1
+  std::optional<Model> global_;  // the whole model until localized
+  StableStep stable0_;
+  double est_steps_ = 0.0;
+  int elements_ = 0;
+  // stage 2
+  std::optional<mesh::Mesh> whole_mesh_;  // kept until results.h5 holds it (parallel runs)
+  std::map<std::string, double> set_size_;  // node-set sizes of the whole mesh
+  std::string mesh_hash_;
+  std::optional<Model> model_;
+  std::optional<CentralDifference> integrator_;
+  std::optional<RunGuards> guards_;
+  std::optional<BlockTranslation> block_translation_;
+  std::optional<StateArchive> resume_;
+  // stage 3
+  std::filesystem::path out_;
+  bool material_dissipation_ = false;
+  std::vector<std::string> extra_columns_;
+  std::optional<HistoryWriter> history_;
+  std::vector<std::vector<int>> reaction_sets_, displacement_sets_;
+  std::vector<double> displacement_set_size_;
+  std::vector<double> set_sums_;
+  std::optional<Schedule> history_schedule_;
+  std::unique_ptr<ResultsWriter> results_;
+  std::optional<Schedule> field_schedule_;
+  ResultsSlab slab_;
+  long first_step_ = 0;
+  double earlier_wall_seconds_ = 0.0, earlier_loop_seconds_ = 0.0;  // segments before a restart
+  std::optional<RestartOutput> restart_output_;
+  // stage 4
+  Clock::time_point loop_start_;
+  bool closing_ = false;
+  std::vector<double> row_;
+  std::vector<double> element_stress_, element_plastic_strain_;
+  std::vector<std::vector<double>> packed_;  // parallel: this rank's rows of each field (output steps only)
+  bool terminal_ = false, heartbeat_ = false;
+  Clock::time_point last_progress_, last_heartbeat_;
+  double contact_seconds_before_ = 0.0;  // earlier segments' (restart file)
+};
+
+}  // namespace tribex::solver

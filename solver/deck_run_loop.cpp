@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: MIT
+// run_deck, stages 4-5 (deck_run.hpp): the loop, what it writes at time n (history row, fields,
+// restart file, progress), and the close (summary.json, the closing lines).
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <span>
+
+#include "solver/deck_run.hpp"
+#include "solver/errors.hpp"
+#include "solver/output/summary_writer.hpp"
+#include "solver/restart/run_fingerprint.hpp"
+
+namespace tribex::solver {
+namespace {
+
+std::string human_seconds(double s) {
+  if (!std::isfinite(s) || s < 0) return "?";
+  if (s < 120) return format("%.0f s", s);
+  if (s < 7200) return format("%.1f min", s / 60);
+  return format("%.1f h", s / 3600);
+}
+
+}  // namespace
+
+void DeckRun::write_restart() {
+  StateArchive archive;
+  integrator_->save_state(archive);
+  guards_->save(archive);
+  archive.put_integers("deck_text", as_codes(deck_.resolved_text));
+  archive.put_integers("mesh_sha256", as_codes(mesh_hash_));
+  archive.put("history_next", history_schedule_->next());
+  archive.put("results_next", field_schedule_ ? field_schedule_->next() : 0.0);
+  archive.put("run_wall_seconds", earlier_wall_seconds_ + seconds_since(wall_start_));
+  archive.put("run_loop_seconds", earlier_loop_seconds_ + seconds_since(loop_start_));
+  const std::string file = restart_output_->write(archive);
+  log_.record(format("restart file %s at step %ld, t = %.9g s\n", file.c_str(), integrator_->step_index(), integrator_->time()));
+}
+
+std::string DeckRun::progress_text(long n, double t, double error) const {
+  const double span = tc_.termination_time - tc_.start_time;
+  const double frac = span > 0 ? (t - tc_.start_time) / span : 1.0;
+  const double elapsed = seconds_since(loop_start_);
+  return format("step %ld | t %.4g s | %5.1f%% | ETA %s | dt %.3g s | energy error %.2e", n, t, 100.0 * frac,
+                human_seconds(frac > 0 ? elapsed * (1 - frac) / frac : NAN).c_str(), integrator_->dt(), error);
+}
+
+void DeckRun::write_history_row(double t, long n) {
+  const auto& E = integrator_->energies();
+  const auto& C = integrator_->contact_totals();
+  row_.clear();
+  row_.insert(row_.end(), {t, integrator_->dt(), E.kinetic, E.internal, E.hourglass, E.external_work,
+                           E.silent_boundary_dissipation, E.contact_work, E.relative_error(), C.normal_force,
+                           C.tangential_force, C.area, double(C.nodes), E.damping_dissipation, E.viscous_dissipation,
+                           std::sqrt(C.area / M_PI), C.radius_max, C.max_penetration, integrator_->momentum()[0],
+                           integrator_->momentum()[1], integrator_->momentum()[2], C.radius_edge, C.adhesive_force,
+                           C.compressive_force, C.tangential_force, C.junction_capacity, C.adhesion_energy,
+                           C.friction_power, C.radius_pressure_fit, C.real_area, C.asperity_contacts,
+                           C.apparent_pressure()});
+  if (material_dissipation_) row_.push_back(E.plastic_dissipation);
+  std::fill(set_sums_.begin(), set_sums_.end(), 0.0);
+  std::size_t c = 0;
+  for (const auto& set : reaction_sets_) {
+    for (int node : set)
+      for (int i = 0; i < 3; ++i) set_sums_[c + i] += integrator_->reaction()[3 * node + i];
+    c += 3;
+  }
+  for (const auto& set : displacement_sets_) {
+    for (int node : set)
+      for (int i = 0; i < 3; ++i) set_sums_[c + i] += integrator_->displacement()[3 * node + i];
+    c += 3;
+  }
+  parallel::sum(set_sums_.data(), static_cast<int>(set_sums_.size()));
+  for (std::size_t k = 0; k < displacement_sets_.size(); ++k)
+    for (int i = 0; i < 3; ++i) set_sums_[3 * (reaction_sets_.size() + k) + i] /= displacement_set_size_[k];
+  row_.insert(row_.end(), set_sums_.begin(), set_sums_.end());
+  if (history_) history_->write_row(n, row_);
+}
+
+void DeckRun::write_fields(double t) {
+  // Parallel runs write the rows this rank owns: nodal fields packed from local (or, for the
+  // contact fields, global) numbering; the rank's elements are its rows already.
+  const Model& model = *model_;
+  const auto& domain = model.domain;
+  std::vector<FieldView> nodal, element;
+  std::size_t g = 0;
+  const auto owned_rows = [&](const std::vector<double>& values, int components, bool global_numbering) {
+    if (domain.serial()) return std::span<const double>(values);
+    if (packed_.size() <= g) packed_.emplace_back();
+    auto& buffer = packed_[g++];
+    buffer.clear();
+    for (int l : domain.owned_local_nodes()) {
+      const std::size_t r = static_cast<std::size_t>(global_numbering ? domain.global_node[l] : l);
+      buffer.insert(buffer.end(), values.begin() + components * r, values.begin() + components * (r + 1));
+    }
+    return std::span<const double>(buffer);
+  };
+  for (const auto& name : region_.results->nodal_variables) {
+    const std::vector<double>* v = nullptr;
+    if (name == "displacement") v = &integrator_->displacement();
+    if (name == "velocity") v = &integrator_->velocity();
+    if (name == "acceleration") v = &integrator_->acceleration();
+    if (name == "force") v = &integrator_->force();
+    if (v) nodal.push_back({name, 3, owned_rows(*v, 3, false)});
+    if (model.contact && name == "contact_traction") nodal.push_back({name, 3, owned_rows(model.contact->traction(), 3, true)});
+    if (model.contact && name == "contact_status") nodal.push_back({name, 1, owned_rows(model.contact->status(), 1, true)});
+  }
+  for (const auto& name : region_.results->element_variables) {
+    if (name == "stress") {
+      for (const auto& b : model.blocks)
+        std::copy(b.stress.begin(), b.stress.end(), element_stress_.begin() + 6 * b.first_element);
+      element.push_back({"stress", 6, element_stress_});
+    } else if (name == "equivalent_plastic_strain") {
+      for (const auto& b : model.blocks) equivalent_plastic_strain(b, element_plastic_strain_.data() + b.first_element);
+      element.push_back({name, 1, element_plastic_strain_});
+    }
+  }
+  if (results_) results_->write_step(t, nodal, element);
+}
+
+void DeckRun::write_outputs() {
+  const double t = integrator_->time();
+  const long n = integrator_->step_index();
+  const auto& E = integrator_->energies();
+  if (history_schedule_->due(t, n, closing_)) {
+    write_history_row(t, n);
+    history_schedule_->done(t);
+  }
+  if (field_schedule_ && field_schedule_->due(t, n, closing_)) {
+    write_fields(t);
+    field_schedule_->done(t);
+  }
+  guards_->observe(n, t, E, model_->contact ? &integrator_->contact_totals() : nullptr,
+                   guards_->wants_sample(n) ? block_translation_->kinetic_energy(integrator_->velocity()) : 0.0);
+  if (terminal_ && seconds_since(last_progress_) > 0.5) {
+    last_progress_ = Clock::now();
+    std::fprintf(stderr, "\r  %s   ", progress_text(n, t, E.relative_error()).c_str());
+    std::fflush(stderr);
+  }
+  if (heartbeat_ && seconds_since(last_heartbeat_) >= options_.heartbeat_seconds) {
+    last_heartbeat_ = Clock::now();
+    log_.say("heartbeat: " + progress_text(n, t, E.relative_error()));
+  }
+}
+
+void DeckRun::loop() {
+  const double end_time = tc_.termination_time;
+  integrator_->set_stress_request([this, end_time](double t, long n) {
+    return field_schedule_ && !region_.results->element_variables.empty() &&
+           field_schedule_->due(t, n, t >= end_time * (1 - 1e-14));
+  });
+  row_.reserve(HistoryWriter::standard_columns().size() + extra_columns_.size());
+  element_stress_.assign(6 * static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
+  element_plastic_strain_.assign(static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
+  terminal_ = root_ && !options_.quiet && isatty(STDERR_FILENO);
+  // Batch jobs and pipes get a heartbeat line instead of the terminal's carriage-return progress.
+  heartbeat_ = root_ && options_.heartbeat_seconds > 0 && !isatty(STDOUT_FILENO);
+  last_progress_ = last_heartbeat_ = Clock::now();
+
+  fault_signal_point("outputs");
+  const std::function<void()> on_time_n = [this] { write_outputs(); };  // built once: no allocation per step
+  contact_seconds_before_ = integrator_->contact_seconds();
+  log_.say("running ...");
+  loop_start_ = Clock::now();
+  bool stopped_at_step = false;
+  try {
+    if (!resume_) integrator_->init();
+    while (!integrator_->finished()) {
+      integrator_->step(on_time_n);
+      stopped_at_step = options_.stop_at_step >= 0 && integrator_->step_index() >= options_.stop_at_step;
+      bool stop = stop_signal() || stopped_at_step;
+      if (ranks_ > 1) stop = parallel::max(static_cast<long long>(stop)) > 0;  // every rank stops at the same step
+      if (restart_output_ && (stop || restart_output_->due(integrator_->step_index()))) write_restart();
+      if (stop) break;
+    }
+    closing_ = true;
+    integrator_->close(on_time_n);
+    const bool interrupted = stop_signal() || stopped_at_step;
+    summary_.exit_code = interrupted ? 130 : 0;
+    summary_.status = interrupted ? "interrupted" : "normal termination";
+  } catch (const NumericalFailure& e) {
+    summary_.exit_code = 3;
+    summary_.status = std::string("numerical failure: ") + e.what();
+  } catch (const OutputError& e) {
+    summary_.exit_code = 3;
+    summary_.status = std::string("output failure: ") + e.what();
+  }
+  summary_.loop_seconds = seconds_since(loop_start_);
+  if (terminal_) std::fprintf(stderr, "\n");
+}
+
+void DeckRun::close() {
+  RunSummary& summary = summary_;
+  guards_->finish();
+  summary.warnings = guards_->warnings();
+  try {
+    if (results_) results_->flush();  // collective in a parallel run: every rank gets here
+  } catch (const OutputError& e) {
+    if (summary.exit_code == 0 || summary.exit_code == 130) {
+      summary.exit_code = 3;
+      summary.status = std::string("output failure: ") + e.what();
+    }
+  }
+  summary.steps = integrator_->step_index();
+  summary.first_step = first_step_;
+  summary.total_wall_seconds = earlier_wall_seconds_ + seconds_since(wall_start_);
+  summary.total_loop_seconds = earlier_loop_seconds_ + summary.loop_seconds;
+  summary.contact_seconds = integrator_->contact_seconds();
+  summary.ranks = ranks_;
+  summary.communication_seconds = model_->domain.communication_seconds;
+  summary.final_time = integrator_->time();
+  summary.energy_error = integrator_->energies().relative_error();
+  const long steps_run = summary.steps - summary.first_step;  // by this process
+  summary.ns_per_element_step =
+      steps_run > 0 && elements_ > 0 ? 1e9 * summary.loop_seconds / (double(elements_) * double(steps_run)) : 0.0;
+  summary.wall_seconds = seconds_since(wall_start_);
+  if (root_) {
+    try {
+      write_summary_json((out_ / "summary.json").string(), summary, integrator_->energies(), stable0_);
+    } catch (const std::exception& e) {  // a full disk: say so; the status still ends the log and stderr
+      std::fprintf(stderr, "error: %s\n", e.what());
+      if (summary.exit_code == 0) {
+        summary.exit_code = 3;
+        summary.status = std::string("output failure: ") + e.what();
+      }
+    }
+  }
+  close_log_lines();
+}
+
+void DeckRun::close_log_lines() {
+  const RunSummary& summary = summary_;
+  const long steps_run = summary.steps - summary.first_step;
+  log_.say(format("%ld steps to t = %.6g s in %.3g s wall (loop %.3g s, %.1f ns per element per step); energy error %.3e",
+                  steps_run, summary.final_time, summary.wall_seconds, summary.loop_seconds,
+                  summary.ns_per_element_step, summary.energy_error));
+  if (summary.first_step > 0 && std::isfinite(summary.total_wall_seconds))
+    log_.say(format("resumed at step %ld: the whole run, %ld steps, took %.4g s wall (loop %.4g s) over its segments",
+                    summary.first_step, summary.steps, summary.total_wall_seconds, summary.total_loop_seconds));
+  else if (summary.first_step > 0)
+    log_.say(format("resumed at step %ld: the whole run's time is unknown (an earlier segment's restart file did not "
+                    "record it; add the segments' wall times in log.txt)", summary.first_step));
+  log_.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out_.string().c_str(),
+                  results_ ? ",results.h5,results.xdmf" : ""));
+  if (model_->contact) {
+    const double segment_contact_seconds = summary.contact_seconds - contact_seconds_before_;
+    log_.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", segment_contact_seconds,
+                    summary.loop_seconds > 0 ? 100.0 * segment_contact_seconds / summary.loop_seconds : 0.0,
+                    model_->contact->total_searches()));
+  }
+  if (ranks_ > 1) {
+    // Waiting at the exchange is most of it: the rank that waits least carries the most work.
+    const double share = summary.loop_seconds > 0 ? 100.0 * summary.communication_seconds / summary.loop_seconds : 0.0;
+    const double least = parallel::min(share), most = parallel::max(share);
+    log_.say(format("parallel: %d ranks; rank 0 spent %.3g s of the loop (%.1f %%) in communication, waits included "
+                    "(%.1f-%.1f %% over the ranks)",
+                    ranks_, summary.communication_seconds, share, least, most));
+  }
+  std::string closing_line = summary.exit_code == 0 ? "Normal termination" : "Error termination: " + summary.status;
+  if (!summary.warnings.empty()) {
+    std::string kinds;
+    for (const auto& w : summary.warnings) kinds += (kinds.empty() ? "" : ", ") + std::string(kind_name(w.kind));
+    closing_line += format(" (%zu warning%s: %s; see summary.json)", summary.warnings.size(),
+                           summary.warnings.size() == 1 ? "" : "s", kinds.c_str());
+  }
+  log_.say(closing_line);
+  // --quiet silences the terminal, not the reason a run failed: that still goes to stderr.
+  if (summary.exit_code != 0 && root_ && options_.quiet) std::fprintf(stderr, "%s\n", closing_line.c_str());
+}
+
+}  // namespace tribex::solver

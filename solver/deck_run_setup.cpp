@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: MIT
+// run_deck, stages 1-3 (deck_run.hpp): pre-flight, the rank's part and the restart state, the outputs.
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "mesh/mesh_error.hpp"
+#include "solver/deck_run.hpp"
+#include "solver/errors.hpp"
+#include "solver/output/output_folder.hpp"
+#include "solver/parallel/partition.hpp"
+#include "solver/restart/run_fingerprint.hpp"
+
+namespace tribex::solver {
+namespace {
+
+// Exit code of an error thrown inside run_deck (the CLI maps the same types the same way).
+int exit_code_of(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const SetupError&) {
+    return 2;
+  } catch (const mesh::MeshError&) {
+    return 2;
+  } catch (const NumericalFailure&) {
+    return 3;
+  } catch (const StoppedByOtherRank& s) {
+    return s.exit_code;
+  } catch (...) {
+    return 1;
+  }
+}
+
+/// Collective: when any rank holds an error, the lowest such rank rethrows it (and prints it) and
+/// every other rank throws StoppedByOtherRank with its exit code. For the steps of the set-up that
+/// can fail on one rank only (files written by rank 0, a rank's group of a restart file).
+void agree_on_errors(const std::exception_ptr& error) {
+  if (parallel::size() == 1) {
+    if (error) std::rethrow_exception(error);
+    return;
+  }
+  const double first = parallel::min(error ? double(parallel::rank()) : 1e9);
+  if (first >= 1e9) return;
+  int code = error ? exit_code_of(error) : 0;
+  parallel::broadcast(&code, 1, static_cast<int>(first));
+  if (parallel::rank() == static_cast<int>(first)) std::rethrow_exception(error);
+  throw StoppedByOtherRank(code);
+}
+
+}  // namespace
+
+void DeckRun::preflight() {
+  fault_signal_point("setup");
+  summary_.identity = identify_run(deck_.path, ranks_);
+  log_.say(identity_line(summary_.identity));
+  // Bad input is found here, before any file is written. Every rank builds the whole model (the
+  // same checks, the same errors), then keeps its part (parallel::localize).
+  global_.emplace(build_model(deck_));
+  const Model& global = *global_;
+  elements_ = global.mesh.element_count();
+  report_mesh(global);
+  stable0_ = compute_stable_time_step(global, nullptr);
+  log_.say(format("stable time step %.6g s (element %d controls it); scale factor %.3g => dt = %.6g s", stable0_.dt,
+                  stable0_.controlling_element + 1, tc_.time_step_scale_factor,
+                  std::min(stable0_.dt * tc_.time_step_scale_factor, tc_.maximum_time_step.value_or(INFINITY))));
+  est_steps_ = (tc_.termination_time - tc_.start_time) /
+               std::min(stable0_.dt * tc_.time_step_scale_factor, tc_.maximum_time_step.value_or(INFINITY));
+  log_.say(format("termination time %.6g s: about %.0f steps", tc_.termination_time, std::ceil(est_steps_)));
+  log_.say(format("constraints: %zu dofs; silent-boundary nodes: %zu; pressure loads: %zu", global.constraints.dof.size(),
+                  global.silent.node.size(), global.pressures.size()));
+  for (const auto& line : global.preflight) log_.say(line);
+  for (const auto& w : global.setup.warnings) announce(w);
+  summary_.elements = elements_;
+  summary_.nodes = global.mesh.node_count();
+}
+
+void DeckRun::report_mesh(const Model& global) {
+  const auto& mesh = global.mesh;
+  log_.say(format("mesh: %d nodes, %d hex8 elements in %zu block(s); total mass %.6g kg", mesh.node_count(), elements_,
+                  global.blocks.size(), global.total_mass));
+  for (const auto& b : global.blocks)
+    log_.say(format("  block %-16s %8d elements  %s  %s", b.name.c_str(), b.count,
+                    std::string(materials::model_name(b.material)).c_str(),
+                    b.formulation == inputs::ElementFormulation::mean_quadrature ? "mean_quadrature" : "fully_integrated"));
+  double worst = 1.0, sum = 0.0;
+  int worst_element = 0;
+  for (int e = 0; e < elements_; ++e) {
+    const double q = mesh::scaled_jacobian(mesh, e);
+    sum += q;
+    if (q < worst) {
+      worst = q;
+      worst_element = e;
+    }
+  }
+  log_.say(format("element quality: scaled Jacobian min %.3f (element %d), mean %.3f", worst, worst_element + 1,
+                  elements_ ? sum / elements_ : 0.0));
+}
+
+void DeckRun::distribute_and_resume() {
+  // This rank's part. The whole mesh is kept until results.h5 has been created (rank 0 writes it
+  // there, once); node-set sizes are those of the whole mesh.
+  const mesh::Mesh& mesh = global_->mesh;
+  std::vector<int> part;
+  try {
+    part = parallel::partition_elements(mesh, ranks_);
+  } catch (const std::runtime_error& e) {
+    throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
+                     "; run with fewer ranks (mpirun -np N)");
+  }
+  if (ranks_ > 1 && region_.results) whole_mesh_ = mesh;
+  for (const auto& [name, nodes] : mesh.node_sets) set_size_[name] = double(nodes.size());
+  if (ranks_ > 1) {
+    int shared = 0;
+    std::vector<int> holder(static_cast<std::size_t>(mesh.node_count()), -1);
+    for (int e = 0; e < elements_; ++e)
+      for (int I = 0; I < 8; ++I) {
+        int& h = holder[mesh.connectivity[8 * e + I]];
+        if (h >= 0 && h != part[e] && h < 1 << 20) {
+          ++shared;
+          h = 1 << 20;
+        } else if (h < 0) {
+          h = part[e];
+        }
+      }
+    std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
+    for (int e = 0; e < elements_; ++e) ++rank_elements[part[e]];
+    const auto [fewest, most] = std::minmax_element(rank_elements.begin(), rank_elements.end());
+    log_.say(format("parallel: %d ranks, METIS k-way partition of the element graph; %d-%d elements per rank; %d nodes "
+                    "on partition boundaries",
+                    ranks_, *fewest, *most, shared));
+  }
+  stop_before_outputs("after the model was built");
+  mesh_hash_ = mesh_sha256(mesh);
+  model_.emplace(parallel::localize(std::move(*global_), part));
+  global_.reset();
+
+  // A restart file is read and checked against the model before any output file is touched.
+  integrator_.emplace(*model_, tc_);
+  guards_.emplace(region_.guards, model_->setup, static_cast<long>(std::ceil(est_steps_)),
+                  [this](const RunWarning& w) { announce(w); });
+  block_translation_.emplace(*model_);
+  if (options_.restart_path.empty()) return;
+  std::exception_ptr error;
+  try {
+    resume_ = read_restart_file(options_.restart_path);
+    const std::string changed = restart_difference(*resume_, deck_.resolved_text, mesh_hash_);
+    if (!changed.empty() && !options_.restart_allow_changed)
+      throw SetupError(options_.restart_path + ": error: this restart file was written by another run: " + changed +
+                       "; resume with the deck and mesh that wrote it, or add --restart-allow-changed to go on with "
+                       "these (for example a longer termination time)");
+    if (!changed.empty()) log_.say("restart: --restart-allow-changed: " + changed);
+    integrator_->restore_state(*resume_);
+    guards_->restore(*resume_);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  agree_on_errors(error);
+  log_.say(format("restart: resuming from %s at step %ld, t = %.6g s", options_.restart_path.c_str(),
+                  integrator_->step_index(), integrator_->time()));
+}
+
+void DeckRun::open_outputs() {
+  namespace fs = std::filesystem;
+  out_ = options_.output_directory;
+  std::exception_ptr output_error;  // files are made by rank 0; agreed on below
+  if (root_) {
+    try {
+      std::error_code ec;
+      const std::size_t cleared = resume_ ? 0 : clear_owned_outputs(out_);
+      fs::create_directories(options_.output_directory, ec);
+      if (ec) throw SetupError("cannot create output folder " + options_.output_directory + ": " + ec.message());
+      log_.open((out_ / "log.txt").string(), resume_.has_value());
+      if (cleared) log_.say(format("output folder %s: removed %zu file(s) of an earlier run (outputs, restart files)",
+                                   out_.string().c_str(), cleared));
+      log_.record("# resolved deck (defaults filled in, SI units)\n" + deck_.resolved_text + "\n");
+    } catch (...) {
+      output_error = std::current_exception();
+    }
+  }
+  choose_history_columns();
+  if (root_ && !output_error) {
+    try {
+      history_.emplace((out_ / "history.csv").string(), extra_columns_, resume_ ? integrator_->step_index() : -1);
+    } catch (...) {
+      output_error = std::current_exception();
+    }
+  }
+  // Node-set columns: sums over the set's nodes this rank owns, then over the ranks.
+  const auto* hist_spec = region_.history ? &*region_.history : nullptr;
+  const auto owned_nodes_of = [&](const std::string& name) {
+    std::vector<int> nodes;
+    for (int l : model_->mesh.node_sets.at(name))
+      if (model_->domain.owned[l] > 0.0) nodes.push_back(l);
+    return nodes;
+  };
+  if (hist_spec) {
+    for (const auto& s : hist_spec->reaction_force_node_sets) reaction_sets_.push_back(owned_nodes_of(s));
+    for (const auto& s : hist_spec->displacement_node_sets) {
+      displacement_sets_.push_back(owned_nodes_of(s));
+      displacement_set_size_.push_back(set_size_.at(s));
+    }
+  }
+  set_sums_.assign(3 * (reaction_sets_.size() + displacement_sets_.size()), 0.0);
+  history_schedule_.emplace(hist_spec ? hist_spec->time_increment : std::nullopt,
+                            hist_spec ? hist_spec->step_increment : std::optional<int>(1), tc_.start_time);
+  agree_on_errors(output_error);
+  open_results();
+
+  // Time spent by the earlier segments of a run resumed from restart files (NaN: not recorded,
+  // a restart file of an earlier tribex), so that summary.json can report the whole run's cost.
+  first_step_ = resume_ ? integrator_->step_index() : 0;
+  if (resume_) {
+    history_schedule_->set_next(resume_->scalar("history_next"));
+    if (field_schedule_) field_schedule_->set_next(resume_->scalar("results_next"));
+    earlier_wall_seconds_ = resume_->has("run_wall_seconds") ? resume_->scalar("run_wall_seconds") : NAN;
+    earlier_loop_seconds_ = resume_->has("run_loop_seconds") ? resume_->scalar("run_loop_seconds") : NAN;
+  }
+  if (region_.restart) restart_output_.emplace(*region_.restart, out_.string());
+}
+
+void DeckRun::choose_history_columns() {
+  // The material dissipation column only where a block's material dissipates (J2 plasticity), so
+  // that the history of every other run keeps its columns.
+  material_dissipation_ = std::any_of(model_->blocks.begin(), model_->blocks.end(),
+                                      [](const ElementBlock& b) { return materials::dissipates(b.material); });
+  if (material_dissipation_) extra_columns_.push_back("plastic_dissipation");
+  if (region_.history) {
+    for (const auto& s : region_.history->reaction_force_node_sets)
+      for (const char* c : {"x", "y", "z"}) extra_columns_.push_back(s + "_reaction_" + c);
+    for (const auto& s : region_.history->displacement_node_sets)
+      for (const char* c : {"x", "y", "z"}) extra_columns_.push_back(s + "_displacement_" + c);
+  }
+}
+
+void DeckRun::open_results() {
+  // results.h5: in a parallel run every rank writes the rows of its owned nodes and its elements
+  // (runs of consecutive global rows) collectively with parallel HDF5.
+  if (!region_.results) return;
+  const auto& domain = model_->domain;
+  const auto add_row = [](std::vector<std::array<unsigned long long, 2>>& runs, unsigned long long row) {
+    if (!runs.empty() && runs.back()[0] + runs.back()[1] == row)
+      ++runs.back()[1];
+    else
+      runs.push_back({row, 1});
+  };
+  for (int l : domain.owned_local_nodes()) add_row(slab_.node_runs, static_cast<unsigned long long>(domain.global_node[l]));
+  for (int e : domain.global_element) add_row(slab_.element_runs, static_cast<unsigned long long>(e));
+  slab_.node_rows = static_cast<long long>(domain.owned_local_nodes().size());
+  slab_.element_rows = static_cast<long long>(domain.global_element.size());
+  std::exception_ptr error;
+  try {
+    // A restarted run continues the folder's results.h5 (the steps up to the restart time stay).
+    results_ = std::make_unique<ResultsWriter>(out_.string(), whole_mesh_ ? *whole_mesh_ : model_->mesh,
+                                               ranks_ > 1 ? &slab_ : nullptr,
+                                               resume_ ? std::optional<double>(integrator_->time()) : std::nullopt);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  whole_mesh_.reset();
+  agree_on_errors(error);
+  field_schedule_.emplace(region_.results->time_increment, region_.results->step_increment, tc_.start_time);
+}
+
+}  // namespace tribex::solver

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#include "solver/restart/run_fingerprint.hpp"
+
+#include "inputs/sha256.hpp"
+#include "solver/output/run_log.hpp"
+
+namespace tribex::solver {
+
+std::vector<long long> as_codes(const std::string& text) {
+  return std::vector<long long>(text.begin(), text.end());
+}
+std::string from_codes(const std::vector<long long>& codes) {
+  std::string text;
+  for (long long c : codes) text.push_back(static_cast<char>(c));
+  return text;
+}
+std::string mesh_sha256(const mesh::Mesh& m) {
+  std::string bytes(reinterpret_cast<const char*>(m.coordinates.data()), m.coordinates.size() * sizeof(double));
+  bytes.append(reinterpret_cast<const char*>(m.connectivity.data()), m.connectivity.size() * sizeof(int));
+  return inputs::sha256_hex(bytes);
+}
+
+std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash) {
+  if (!archive.has("deck_text") || !archive.has("mesh_sha256")) return "";  // an earlier tribex: not recorded
+  if (from_codes(archive.integer_array("mesh_sha256")) != mesh_hash) return "the mesh differs (coordinates or connectivity)";
+  const std::string old_text = from_codes(archive.integer_array("deck_text"));
+  if (old_text == deck_text) return "";
+  std::size_t line = 1, a = 0, b = 0;
+  while (true) {
+    const std::size_t ea = old_text.find('\n', a), eb = deck_text.find('\n', b);
+    const std::string la = old_text.substr(a, ea == std::string::npos ? std::string::npos : ea - a);
+    const std::string lb = deck_text.substr(b, eb == std::string::npos ? std::string::npos : eb - b);
+    if (la != lb)
+      return format("the resolved deck differs at its line %zu: '%s' then, '%s' now", line,
+                    la.c_str(), lb.c_str());
+    if (ea == std::string::npos || eb == std::string::npos) return "the resolved deck differs at its end";
+    a = ea + 1;
+    b = eb + 1;
+    ++line;
+  }
+}
+
+}  // namespace tribex::solver

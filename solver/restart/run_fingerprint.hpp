@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// What a restart file records of the run that wrote it: the resolved deck (text, as integer codes)
+// and the SHA-256 of the mesh (coordinates and connectivity). A resumed run compares them with its own.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "solver/restart/state_archive.hpp"
+
+namespace tribex::solver {
+
+/// Text as integer codes (a restart archive holds numbers only), and back.
+std::vector<long long> as_codes(const std::string& text);
+std::string from_codes(const std::vector<long long>& codes);
+/// SHA-256 (hex) of the mesh's coordinates and connectivity bytes.
+std::string mesh_sha256(const mesh::Mesh& m);
+/// "" when the restart file was written by this deck and mesh (or by a tribex that did not record
+/// them); else what differs, one line.
+std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash);
+
+}  // namespace tribex::solver

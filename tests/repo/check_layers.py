@@ -1,0 +1,46 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""The layers include only what they may link (docs/architecture.md "Dependency direction"; the root
+CMakeLists.txt links the libraries in the same direction): every `#include "LAYER/..."` in a source
+file of inputs/, mesh/, materials/, contact/ or solver/ names its own layer or one it depends on.
+Fuzz targets compile their layer alone and follow the same rule.
+
+usage: check_layers.py REPOSITORY
+"""
+import pathlib
+import re
+import sys
+
+ALLOWED = {
+    "materials": {"materials"},
+    "inputs": {"inputs", "materials"},
+    "mesh": {"mesh"},
+    "contact": {"contact", "mesh"},
+    "solver": {"solver", "inputs", "mesh", "materials", "contact"},
+}
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
+
+
+def main():
+    root = pathlib.Path(sys.argv[1])
+    problems, files = [], 0
+    for layer, allowed in ALLOWED.items():
+        for path in sorted((root / layer).rglob("*")):
+            if path.suffix not in (".cpp", ".hpp"):
+                continue
+            files += 1
+            for no, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+                m = INCLUDE.match(line)
+                if m and m.group(1) in ALLOWED and m.group(1) not in allowed:
+                    problems.append(f"{path.relative_to(root)}:{no}: layer '{layer}' includes '{m.group(1)}/', "
+                                    f"which it may not depend on (allowed: {', '.join(sorted(allowed))})")
+                if m and m.group(1) == "tools":
+                    problems.append(f"{path.relative_to(root)}:{no}: layer '{layer}' includes tools/")
+    for p in problems:
+        print(p)
+    print(f"{files} files of {len(ALLOWED)} layers checked, {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
