@@ -11,6 +11,9 @@ import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from check_repo import report  # noqa: E402
+
 ALLOWED = {
     "materials": {"materials"},
     "inputs": {"inputs", "materials"},
@@ -36,10 +39,7 @@ def main():
                                     f"which it may not depend on (allowed: {', '.join(sorted(allowed))})")
                 if m and m.group(1) == "tools":
                     problems.append(f"{path.relative_to(root)}:{no}: layer '{layer}' includes tools/")
-    for p in problems:
-        print(p)
-    print(f"{files} files of {len(ALLOWED)} layers checked, {len(problems)} problems")
-    return 1 if problems else 0
+    return report(problems, f"{files} files of {len(ALLOWED)} layers checked")
 
 
 if __name__ == "__main__":

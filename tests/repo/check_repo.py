@@ -114,9 +114,14 @@ def main():
         with open(path, "rb") as fh:
             if hashlib.sha256(fh.read()).hexdigest() != digest:
                 problems.append(f"inputs/data/afm/{name}: SHA-256 differs from the README's")
+    return report(problems, f"{len(files)} files checked, {len(sums)} sample sums")
+
+
+def report(problems, what):
+    """One line per problem, then `WHAT, N problems`; the exit status (1 when any)."""
     for p in problems:
         print(p)
-    print(f"{len(files)} files checked, {len(sums)} sample sums, {len(problems)} problems")
+    print(f"{what}, {len(problems)} problems")
     return 1 if problems else 0
 
 
