@@ -201,7 +201,12 @@ class ContactManager {
   bool needs_search(const Pass& p, const double* x) const;
   void track_motion(const Pass& p, const double* v, double dt, ContactTotals& totals) const;
   void search(Pass& p, const double* x);
-  struct Accumulator;
+  // Totals of the interface models over the passes of one step.
+  struct Accumulator {
+    ContactTotals& totals;
+    const double* x;
+    double friction[3] = {0.0, 0.0, 0.0};  // vector sum of shear forces on the (first) slave surfaces, N
+  };
   void apply_interface(Pass& p, int k, int face, const double* shape, const double* normal, double gap,
                        double* force, Accumulator& acc);
   void apply_junction(Pass& p, const double* v, const double* other_force, double dt, double* force, Accumulator& acc);

@@ -2,7 +2,7 @@
 // ContactManager's mortar pass (enforcement = mortar): the segment integration of
 // MortarEnforcement, then the per-node bookkeeping the node-to-face path does inline (status,
 // contact area, node count, penetration, radius). Kept in its own file so that the node-to-face
-// code in contact_manager.cpp stays as it is.
+// code (contact_manager.cpp, node_to_face_models.cpp) stays as it is.
 #include <algorithm>
 #include <cmath>
 

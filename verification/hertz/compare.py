@@ -7,7 +7,7 @@ Measured quantities (history.csv):
   P      contact_normal_force (the force the contact transmits);
   a      --radius pressure_fit (default): contact_radius_pressure_fit, the zero of the least-squares
          line p^2 = alpha - beta r^2 through the contacting nodes' pressures (exact for Hertz's
-         elliptic pressure; contact/contact_manager.cpp); --radius edge: contact_radius_edge, the mean
+         elliptic pressure; contact/contact_radius.cpp); --radius edge: contact_radius_edge, the mean
          distance from the axis of the points where the gap changes sign along the tip-surface edges
          (linear interpolation between nodes). Both are plotted, with sqrt(contact_area/pi), which
          jumps by about a node spacing as each ring enters;
