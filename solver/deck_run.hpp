@@ -117,7 +117,7 @@ class DeckRun {
   // stage 3
   std::filesystem::path out_;
   bool material_dissipation_ = false;
-  std::vector<std::string> extra_columns_;
+  std::vector<ColumnInfo> history_columns_;  // step, the standard columns present, the node-set columns
   std::optional<HistoryWriter> history_;
   std::vector<std::vector<int>> reaction_sets_, displacement_sets_;
   std::vector<double> displacement_set_size_;

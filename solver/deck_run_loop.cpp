@@ -48,18 +48,11 @@ std::string DeckRun::progress_text(long n, double t, double error) const {
 }
 
 void DeckRun::write_history_row(double t, long n) {
-  const auto& E = integrator_->energies();
-  const auto& C = integrator_->contact_totals();
+  const HistoryState state{t, integrator_->dt(), integrator_->energies(), integrator_->contact_totals(),
+                           integrator_->momentum()};
   row_.clear();
-  row_.insert(row_.end(), {t, integrator_->dt(), E.kinetic, E.internal, E.hourglass, E.external_work,
-                           E.silent_boundary_dissipation, E.contact_work, E.relative_error(), C.normal_force,
-                           C.tangential_force, C.area, double(C.nodes), E.damping_dissipation, E.viscous_dissipation,
-                           std::sqrt(C.area / M_PI), C.radius_max, C.max_penetration, integrator_->momentum()[0],
-                           integrator_->momentum()[1], integrator_->momentum()[2], C.radius_edge, C.adhesive_force,
-                           C.compressive_force, C.tangential_force, C.junction_capacity, C.adhesion_energy,
-                           C.friction_power, C.radius_pressure_fit, C.real_area, C.asperity_contacts,
-                           C.apparent_pressure()});
-  if (material_dissipation_) row_.push_back(E.plastic_dissipation);
+  for (const HistoryColumn& c : history_columns())
+    if (!c.material_dissipation_only || material_dissipation_) row_.push_back(c.value(state));
   std::fill(set_sums_.begin(), set_sums_.end(), 0.0);
   std::size_t c = 0;
   for (const auto& set : reaction_sets_) {
@@ -151,7 +144,7 @@ void DeckRun::loop() {
     return field_schedule_ && !region_.results->element_variables.empty() &&
            field_schedule_->due(t, n, t >= end_time * (1 - 1e-14));
   });
-  row_.reserve(HistoryWriter::standard_columns().size() + extra_columns_.size());
+  row_.reserve(history_columns_.size());
   element_stress_.assign(6 * static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
   element_plastic_strain_.assign(static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
   terminal_ = root_ && !options_.quiet && isatty(STDERR_FILENO);

@@ -8,6 +8,7 @@
 #include "solver/deck_run.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/output_folder.hpp"
+#include "solver/output/summary_writer.hpp"
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 
@@ -180,7 +181,7 @@ void DeckRun::open_outputs() {
   choose_history_columns();
   if (root_ && !output_error) {
     try {
-      history_.emplace((out_ / "history.csv").string(), extra_columns_, resume_ ? integrator_->step_index() : -1);
+      history_.emplace((out_ / "history.csv").string(), history_columns_, resume_ ? integrator_->step_index() : -1);
     } catch (...) {
       output_error = std::current_exception();
     }
@@ -216,6 +217,7 @@ void DeckRun::open_outputs() {
     earlier_loop_seconds_ = resume_->has("run_loop_seconds") ? resume_->scalar("run_loop_seconds") : NAN;
   }
   if (region_.restart) restart_output_.emplace(*region_.restart, out_.string());
+  if (root_) reserve_summary_json((out_ / "summary.json").string());
 }
 
 void DeckRun::choose_history_columns() {
@@ -223,13 +225,9 @@ void DeckRun::choose_history_columns() {
   // that the history of every other run keeps its columns.
   material_dissipation_ = std::any_of(model_->blocks.begin(), model_->blocks.end(),
                                       [](const ElementBlock& b) { return materials::dissipates(b.material); });
-  if (material_dissipation_) extra_columns_.push_back("plastic_dissipation");
-  if (region_.history) {
-    for (const auto& s : region_.history->reaction_force_node_sets)
-      for (const char* c : {"x", "y", "z"}) extra_columns_.push_back(s + "_reaction_" + c);
-    for (const auto& s : region_.history->displacement_node_sets)
-      for (const char* c : {"x", "y", "z"}) extra_columns_.push_back(s + "_displacement_" + c);
-  }
+  history_columns_ = describe_history_columns(
+      material_dissipation_, region_.history ? region_.history->reaction_force_node_sets : std::vector<std::string>{},
+      region_.history ? region_.history->displacement_node_sets : std::vector<std::string>{});
 }
 
 void DeckRun::open_results() {

@@ -4,35 +4,45 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <stdexcept>
 
 #include "solver/errors.hpp"
 
 namespace tribex::solver {
 
-const std::vector<std::string>& HistoryWriter::standard_columns() {
-  static const std::vector<std::string> columns = {
-      "time", "dt", "kinetic_energy", "internal_energy", "hourglass_energy", "external_work",
-      "silent_boundary_dissipation", "contact_work", "energy_error", "contact_normal_force",
-      "contact_tangential_force", "contact_area", "contact_nodes", "damping_dissipation", "viscous_dissipation",
-      "contact_radius", "contact_radius_max", "contact_max_penetration", "momentum_x", "momentum_y", "momentum_z",
-      "contact_radius_edge",
-      // interface models (contact/models/): forces on the slave surfaces, N; tau* x contact area, N;
-      // adhesive potential, J; junction dissipation rate, W
-      "adhesive_force", "compressive_force", "friction_force", "tau_star_times_area", "adhesion_energy",
-      "friction_power",
-      // elliptic-pressure fit of the contact radius (contact/contact_manager.cpp pressure_fit_radius), m
-      "contact_radius_pressure_fit",
-      // rough-surface (GW) model: real contact area A_c, m^2; asperities in contact; normal force over
-      // the nominal area within reach of the law, Pa
-      "real_contact_area", "asperity_contacts", "apparent_pressure"};
-  return columns;
+namespace {
+
+// A CSV field: quoted when it holds a comma or a quote (RFC 4180).
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string q = "\"";
+  for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
 }
 
-HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& extra_columns, long resume_step)
+void write_units_file(const std::string& path, const std::vector<ColumnInfo>& columns) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
+  std::fputs("column,unit,definition\n", f);
+  for (const auto& c : columns)
+    std::fprintf(f, "%s,%s,%s\n", c.name.c_str(), csv_field(c.unit).c_str(), csv_field(c.definition).c_str());
+  const bool ok = !std::ferror(f);
+  const int err = errno;
+  if (std::fclose(f) != 0 || !ok) throw output_failure(path, ok ? errno : err);
+}
+
+}  // namespace
+
+std::string history_units_path(const std::string& history_path) {
+  const auto slash = history_path.find_last_of('/');
+  return (slash == std::string::npos ? std::string() : history_path.substr(0, slash + 1)) + "history_columns.csv";
+}
+
+HistoryWriter::HistoryWriter(const std::string& path, const std::vector<ColumnInfo>& columns, long resume_step)
     : path_(path) {
-  std::string header = "step";
-  for (const auto& c : standard_columns()) header += "," + c;
-  for (const auto& c : extra_columns) header += "," + c;
+  if (columns.empty() || columns.front().name != "step") throw std::logic_error("history.csv: the first column is 'step'");
+  std::string header;
+  for (const auto& c : columns) header += (header.empty() ? "" : ",") + c.name;
   std::string kept;  // rows of the interrupted run before the restart step
   if (resume_step >= 0) {
     std::ifstream old(path);
@@ -46,7 +56,8 @@ HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::str
   std::fputc('\n', file_);
   std::fputs(kept.c_str(), file_);
   std::fflush(file_);
-  columns_ = standard_columns().size() + extra_columns.size();
+  columns_ = columns.size() - 1;
+  write_units_file(history_units_path(path), columns);
 }
 
 HistoryWriter::~HistoryWriter() {
@@ -54,8 +65,11 @@ HistoryWriter::~HistoryWriter() {
 }
 
 void HistoryWriter::write_row(long step, const std::vector<double>& values) {
+  if (values.size() != columns_)
+    throw std::logic_error("history.csv: a row of " + std::to_string(values.size()) + " values for " +
+                           std::to_string(columns_) + " columns");
   std::fprintf(file_, "%ld", step);
-  for (std::size_t k = 0; k < columns_; ++k) std::fprintf(file_, ",%.17g", k < values.size() ? values[k] : 0.0);
+  for (double v : values) std::fprintf(file_, ",%.17g", v);
   std::fputc('\n', file_);
   if (std::fflush(file_) != 0 || std::ferror(file_)) throw output_failure(path_, errno);
 }

@@ -16,6 +16,15 @@ namespace {
 std::string number(double x) { return json_number(x, 17); }
 }  // namespace
 
+void reserve_summary_json(const std::string& path) {
+  const std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) return;
+  const std::string blanks(16384, ' ');
+  const bool written = std::fwrite(blanks.data(), 1, blanks.size(), f) == blanks.size();
+  if (std::fclose(f) != 0 || !written) std::remove(tmp.c_str());
+}
+
 void write_summary_json(const std::string& path, const RunSummary& s, const Energies& e, const StableStep& st) {
   const std::string tmp = path + ".tmp";
   std::FILE* f = std::fopen(tmp.c_str(), "w");

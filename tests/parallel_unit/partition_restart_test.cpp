@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "mesh/box.hpp"
@@ -100,16 +102,19 @@ TEST(RestartFile, MissingOrForeignFileIsBadInput) {
   EXPECT_THROW(solver::read_restart_file((dir / "text.h5").string()), solver::SetupError);
 }
 
+const std::vector<solver::ColumnInfo> columns = {
+    {"step", "count", "step index"}, {"time", "s", "simulated time"}, {"extra", "N", "a force, with a comma"}};
+
 TEST(HistoryWriter, ResumeKeepsTheRowsBeforeTheRestartStep) {
   const auto dir = temp_dir("history");
   const std::string path = (dir / "history.csv").string();
   {
-    solver::HistoryWriter h(path, {"extra"});
-    for (long n = 0; n < 5; ++n) h.write_row(n, std::vector<double>(40, double(n)));
+    solver::HistoryWriter h(path, columns);
+    for (long n = 0; n < 5; ++n) h.write_row(n, std::vector<double>(2, double(n)));
   }
   {
-    solver::HistoryWriter h(path, {"extra"}, 3);  // resumed at step 3: rows 0, 1, 2 kept
-    h.write_row(3, std::vector<double>(40, 30.0));
+    solver::HistoryWriter h(path, columns, 3);  // resumed at step 3: rows 0, 1, 2 kept
+    h.write_row(3, std::vector<double>(2, 30.0));
   }
   std::ifstream in(path);
   std::string line;
@@ -117,4 +122,32 @@ TEST(HistoryWriter, ResumeKeepsTheRowsBeforeTheRestartStep) {
   std::getline(in, line);  // header
   while (std::getline(in, line)) steps.push_back(std::stol(line));
   EXPECT_EQ(steps, (std::vector<long>{0, 1, 2, 3}));
+}
+
+TEST(HistoryWriter, RowsMustFillEveryColumnAndUnitsGoBeside) {
+  const auto dir = temp_dir("history_units");
+  const std::string path = (dir / "history.csv").string();
+  solver::HistoryWriter h(path, columns);
+  EXPECT_THROW(h.write_row(0, std::vector<double>(1, 0.0)), std::logic_error);  // never padded
+  EXPECT_THROW(h.write_row(0, std::vector<double>(3, 0.0)), std::logic_error);  // never dropped
+  std::ifstream units((dir / "history_columns.csv").string());
+  std::stringstream text;
+  text << units.rdbuf();
+  EXPECT_EQ(text.str(), "column,unit,definition\nstep,count,step index\ntime,s,simulated time\n"
+                        "extra,N,\"a force, with a comma\"\n");
+}
+
+TEST(HistoryColumns, EveryStandardColumnHasAUnitAndADefinition) {
+  const auto described = solver::describe_history_columns(true, {"top"}, {"tip"});
+  ASSERT_EQ(described.size(), 1 + solver::history_columns().size() + 6);
+  std::set<std::string> names;
+  for (const auto& c : described) {
+    EXPECT_FALSE(c.unit.empty()) << c.name;
+    EXPECT_GT(c.definition.size(), 5u) << c.name;
+    EXPECT_TRUE(names.insert(c.name).second) << "duplicate column " << c.name;
+  }
+  EXPECT_EQ(described.back().name, "tip_displacement_z");
+  EXPECT_EQ(described[described.size() - 4].unit, "N");  // top_reaction_z
+  // plastic_dissipation only where a material dissipates
+  EXPECT_EQ(solver::describe_history_columns(false, {}, {}).size(), solver::history_columns().size());
 }

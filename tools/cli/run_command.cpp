@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "inputs/diagnostics.hpp"
+#include "solver/output/history_columns.hpp"
 #include "solver/run.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
@@ -14,6 +15,7 @@ namespace {
 const char* run_usage =
     "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE [--restart-allow-changed]] [--stop-at-step N]\n"
     "           [--heartbeat SECONDS]\n"
+    "tribex run --list-columns\n"
     "  Runs an input deck. Outputs go to OUTDIR (default ./<deck name>_output): history.csv,\n"
     "  results.h5 + results.xdmf (open the .xdmf in ParaView), summary.json, log.txt.\n"
     "  --quiet   no progress line and no terminal echo (log.txt is still written)\n"
@@ -25,6 +27,8 @@ const char* run_usage =
     "  --heartbeat SECONDS  when stdout is not a terminal (batch job, pipe, file): a progress line\n"
     "            (step, time, percent, ETA, dt, energy error) to stdout and log.txt this often\n"
     "            (wall time, default 60; 0: none; with --quiet to log.txt only)\n"
+    "  --list-columns   print every column history.csv can have, with its unit and definition\n"
+    "            (history_columns.csv beside each history.csv lists a run's own), and exit\n"
     "  Exit codes: 0 ok, 2 bad input, 3 numerical failure, 130 interrupted (outputs valid).\n";
 
 const char* check_usage =
@@ -48,9 +52,15 @@ bool args_has_stop(const std::vector<std::string>& argv) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& argv) {
-  tools::Args args(argv, "tribex run", run_usage, {"--quiet", "--restart-allow-changed"});
+  tools::Args args(argv, "tribex run", run_usage, {"--quiet", "--restart-allow-changed", "--list-columns"});
   if (args.help_requested()) {
     std::fputs(run_usage, stdout);
+    return 0;
+  }
+  if (args.flag("--list-columns")) {
+    args.finish();
+    for (const auto& c : solver::describe_history_columns(true, {"SET"}, {"SET"}))
+      std::printf("%-28s %-7s %s\n", c.name.c_str(), c.unit.c_str(), c.definition.c_str());
     return 0;
   }
   const std::string deck_path = args.positional(0, "DECK");
