@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 
@@ -168,7 +167,9 @@ class Builder {
       if (p.find(key)) {
         values.push_back(real(p, key));
       } else if (!d.default_text.empty()) {
-        values.push_back(std::strtod(std::string(d.default_text).c_str(), nullptr));
+        std::string why;  // the model's own default, in deck syntax ("0", "2 GPa"): SI
+        const auto q = parse_quantity(d.default_text, &why);
+        values.push_back(q ? q->value : 0.0);
       } else {
         values.push_back(0.0);
         error(p.where, p, "model '" + model + "' needs '" + key + "' (" + std::string(d.help) + ", " +

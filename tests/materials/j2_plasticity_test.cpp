@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 
+#include "inputs/units.hpp"
 #include "materials/j2_plasticity.hpp"
 #include "materials/material.hpp"
 
@@ -191,6 +192,28 @@ TEST(MaterialRegistry, OneListDrivesNamesParametersAndConstruction) {
   EXPECT_EQ(state_size_of(made), 7);
   EXPECT_TRUE(dissipates(made));
   EXPECT_EQ(state_size_of(make_material(0, E, nu, 2330.0, {})), 0);
+}
+
+}  // namespace
+}  // namespace tribex::materials
+
+namespace tribex::materials {
+namespace {
+
+TEST(MaterialRegistry, EveryDeclaredKeyHasAParsableDefaultOrIsRequired) {
+  // The deck builder reads a model's defaults with inputs::parse_quantity: a default it cannot
+  // parse would silently become 0, so every one must parse, to a number within its bound.
+  for (int m = 0; m < model_count; ++m)
+    for (const ParameterDecl& d : model_parameters(m)) {
+      std::string why;
+      if (!d.unit.empty()) {
+        EXPECT_TRUE(inputs::parse_unit(d.unit, &why)) << d.key << ": " << why;
+      }
+      if (d.default_text.empty()) continue;
+      const auto q = inputs::parse_quantity(d.default_text, &why);
+      ASSERT_TRUE(q) << d.key << ": " << why;
+      EXPECT_TRUE(d.lower_open ? q->value > d.lower_bound : q->value >= d.lower_bound) << d.key;
+    }
 }
 
 }  // namespace
