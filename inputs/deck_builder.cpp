@@ -177,11 +177,11 @@ class Builder {
                               model + "'");
       }
     }
+    const auto own = materials::model_parameters(index);
     for (int m = 0; m < materials::model_count; ++m) {
       if (m == index) continue;
       for (const materials::ParameterDecl& d : materials::model_parameters(m)) {
         const std::string key(d.key);
-        const auto own = materials::model_parameters(index);
         if (std::any_of(own.begin(), own.end(), [&](const materials::ParameterDecl& o) { return o.key == d.key; })) continue;
         if (p.find(key))
           error(where(p, key), p, "'" + key + "' applies to 'parameters for model " + materials::model_names()[m] +

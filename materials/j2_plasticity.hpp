@@ -34,8 +34,6 @@ namespace tribex::materials {
 struct J2Plasticity {
   static constexpr std::string_view deck_name = "j2_plasticity";
   static constexpr std::string_view alias = "j2";
-  static constexpr std::string_view description =
-      "von Mises plasticity, linear isotropic hardening, small strain (radial return)";
   static constexpr std::array<ParameterDecl, 2> parameters{{
       {"yield stress", "Pa", 0.0, true, "", "Y, initial uniaxial yield stress"},
       {"hardening modulus", "Pa", 0.0, false, "0", "K, slope of uniaxial stress against plastic strain"},

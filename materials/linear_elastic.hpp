@@ -19,7 +19,6 @@ namespace tribex::materials {
 struct LinearElastic : Hyperelastic {
   static constexpr std::string_view deck_name = "elastic";
   static constexpr std::string_view alias = "";
-  static constexpr std::string_view description = "isotropic linear elasticity, small strain";
 
   double lambda = 0.0;
   double mu = 0.0;

@@ -6,7 +6,7 @@
 // element or material point (docs/conventions.md A.4.3).
 //
 // Every model provides (README.md, "Adding a material"):
-//   static constexpr std::string_view deck_name, alias ("" for none), description;
+//   static constexpr std::string_view deck_name, alias ("" for none);
 //   static constexpr std::array<ParameterDecl, N> parameters;   // its deck keys beyond E and nu
 //   static constexpr int state_size;                             // doubles per material point
 //   static constexpr bool dissipates;                            // returns plastic work
@@ -79,13 +79,6 @@ inline std::span<const ParameterDecl> model_parameters(int index) {
     if (i == index) keys = decltype(m)::type::parameters;
   });
   return keys;
-}
-inline std::string_view model_description(int index) {
-  std::string_view d;
-  for_each_model([&](auto m, int i) {
-    if (i == index) d = decltype(m)::type::description;
-  });
-  return d;
 }
 
 /// Lame constants from Young's modulus and Poisson's ratio.

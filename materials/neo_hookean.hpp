@@ -22,7 +22,6 @@ namespace tribex::materials {
 struct NeoHookean : Hyperelastic {
   static constexpr std::string_view deck_name = "neo_hookean";
   static constexpr std::string_view alias = "neohookean";
-  static constexpr std::string_view description = "compressible neo-Hookean hyperelasticity, finite strain";
 
   double lambda = 0.0;
   double mu = 0.0;
