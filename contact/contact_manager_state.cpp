@@ -9,7 +9,7 @@ namespace tribex::contact {
 ContactManager::State ContactManager::state() const {
   State s;
   for (const auto& p : passes_)
-    s.passes.push_back({p.candidate_offset, p.candidates, p.last_face, p.x_at_search, p.gap, p.searched, p.stable_dt});
+    s.passes.push_back({p.candidate_offset, p.candidates, p.last_face, p.x_at_search, p.gap, p.searched, p.stable_dt, p.law_state});
   s.traction = traction_;
   s.status = status_;
   s.total_searches = total_searches_;
@@ -32,6 +32,9 @@ void ContactManager::restore(const State& s) {
     p.gap = q.gap;
     p.searched = q.searched;
     p.stable_dt = q.stable_dt;
+    if (q.law_state.size() != p.law_state.size())
+      throw std::invalid_argument("contact pass " + std::to_string(k) + " has another interaction law than the deck");
+    p.law_state = q.law_state;
   }
   traction_ = s.traction;
   status_ = s.status;

@@ -24,7 +24,7 @@ double ContactManager::edge_radius(const Pass& p, const double* x) const {
       const double t = ga / (ga - gb);
       double crossing[3];
       for (int i = 0; i < 3; ++i) crossing[i] = x[3 * a + i] + t * (x[3 * b + i] - x[3 * a + i]);
-      sum += axis_distance(crossing, axis_point_, axis_dir_);
+      sum += axis_distance(crossing, axis_.point, axis_.direction);
       ++count;
     }
   return count ? sum / count : 0.0;

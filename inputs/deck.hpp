@@ -9,9 +9,12 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "contact/laws/law_key.hpp"
 
 namespace tribex::inputs {
 
@@ -214,40 +217,28 @@ struct ContactSurfaceSpec {
   SourceLocation where;
 };
 
-enum class InteractionModel { frictionless, adhesion, junction, rough_surface };
-
 /// `enforcement = node to face | mortar` (contact/README.md: when each is adequate).
 enum class InteractionEnforcement { node_to_face, mortar };
 
 /// `begin interaction NAME` inside a contact definition: `surfaces = SLAVE MASTER` (the slave
 /// should be the softer surface, else the finer; solver/contact_setup.cpp swaps a one-pass node-to-face
-/// pair whose slave is more than twice as stiff as its master), `model = frictionless | adhesion | junction`, `symmetric = on|off`
-/// (two-pass). Adhesion (docs/theory.md 6) needs `work of adhesion` and `equilibrium separation`;
-/// junction (docs/theory.md 7) needs those and `junction strength`.
+/// pair whose slave is more than twice as stiff as its master), `model = LAW` (a contact law of the list
+/// in contact/laws/contact_law.hpp, with the keys it declares), `symmetric = on|off` (two-pass).
 struct InteractionSpec {
   std::string name;
   std::string slave;   // surface names, checked by the parser
   std::string master;
-  InteractionModel model = InteractionModel::frictionless;
+  std::string model = "frictionless";  // a law's deck name, checked by the builder
   bool symmetric = false;
   InteractionEnforcement enforcement = InteractionEnforcement::node_to_face;
-  double work_of_adhesion = 0.0;               // W, J/m^2
-  double equilibrium_separation = 0.0;         // z0, m
-  std::optional<double> adhesion_cutoff;       // h_c (separation, > z0), m; default 5 z0
-  double junction_strength = 0.0;              // tau*, Pa
-  std::optional<double> junction_reference_speed;  // v_ref, m/s; default 0.1 m/s (raised to stability)
-  std::optional<double> junction_gap_tolerance;    // g_j, m; default 0.05 z0
-  // model = rough surface (contact/models/rough_surface.hpp): continuous (the four summit keys) or
-  // discrete (`summit file` + `summit map area`); W and tau* optional (0: no adhesion, no friction).
-  double summit_density = 0.0;            // eta, 1/m^2
-  double summit_radius = 0.0;             // R_s, m
-  double summit_height_deviation = 0.0;   // sigma_s, m
-  double composite_modulus = 0.0;         // E*, Pa
-  std::string summit_file;                // resolved against the deck's folder; empty: continuous
-  SourceLocation summit_file_where;
-  double summit_map_area = 0.0;           // m^2
-  double mean_plane_offset = 0.0;         // m
+  contact::LawValues values;           // the law's keys the deck gives (SI; paths resolved against the deck)
+  std::map<std::string, SourceLocation> key_where;  // where each of them is given
   SourceLocation where;
+  /// Where key `key` is given, else the interaction's line.
+  const SourceLocation& where_of(const std::string& key) const {
+    const auto it = key_where.find(key);
+    return it == key_where.end() ? where : it->second;
+  }
 };
 
 /// `begin contact definition NAME` inside the region (docs/theory.md 5; docs/conventions.md contact).

@@ -5,7 +5,9 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <span>
 
+#include "contact/laws/contact_law.hpp"
 #include "inputs/did_you_mean.hpp"
 #include "inputs/lexer.hpp"
 #include "materials/material.hpp"
@@ -513,99 +515,62 @@ class Builder {
           }
         if (w[0] == w[1]) error(where(*it, "surfaces"), *it, "an interaction needs two different surfaces");
       }
-      i.model = InteractionModel::frictionless;
       if (auto v = get(*it, "symmetric")) i.symmetric = v->flag;
-      interface_model(*it, i);
-      if (word(*it, "enforcement") == "mortar") {
-        i.enforcement = InteractionEnforcement::mortar;
-        if (i.model == InteractionModel::junction || i.model == InteractionModel::rough_surface)
-          error(where(*it, "enforcement"), *it,
-                "'enforcement = mortar' supports 'model = frictionless' and 'model = adhesion'; use 'enforcement = node to face' for the junction and rough surface models");
-      }
+      if (word(*it, "enforcement") == "mortar") i.enforcement = InteractionEnforcement::mortar;
+      interaction_law(*it, i);
       spec.interactions.push_back(i);
     }
     return spec;
   }
 
-  // `model = adhesion | junction` and their parameters (docs/theory.md 6, 7): each parameter belongs to
-  // a model, each model needs its parameters; the cutoff is a separation and must exceed z0.
-  void interface_model(const Scope& it, InteractionSpec& i) {
-    const std::string m = word(it, "model");
-    i.model = m == "adhesion" ? InteractionModel::adhesion
-              : m == "junction" ? InteractionModel::junction
-              : m == "rough surface" ? InteractionModel::rough_surface
-                                : InteractionModel::frictionless;
-    if (rough_surface_model(it, i)) return;
-    const bool adhesive = i.model != InteractionModel::frictionless;
-    const bool junction = i.model == InteractionModel::junction;
-    const char* adhesion_keys[] = {"work of adhesion", "equilibrium separation", "adhesion cutoff"};
-    const char* junction_keys[] = {"junction strength", "junction reference speed", "junction gap tolerance"};
-    for (const char* k : adhesion_keys)
-      if (!adhesive && it.find(k))
-        error(where(it, k), it, std::string("'") + k + "' applies to 'model = adhesion' or 'model = junction'; set the model or remove the key");
-    for (const char* k : junction_keys)
-      if (!junction && it.find(k))
-        error(where(it, k), it, std::string("'") + k + "' applies to 'model = junction'; set 'model = junction' or remove the key");
-    if (!adhesive) return;
-    for (const char* k : {"work of adhesion", "equilibrium separation"})
-      if (!it.find(k))
-        error(where(it, "model"), it, "'model = " + m + "' needs '" + k + "' (the Lennard-Jones adhesion law, docs/theory.md 6); add it to the interaction");
-    if (junction && !it.find("junction strength"))
-      error(where(it, "model"), it, "'model = junction' needs 'junction strength' (tau*, Pa); add it to the interaction");
-    i.work_of_adhesion = real(it, "work of adhesion");
-    i.equilibrium_separation = real(it, "equilibrium separation");
-    i.adhesion_cutoff = optional_real(it, "adhesion cutoff");
-    if (i.adhesion_cutoff && it.find("equilibrium separation") && !(*i.adhesion_cutoff > i.equilibrium_separation))
-      error(where(it, "adhesion cutoff"), it,
-            "'adhesion cutoff' is the cut-off separation h_c (measured like h = gap + z0) and must exceed 'equilibrium separation' z0; use e.g. 5 z0");
-    i.junction_strength = real(it, "junction strength");
-    i.junction_reference_speed = optional_real(it, "junction reference speed");
-    i.junction_gap_tolerance = optional_real(it, "junction gap tolerance");
-  }
-
-  // `model = rough surface` (contact/models/rough_surface.hpp): continuous Gaussian summits (density,
-  // radius, sigma_s) or a discrete summit file with its map area, E* always; W, tau*, v_ref optional.
-  // Returns false for the other models after rejecting the rough-surface keys there.
-  bool rough_surface_model(const Scope& it, InteractionSpec& i) {
-    const char* continuous_keys[] = {"summit density", "summit radius", "summit height deviation"};
-    if (i.model != InteractionModel::rough_surface) {
-      for (const char* k : {"summit density", "summit radius", "summit height deviation", "summit file", "summit map area",
-                            "composite modulus", "mean plane offset"})
-        if (it.find(k)) error(where(it, k), it, std::string("'") + k + "' applies to 'model = rough surface'; set the model or remove the key");
-      return false;
+  // `model = LAW` and the law's keys (contact/laws/contact_law.hpp): a key of another law is an error
+  // naming the laws it belongs to, a required key of this law must be given, the law's own rules
+  // between its keys are checked here (so a deck `check` accepts sets up), and so is the enforcement.
+  void interaction_law(const Scope& it, InteractionSpec& i) {
+    i.model = word(it, "model");
+    if (i.model.empty()) i.model = "frictionless";
+    const int law = contact::law_index(i.model);
+    if (law < 0) return;  // the schema reported the choice
+    const auto own = contact::law_keys(law);
+    auto declares = [](std::span<const contact::LawKey> keys, const std::string& key) {
+      return std::any_of(keys.begin(), keys.end(), [&](const contact::LawKey& k) { return k.key == key; });
+    };
+    std::vector<std::string> seen;
+    for (int other = 0; other < contact::law_count; ++other)
+      for (const contact::LawKey& k : contact::law_keys(other)) {
+        const std::string key(k.key);
+        if (declares(own, key) || !it.find(key) || std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+        seen.push_back(key);
+        std::string laws;
+        for (int l = 0; l < contact::law_count; ++l)
+          if (declares(contact::law_keys(l), key))
+            laws += (laws.empty() ? "'model = " : " or 'model = ") + contact::law_names()[static_cast<std::size_t>(l)] + "'";
+        error(where(it, key), it, "'" + key + "' applies to " + laws + ", not 'model = " + i.model +
+                                      "'; set the model or remove the key");
+      }
+    for (const contact::LawKey& k : own) {
+      const std::string key(k.key);
+      if (!it.find(key)) {
+        if (k.required)
+          error(where(it, "model"), it, "'model = " + i.model + "' needs '" + key + "' (" + std::string(k.help) + ", " +
+                                            std::string(k.unit.empty() ? "dimensionless" : k.unit) + "); add it to the interaction");
+        continue;
+      }
+      i.key_where[key] = where(it, key);
+      if (k.unit == "path") {
+        std::filesystem::path path(word(it, key));
+        if (path.is_relative()) path = std::filesystem::path(it.find(key)->where.file).parent_path() / path;
+        i.values.paths[key] = path.lexically_normal().string();
+      } else {
+        i.values.numbers[key] = real(it, key);
+      }
     }
-    for (const char* k : {"equilibrium separation", "adhesion cutoff", "junction gap tolerance"})
-      if (it.find(k))
-        error(where(it, k), it, std::string("'") + k + "' does not apply to 'model = rough surface' (DMT adhesion per asperity needs only 'work of adhesion'); remove it");
-    if (!it.find("composite modulus"))
-      error(where(it, "model"), it, "'model = rough surface' needs 'composite modulus' (E* of the asperity contacts, Pa); add it to the interaction");
-    const bool discrete = it.find("summit file") != nullptr;
-    if (discrete) {
-      for (const char* k : continuous_keys)
-        if (it.find(k)) error(where(it, k), it, std::string("'") + k + "' is taken from the summit file; remove it or remove 'summit file'");
-      if (!it.find("summit map area"))
-        error(where(it, "summit file"), it, "'summit file' needs 'summit map area' (area of the map the summits were found on, m^2); add it");
-      std::filesystem::path p(word(it, "summit file"));
-      if (p.is_relative()) p = std::filesystem::path(it.find("summit file")->where.file).parent_path() / p;
-      i.summit_file = p.lexically_normal().string();
-      i.summit_file_where = where(it, "summit file");
-      i.summit_map_area = real(it, "summit map area");
-    } else {
-      if (it.find("summit map area")) error(where(it, "summit map area"), it, "'summit map area' belongs to 'summit file'; add the file or remove the key");
-      for (const char* k : continuous_keys)
-        if (!it.find(k))
-          error(where(it, "model"), it, std::string("'model = rough surface' needs '") + k +
-                                            "' (from `tribex surface stats`) or a 'summit file'; add it to the interaction");
-      i.summit_density = real(it, "summit density");
-      i.summit_radius = real(it, "summit radius");
-      i.summit_height_deviation = real(it, "summit height deviation");
+    if (const auto problem = contact::check_law(law, i.values))
+      error(problem->key.empty() ? where(it, "model") : where(it, problem->key), it, problem->message);
+    if (i.enforcement == InteractionEnforcement::mortar) {
+      const std::string why = contact::mortar_problem(law);
+      if (!why.empty()) error(where(it, "enforcement"), it, why);
     }
-    i.composite_modulus = real(it, "composite modulus");
-    i.mean_plane_offset = real(it, "mean plane offset", 0.0);
-    i.work_of_adhesion = real(it, "work of adhesion", 0.0);
-    i.junction_strength = real(it, "junction strength", 0.0);
-    i.junction_reference_speed = optional_real(it, "junction reference speed");
-    return true;
   }
 
   template <class Output>

@@ -2,9 +2,11 @@
 #include "inputs/schema.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "inputs/lexer.hpp"
+#include "contact/laws/contact_law.hpp"
 #include "materials/material.hpp"
 
 namespace tribex::inputs {
@@ -105,6 +107,42 @@ std::vector<KeySchema> material_model_keys() {
       keys.push_back(real(key, d, {p.lower_bound, Range{}.hi, p.lower_open, false}, false, "",
                           std::string(p.help) + " (model " + model +
                               (p.default_text.empty() ? "" : ", default " + std::string(p.default_text)) + ")"));
+    }
+  return keys;
+}
+
+// `begin interaction`: the pair, the law and the enforcement, then every contact law's keys from the
+// one list in contact/laws/contact_law.hpp (a key several laws take appears once, naming them; no
+// schema default: the builder rejects the keys of other laws and the law fills its own defaults).
+std::vector<KeySchema> interaction_keys() {
+  std::vector<KeySchema> keys{
+      text("surfaces", ValueKind::strings, true,
+           "SLAVE MASTER (the softer surface as slave, else the finer; node to face swaps a slave more than twice as "
+           "stiff as its master, contact/README.md)"),
+      choice("model", ValueKind::enumeration, contact::law_names(), false, "frictionless",
+             "contact law (contact/laws/README.md; each law's keys below name it)"),
+      boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved"),
+      choice("enforcement", ValueKind::enumeration, {"node to face", "mortar"}, false, "node to face",
+             "node to face: penalty at slave nodes; mortar: segment-to-segment (patch test, face-quadrature adhesion)")};
+  const std::size_t first_law_key = keys.size();
+  for (int l = 0; l < contact::law_count; ++l)
+    for (const contact::LawKey& k : contact::law_keys(l)) {
+      const std::string key(k.key), law = contact::law_names()[static_cast<std::size_t>(l)];
+      auto known = std::find_if(keys.begin() + static_cast<std::ptrdiff_t>(first_law_key), keys.end(),
+                                [&](const KeySchema& s) { return s.name == key; });
+      if (known != keys.end()) {
+        known->help.insert(known->help.size() - 1, ", " + law);  // "... (model a, b)"
+        continue;
+      }
+      if (k.unit == "path") {
+        keys.push_back(text(key, ValueKind::string, false, std::string(k.help) + " (model " + law + ")"));
+        continue;
+      }
+      std::string unit_error;
+      const auto unit = parse_unit(k.unit.empty() ? std::string_view("1") : k.unit, &unit_error);
+      const Dimension d = k.unit.empty() || !unit ? dim::none : unit->dimension;
+      const Range range = std::isfinite(k.lower_bound) ? Range{k.lower_bound, Range{}.hi, k.lower_open, false} : Range{};
+      keys.push_back(real(key, d, range, false, "", std::string(k.help) + " (model " + law + ")"));
     }
   return keys;
 }
@@ -278,41 +316,7 @@ std::vector<BlockSchema> build_table() {
                  false, "contact surfaces and their interactions (docs/theory.md 5)"});
   }
   t.push_back({"interaction", NameRule::required, {}, {}, true,
-               {text("surfaces", ValueKind::strings, true,
-                     "SLAVE MASTER (the softer surface as slave, else the finer; node to face swaps a slave more than twice as "
-                     "stiff as its master, contact/README.md)"),
-                choice("model", ValueKind::enumeration, {"frictionless", "adhesion", "junction", "rough surface"}, false,
-                       "frictionless",
-                       "interaction model (adhesion: + Lennard-Jones attraction; junction: + shear tau*; rough surface: "
-                       "homogenized Greenwood-Williamson law, contact/models/rough_surface.hpp)"),
-                boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved"),
-                choice("enforcement", ValueKind::enumeration, {"node to face", "mortar"}, false, "node to face",
-                       "node to face: penalty at slave nodes; mortar: segment-to-segment (patch test, face-quadrature adhesion)"),
-                real("work of adhesion", dim::energy_per_area, positive(), false, "",
-                     "W of the adhesion law (models adhesion, junction; rough surface: DMT per asperity, default 0)"),
-                real("equilibrium separation", dim::length, positive(), false, "",
-                     "z0 of the adhesion law (models adhesion, junction)"),
-                real("adhesion cutoff", dim::length, positive(), false, "",
-                     "cut-off separation h_c, measured like h = gap + z0, > z0 (default 20 z0: keeps 99 % of W)"),
-                real("junction strength", dim::pressure, positive(), false, "",
-                     "tau* (model junction; rough surface: on the real area, default none = frictionless)"),
-                real("junction reference speed", dim::velocity, positive(), false, "",
-                     "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s; no stability floor: backward Euler)"),
-                real("junction gap tolerance", dim::length, non_negative(), false, "",
-                     "a node is in contact when gap <= this (default 0.05 z0)"),
-                // model = rough surface (docs/theory.md 10.3-10.5): continuous Gaussian summits, or a discrete file
-                real("summit density", dim::per_area, positive(), false, "", "eta, summits per nominal area (rough surface)"),
-                real("summit radius", dim::length, positive(), false, "", "R_s, mean summit radius (rough surface)"),
-                real("summit height deviation", dim::length, positive(), false, "",
-                     "sigma_s, standard deviation of the summit heights (rough surface)"),
-                real("composite modulus", dim::pressure, positive(), false, "",
-                     "E* = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) of the asperity contacts (rough surface)"),
-                text("summit file", ValueKind::string, false,
-                     "discrete population: CSV height_m,radius_m per summit, relative to the deck (rough surface)"),
-                real("summit map area", dim::area, positive(), false, "", "area of the map the summit file came from"),
-                // No schema default: the resolved deck must not write a rough-surface key into other models.
-                real("mean plane offset", dim::length, Range{}, false, "",
-                     "d = gap + offset: mean-plane separation when the surfaces touch (rough surface; default 0)")},
+               interaction_keys(),
                {},
                false, "one pair of contact surfaces and its model"});
 

@@ -12,74 +12,60 @@
 namespace tribex::solver {
 namespace {
 
-// The default adhesion cut-off h_c = 20 z0 keeps 99.03 % of W (docs/theory.md 6.3; 5 z0 keeps 86.1 %,
-// 10 z0 96.3 %); a cut-off keeping less than 99 % is a set-up warning.
-constexpr double default_cutoff_in_z0 = 20.0;
+// A captured work below 99 % of W (an adhesion cut-off below 20 z0, docs/theory.md 6.3) is a set-up warning.
 constexpr double kept_work_warning = 0.99;
 
-// Adhesion / junction parameters (docs/theory.md 6, 7) with their defaults, the capture distance of the
-// search raised to the adhesion cut-off gap; each choice goes to the run log.
-void interface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
-                     const contact::ContactSurface& slave, const contact::ContactSurface& master,
-                     const std::vector<double>& mass, double dt, contact::InteractionSettings& s,
-                     std::vector<std::string>* report, SetupFindings* findings) {
+// The law of an interaction from the deck's values (contact/laws/), its line in the run log and the
+// adhesion cut-off warning.
+void set_law(const inputs::InteractionSpec& it, contact::InteractionSettings& s, std::vector<std::string>* report,
+             SetupFindings* findings) {
   auto log = [&](const std::string& line) {
     if (report) report->push_back("  interaction " + it.name + ": " + line);
   };
-  const bool junction = it.model == inputs::InteractionModel::junction;
-  s.model = junction ? contact::InterfaceModel::junction : contact::InterfaceModel::adhesion;
-  s.adhesion.work = it.work_of_adhesion;
-  s.adhesion.z0 = it.equilibrium_separation;
-  s.adhesion.cutoff = it.adhesion_cutoff.value_or(default_cutoff_in_z0 * it.equilibrium_separation);
-  s.junction.gap_tolerance = it.junction_gap_tolerance.value_or(0.05 * it.equilibrium_separation);
-  log(format("adhesion W = %.4g J/m^2, z0 = %.4g m, cutoff h_c = %.4g m (%.3g z0%s), captured work %.4g J/m^2 "
-             "(%.2f %% of W), in contact when gap <= %.4g m",
-             s.adhesion.work, s.adhesion.z0, s.adhesion.cutoff, s.adhesion.cutoff / s.adhesion.z0,
-             it.adhesion_cutoff ? "" : ", the default", contact::captured_work(s.adhesion),
-             100.0 * contact::captured_work(s.adhesion) / s.adhesion.work, s.junction.gap_tolerance));
-  const double kept = contact::captured_work(s.adhesion) / s.adhesion.work;
-  if (findings && kept < kept_work_warning) {
-    RunWarning w;
-    w.kind = WarningKind::adhesion_cutoff;
-    w.value = w.max_value = kept;
-    w.threshold = kept_work_warning;
-    w.message = format("%s: interaction '%s': 'adhesion cutoff' %.4g m (%.3g z0) keeps %.1f %% of the work of "
-                       "adhesion W = %.4g J/m^2 (pull-off and adhesion energy fall short by as much); set 'adhesion "
-                       "cutoff = %.4g m' (20 z0, 99.0 %%) or remove it for the default",
-                       it.where.str().c_str(), it.name.c_str(), s.adhesion.cutoff, s.adhesion.cutoff / s.adhesion.z0,
-                       100 * kept, s.adhesion.work, default_cutoff_in_z0 * s.adhesion.z0);
-    findings->warnings.push_back(w);
+  try {
+    s.law = contact::make_law(contact::law_index(it.model), it.values);
+  } catch (const contact::LawError& e) {
+    throw SetupError(e.located ? std::string(e.what()) : it.where_of(e.key).str() + ": error: " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw SetupError(it.where.str() + ": error: interaction '" + it.name + "': " + e.what());
   }
-  // The search must capture every pair within the cut-off gap g_c, not only penetrating ones.
-  const double g_c = s.adhesion.capture_gap();
+  log(contact::describe(s.law));
+  if (const contact::Adhesion* adhesion = contact::adhesion_of(s.law)) {
+    const auto& lj = adhesion->lj;
+    const double kept = contact::captured_work(lj) / lj.work;
+    if (findings && kept < kept_work_warning) {
+      RunWarning w;
+      w.kind = WarningKind::adhesion_cutoff;
+      w.value = w.max_value = kept;
+      w.threshold = kept_work_warning;
+      w.message = format("%s: interaction '%s': 'adhesion cutoff' %.4g m (%.3g z0) keeps %.1f %% of the work of "
+                         "adhesion W = %.4g J/m^2 (pull-off and adhesion energy fall short by as much); set 'adhesion "
+                         "cutoff = %.4g m' (20 z0, 99.0 %%) or remove it for the default",
+                         it.where.str().c_str(), it.name.c_str(), lj.cutoff, lj.cutoff / lj.z0, 100 * kept, lj.work,
+                         contact::Adhesion::default_cutoff_in_z0 * lj.z0);
+      findings->warnings.push_back(w);
+    }
+  }
+}
+
+// The search must capture every pair the law acts on, not only penetrating ones: the margin is raised
+// to the largest gap the law acts at (its reach: the adhesion cut-off gap, the rough surface's contact
+// separation minus its offset).
+void cover_reach(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const contact::ContactSurface& master,
+                 contact::InteractionSettings& s, std::vector<std::string>* report) {
+  const double reach = contact::law_reach(s.law);
   const double margin = s.search_margin > 0 ? s.search_margin : master.mean_edge;
-  if (margin < g_c) {
+  if (margin < reach) {
     if (spec.search_margin)
       throw SetupError(spec.where.str() + ": error: 'search margin' " + format("%.4g m", margin) +
-                       " is below the adhesion cut-off gap h_c - z0 = " + format("%.4g m", g_c) + " of interaction '" +
-                       it.name + "'; raise 'search margin' to at least that or lower 'adhesion cutoff'");
-    s.search_margin = g_c;
-    log(format("search margin raised from the mean face edge %.4g m to the cut-off gap %.4g m", margin, g_c));
+                       " is below the reach " + format("%.4g m", reach) + " of interaction '" + it.name +
+                       "' (the largest gap its law acts at: the adhesion cut-off gap h_c - z0, or the rough surface's "
+                       "contact separation minus 'mean plane offset'); raise 'search margin' to at least that");
+    s.search_margin = reach;
+    if (report)
+      report->push_back(format("  interaction %s: search margin raised from the mean face edge %.4g m to the law's reach %.4g m",
+                               it.name.c_str(), margin, reach));
   }
-  if (!junction) return;
-  s.junction.strength = it.junction_strength;
-  s.junction.reference_speed = it.junction_reference_speed.value_or(0.1);
-  // The shear is taken backward-Euler per pair (contact/models/junction_shear.hpp, docs/theory.md 7.3),
-  // so v_ref has no stability floor. For the record, the floor an explicit tanh damper
-  // c = tau* A_I / v_ref would need, c dt / m_eff < 2, estimated with the median master node mass.
-  std::vector<double> master_mass;
-  for (int node : master.nodes) master_mass.push_back(mass[node]);
-  std::nth_element(master_mass.begin(), master_mass.begin() + master_mass.size() / 2, master_mass.end());
-  const double m_master = master_mass[master_mass.size() / 2];
-  double v_explicit = 0.0;
-  for (int k = 0; k < slave.node_count(); ++k) {
-    const double ms = mass[slave.nodes[k]];
-    const double m_eff = ms * m_master / (ms + m_master);
-    v_explicit = std::max(v_explicit, s.junction.strength * slave.node_area[k] * dt / (2.0 * m_eff));
-  }
-  log(format("junction strength tau* = %.4g Pa, reference speed %.4g m/s (tanh law, backward Euler per pair: no "
-             "stability floor; an explicit update would need v_ref > %.4g m/s)",
-             s.junction.strength, s.junction.reference_speed, v_explicit));
 }
 
 // Mean P-wave modulus M = lambda + 2 mu (reference state) of the elements under a contact surface's
@@ -108,9 +94,7 @@ constexpr double stiffer_slave_ratio = 2.0;
 
 void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const Model& model,
                  contact::InteractionSettings& s, std::vector<std::string>* report) {
-  if (it.symmetric || it.enforcement == inputs::InteractionEnforcement::mortar ||
-      it.model == inputs::InteractionModel::rough_surface)
-    return;
+  if (it.symmetric || it.enforcement == inputs::InteractionEnforcement::mortar || !contact::uses_penalty(s.law)) return;
   const auto& slave = spec.surfaces[static_cast<std::size_t>(s.slave)];
   const auto& master = spec.surfaces[static_cast<std::size_t>(s.master)];
   const double m_slave = surface_wave_modulus(model, slave), m_master = surface_wave_modulus(model, master);
@@ -196,29 +180,30 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     refuse_shared_side_sets(spec, it, spec.surfaces[static_cast<std::size_t>(s.slave)],
                             spec.surfaces[static_cast<std::size_t>(s.master)]);
     s.symmetric = it.symmetric;
+    s.penalty_scale = spec.penalty_scale_factor;
+    s.search_margin = spec.search_margin.value_or(0.0);
+    set_law(it, s, report, findings);
     order_roles(it, spec, model, s, report);
+    cover_reach(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
     if (it.enforcement == inputs::InteractionEnforcement::mortar) {
       s.enforcement = contact::Enforcement::mortar;
       if (report)
         report->push_back("  interaction " + it.name +
                           ": mortar (segment-to-segment) enforcement, penalty per area k_A = s m_A / dt^2" +
-                          (it.model == inputs::InteractionModel::adhesion ? ", adhesion at face integration points" : ""));
+                          (contact::adhesion_of(s.law) ? ", adhesion at face integration points" : ""));
     }
-    s.penalty_scale = spec.penalty_scale_factor;
-    s.search_margin = spec.search_margin.value_or(0.0);
-    if (it.model == inputs::InteractionModel::rough_surface)
-      rough_surface_model(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
-    else if (it.model != inputs::InteractionModel::frictionless)
-      interface_model(it, spec, surfaces[static_cast<std::size_t>(s.slave)], surfaces[static_cast<std::size_t>(s.master)],
-                      model.mass, dt, s, report, findings);
-    if (findings && s.enforcement == contact::Enforcement::node_to_face &&
-        it.model != inputs::InteractionModel::rough_surface)
+    if (findings && s.enforcement == contact::Enforcement::node_to_face && contact::uses_penalty(s.law))
       note_one_point_elements(it, spec, model, *findings);
     interactions.push_back(s);
   }
   auto manager = std::make_unique<contact::ContactManager>(std::move(surfaces), std::move(interactions), model.mass, dt,
                                                            mesh.node_count());
   if (spec.axis) manager->set_axis(spec.axis->data(), spec.axis->data() + 3);
+  // Nodes with all three velocity components prescribed (fixed or driven) for the tangential pairs.
+  std::vector<char> constrained(static_cast<std::size_t>(mesh.node_count()), 0), prescribed(constrained.size(), 0);
+  for (int dof : model.constraints.dof) ++constrained[static_cast<std::size_t>(dof / 3)];
+  for (std::size_t n = 0; n < constrained.size(); ++n) prescribed[n] = constrained[n] == 3;
+  manager->set_prescribed_nodes(std::move(prescribed));
 
   // Pre-flight: initial gaps and overlaps per pass, worst nodes named.
   const auto overlaps = manager->initial_overlaps(mesh.coordinates.data(), 3);

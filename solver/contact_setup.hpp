@@ -24,10 +24,4 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
                                                        std::vector<std::string>* report,
                                                        SetupFindings* findings = nullptr);
 
-/// `model = rough surface` (solver/rough_surface_setup.cpp): builds the GW law (reading a summit
-/// file), the shear law and the search margin; each choice goes to the run log.
-void rough_surface_model(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec,
-                         const contact::ContactSurface& master, contact::InteractionSettings& s,
-                         std::vector<std::string>* report);
-
 }  // namespace tribex::solver

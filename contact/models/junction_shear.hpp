@@ -45,8 +45,10 @@ inline void junction_traction(const double vt[3], const JunctionLaw& law, double
 /// s + K tanh(s / v_ref) = v_pred in [0, v_pred] (K = capacity dt / m_eff, m/s; v_pred >= 0).
 /// Newton from s = 0: the left side g(s) is increasing and concave, so the iterates rise
 /// monotonically to the root (each tangent lies above g) and never leave the bracket.
+/// v_ref = 0 is the unregularised limit: s = max(v_pred - K, 0) (exact stick below the capacity).
 inline double junction_slip_speed(double v_pred, double K, double v_ref) {
   if (!(v_pred > 0.0)) return 0.0;
+  if (!(v_ref > 0.0)) return std::max(v_pred - K, 0.0);
   double s = 0.0;
   for (int it = 0; it < 60; ++it) {
     const double th = std::tanh(s / v_ref);

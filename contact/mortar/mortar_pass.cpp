@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ContactManager's mortar pass (enforcement = mortar): the segment integration of
 // MortarEnforcement, then the per-node bookkeeping the node-to-face path does inline (status,
-// contact area, node count, penetration, radius). Kept in its own file so that the node-to-face
-// code (contact_manager.cpp, node_to_face_models.cpp) stays as it is.
+// contact area, node count, penetration, radius), beside the node-to-face pass (node_to_face/).
 #include <algorithm>
 #include <cmath>
 
@@ -17,8 +16,9 @@ void ContactManager::apply_mortar(Pass& p, const double* x, double* force, Conta
   settings.factor = p.factor;
   settings.margin = p.margin;
   settings.penalty_per_area = p.penalty_per_area;
-  settings.adhesion = p.model == InterfaceModel::adhesion;
-  settings.law = p.adhesion;
+  const Adhesion* adhesion = adhesion_of(p.law);
+  settings.adhesion = adhesion != nullptr;
+  if (adhesion) settings.law = adhesion->lj;
   const MortarTotals t = p.mortar->apply(x, slave, surfaces_[p.master], p.candidate_offset, p.candidates, settings,
                                          force, traction_.data());
   totals.compressive_force += t.compressive_force;
@@ -28,7 +28,7 @@ void ContactManager::apply_mortar(Pass& p, const double* x, double* force, Conta
   const auto& pressure = p.mortar->pressure();
   const auto& area = p.mortar->overlap_area();
   // In contact: a penalty pressure, or (adhesion) a mean gap within the junction gap tolerance.
-  const double tolerance = settings.adhesion ? p.junction.gap_tolerance : -INFINITY;
+  const double tolerance = adhesion ? adhesion->gap_tolerance : -INFINITY;
   for (int k = 0; k < slave.node_count(); ++k) {
     p.gap[k] = mean_gap[k];
     if (!(pressure[k] > 0.0 || mean_gap[k] <= tolerance)) continue;
@@ -38,7 +38,7 @@ void ContactManager::apply_mortar(Pass& p, const double* x, double* force, Conta
     if (p.primary) ++totals.nodes;
     totals.max_penetration = std::max(totals.max_penetration, -mean_gap[k]);
     note_penetration(totals, -mean_gap[k], slave.node_area[k], node);
-    if (has_axis_) totals.radius_max = std::max(totals.radius_max, axis_distance(x + 3 * node, axis_point_, axis_dir_));
+    if (axis_.set) totals.radius_max = std::max(totals.radius_max, axis_distance(x + 3 * node, axis_.point, axis_.direction));
   }
 }
 

@@ -128,6 +128,7 @@ void CentralDifference::save_state(StateArchive& a) const {
       a.put(p + "gap", s.passes[k].gap);
       a.put_integer(p + "searched", s.passes[k].searched ? 1 : 0);
       a.put(p + "stable_dt", std::vector<double>{s.passes[k].stable_dt});
+      if (!s.passes[k].law_state.empty()) a.put(p + "law_state", s.passes[k].law_state);
     }
   }
 }
@@ -197,6 +198,7 @@ void CentralDifference::restore_state(const StateArchive& a) {
       s.passes[k].gap = a.array(q + "gap");
       s.passes[k].searched = a.integer(q + "searched") != 0;
       s.passes[k].stable_dt = a.array(q + "stable_dt").at(0);
+      if (a.has(q + "law_state")) s.passes[k].law_state = a.array(q + "law_state");
     }
     try {
       model_.contact->restore(s);

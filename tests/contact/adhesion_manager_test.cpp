@@ -120,9 +120,7 @@ TEST(AdhesionManager, SphereAboveFlatMatchesDerjaguin) {
 TEST(JunctionManager, ShearOnFlatsIsStrengthTimesAreaAndReverses) {
   const double tau = 100e6, v_ref = 0.5, A = 100 * nm * nm;
   for (double V : {10.0, 0.5, -10.0, -0.5}) {
-    InteractionSettings s = adhesion(5.0);
-    s.model = InterfaceModel::junction;
-    s.junction = {tau, v_ref, 0.05 * z0};
+    InteractionSettings s = test::junction_settings({W, z0, 5 * z0}, {tau, v_ref, 0.05 * z0});
     Rig st = make(test::two_flats({.gap = 0.0}), "upper_zmin", "lower_zmax", s, 1e-20);
     std::vector<double> v(st.mesh.coordinates.size(), 0.0);
     for (int node : st.mesh.node_sets.at("upper_all")) v[3 * node] = V;
@@ -138,9 +136,7 @@ TEST(JunctionManager, ShearOnFlatsIsStrengthTimesAreaAndReverses) {
     EXPECT_NEAR(t.friction_power, std::abs(expected * V), 1e-3 * std::abs(expected * V));
   }
   // Sliding the master instead of the slave reverses the force on the slave.
-  InteractionSettings s = adhesion(5.0);
-  s.model = InterfaceModel::junction;
-  s.junction = {tau, v_ref, 0.05 * z0};
+  InteractionSettings s = test::junction_settings({W, z0, 5 * z0}, {tau, v_ref, 0.05 * z0});
   Rig st = make(test::two_flats({.gap = 0.0}), "upper_zmin", "lower_zmax", s, 1e-20);
   std::vector<double> v(st.mesh.coordinates.size(), 0.0);
   for (int node : st.mesh.node_sets.at("lower_all")) v[3 * node] = 10.0;

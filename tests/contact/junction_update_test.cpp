@@ -154,9 +154,8 @@ TEST(JunctionManagerCoupling, SharedMasterNodesStayStable) {
   std::vector<double> node_mass(m.node_count(), 1e-24);
   const auto& master_nodes = m.node_sets.at("lower_zmax");
   for (int node : master_nodes) node_mass[node] = 2e-25;  // light master: strong coupling
-  InteractionSettings s = test::adhesion_settings({0.05, z0, 5 * z0});
-  s.model = InterfaceModel::junction;
-  s.junction = {1e9, 1e-6, 0.05 * z0};  // stick: tau* A_I dt / m_pair >> the slip
+  // stick: tau* A_I dt / m_pair >> the slip
+  InteractionSettings s = test::junction_settings({0.05, z0, 5 * z0}, {1e9, 1e-6, 0.05 * z0});
   const double step = 1e-15;
   ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", s, node_mass, step);
   std::vector<double> v(m.coordinates.size(), 0.0), force(m.coordinates.size(), 0.0);
@@ -219,9 +218,7 @@ TEST(JunctionManagerArea, ContactAreaFollowsTheGapBetweenNodes) {
     mesh::Mesh m = test::two_flats({});  // 20 x 20 slave faces at gap 0 on 7 x 7 master faces, then tilted
     for (int node : m.node_sets.at("upper_all")) m.coordinates[3 * node + 2] += slope * (m.coordinates[3 * node] - xc);
     std::vector<double> node_mass(m.node_count(), 1e-20);
-    InteractionSettings s = test::adhesion_settings({0.05, z0, 5 * z0});
-    s.model = InterfaceModel::junction;
-    s.junction = {tau, 0.1, 0.0};  // in contact where g <= 0
+    InteractionSettings s = test::junction_settings({0.05, z0, 5 * z0}, {tau, 0.1, 0.0});  // in contact where g <= 0
     s.search_margin = 2 * nm;
     ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", s, node_mass);
     std::vector<double> v(m.coordinates.size(), 0.0), force(m.coordinates.size(), 0.0);

@@ -38,12 +38,13 @@ Result run(double gap, double offset, double slide_speed, const RoughSurfacePara
   const mesh::Mesh m = test::two_flats({.gap = gap, .slave_intervals = {6, 5}});
   std::vector<double> mass(m.node_count(), 1e-21);
   InteractionSettings s;
-  s.model = InterfaceModel::rough_surface;
-  s.rough = std::make_shared<const RoughSurfaceLaw>(q);
-  s.mean_plane_offset = offset;
+  RoughSurface law;
+  law.law = std::make_shared<const RoughSurfaceLaw>(q);
+  law.mean_plane_offset = offset;
+  law.shear.strength = tau;
+  law.shear.reference_speed = 0.1;
+  s.law = law;
   s.search_margin = 20 * nm;
-  s.junction.strength = tau;
-  s.junction.reference_speed = 0.1;
   ContactManager manager = test::one_interaction(m, "upper_zmin", "lower_zmax", s, mass);
   std::vector<double> v(m.coordinates.size(), 0.0), force(m.coordinates.size(), 0.0);
   for (int node : m.node_sets.at("upper_all")) v[3 * node] = slide_speed;

@@ -46,11 +46,17 @@ inline mesh::Mesh two_flats(const TwoFlats& spec) {
 // and the search reaches twice the cut-off gap.
 inline InteractionSettings adhesion_settings(const AdhesionLaw& law, Enforcement enforcement = Enforcement::node_to_face) {
   InteractionSettings s;
-  s.model = InterfaceModel::adhesion;
-  s.adhesion = law;
-  s.junction.gap_tolerance = 0.05 * law.z0;
+  s.law = Adhesion{law, 0.05 * law.z0};
   s.search_margin = 2 * law.cutoff;
   s.enforcement = enforcement;
+  return s;
+}
+
+// Junction (docs/theory.md 7) with the adhesion `law` and the shear `junction` (its gap tolerance
+// also the adhesion's contact rule), search as for adhesion_settings.
+inline InteractionSettings junction_settings(const AdhesionLaw& law, const JunctionLaw& junction) {
+  InteractionSettings s = adhesion_settings(law);
+  s.law = Junction{Adhesion{law, junction.gap_tolerance}, junction};
   return s;
 }
 

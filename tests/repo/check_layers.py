@@ -16,7 +16,7 @@ from check_repo import report  # noqa: E402
 
 ALLOWED = {
     "materials": {"materials"},
-    "inputs": {"inputs", "materials"},
+    "inputs": {"inputs", "materials", "contact", "mesh"},
     "mesh": {"mesh"},
     "contact": {"contact", "mesh"},
     "solver": {"solver", "inputs", "mesh", "materials", "contact"},

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: MIT
 """Pieces shared by the compare scripts that read a run's history.csv: reading it, selecting rows by
-a window, means, relative errors, the quasi-static (kinetic / internal energy) figure, the plot
-set-up and the failure report. Each script keeps its own reference, tolerances and messages.
+a window, means, relative errors, a deck's piecewise-linear function, the trapezoid rule, the
+quasi-static (kinetic / internal energy) figure, the command line, the plot set-up and the failure report. Each script keeps its own reference, tolerances and messages.
 """
+import argparse
 import csv
 import os
 
@@ -14,6 +15,15 @@ def read_history(path):
         path = os.path.join(path, "history.csv")
     with open(path) as f:
         return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def history_parser(doc, plot_help, positional="history"):
+    """The command line every compare script starts from: the run's history (or output folder) as
+    `positional`, and --plot PNG with `plot_help`; the script adds its own options."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument(positional)
+    ap.add_argument("--plot", help=plot_help)
+    return ap
 
 
 def rows_between(rows, lo, hi, key="time"):
@@ -51,12 +61,35 @@ def max_kinetic_over_stored(rows, stored=("internal_energy",), default=None):
     return max(ratios) if ratios else default
 
 
+def piecewise_linear(points, x):
+    """The piecewise-linear function through `points` ((x, y) pairs, x increasing) at x, held
+    constant beyond the last point: a deck's `type = piecewise linear` function."""
+    for (x0, y0), (x1, y1) in zip(points, points[1:]):
+        if x <= x1:
+            return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    return points[-1][1]
+
+
+def trapezoid(xs, ys):
+    """The integral of ys over xs by the trapezoid rule."""
+    return sum(0.5 * (ys[i] + ys[i + 1]) * (xs[i + 1] - xs[i]) for i in range(len(xs) - 1))
+
+
 def pyplot():
     """matplotlib.pyplot on the Agg backend (no display: CTest, CI)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     return plt
+
+
+def finish_axes(ax, xlabel, ylabel, title=None):
+    """Axis labels (with units), an optional title and the legend, as every compare plot has them."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if title:
+        ax.set_title(title)
+    ax.legend(fontsize=8)
 
 
 def save_figure(fig, path, announce="plot: "):

@@ -6,12 +6,12 @@ with the sliding direction (base reaction in x changes sign).
 
 usage: compare.py HISTORY.csv [--plot OUT.png]
 """
-import argparse
 import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import mean, pyplot, read_history, report_failures, rows_between, save_figure  # noqa: E402
+from history_checks import (finish_axes, history_parser, mean, pyplot, read_history,  # noqa: E402
+                            report_failures, rows_between, save_figure)
 
 TAU_STAR = 10e6          # Pa, junction strength in the deck
 AREA = 10e-9 * 10e-9     # m^2, the upper block's face
@@ -20,9 +20,7 @@ BACKWARD = (80e-12, 120e-12)
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("history")
-    ap.add_argument("--plot", help="PNG: friction force and tau* x area versus sliding distance")
+    ap = history_parser(__doc__, "PNG: friction force and tau* x area versus sliding distance")
     a = ap.parse_args()
     rows = read_history(a.history)
     failures = []
@@ -53,9 +51,7 @@ def main():
         ax.plot(t, [r["friction_force"] * 1e9 for r in rows], label="friction force (FE)")
         ax.plot(t, [r["tau_star_times_area"] * 1e9 for r in rows], "--", label="tau* x contact area")
         ax.plot(t, [r["lower_zmin_reaction_x"] * 1e9 for r in rows], ":", label="base reaction x")
-        ax.set_xlabel("time (ps): press 0-20, slide +x 30-60, -x 60-120")
-        ax.set_ylabel("force (nN)")
-        ax.legend(fontsize=8)
+        finish_axes(ax, "time (ps): press 0-20, slide +x 30-60, -x 60-120", "force (nN)")
         save_figure(fig, a.plot, announce=None)
     return report_failures(failures)
 

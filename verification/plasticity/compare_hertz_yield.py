@@ -15,13 +15,12 @@ of its body (the 0.8 nm mesh resolves the depth no finer).
 
 usage: compare_hertz_yield.py OUTPUT [--element-size 0.8] [--plot OUT.png]
 """
-import argparse
 import math
 import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import pyplot, read_history, report_failures, save_figure  # noqa: E402
+from history_checks import finish_axes, history_parser, pyplot, read_history, report_failures, save_figure  # noqa: E402
 
 E, NU, Y, R = 161e9, 0.23, 4e9, 27e-9   # the deck's silicon and sphere
 E_STAR = E / (2 * (1 - NU * NU))        # two identical bodies
@@ -44,10 +43,8 @@ def hertz_p0(force):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("output")
+    ap = history_parser(__doc__, "PNG: plastic dissipation against p0/Y, with c(nu)", "output")
     ap.add_argument("--element-size", type=float, default=0.8, help="element size at the contact, nm")
-    ap.add_argument("--plot", help="PNG: plastic dissipation against p0/Y, with c(nu)")
     a = ap.parse_args()
     c, z_over_a = first_yield_on_axis(NU)
     a_y = math.pi * c * Y * R / (2.0 * E_STAR)
@@ -102,11 +99,9 @@ def main():
         ax.semilogy([hertz_p0(r["contact_normal_force"]) / Y for r in plastic],
                     [r["plastic_dissipation"] * 1e21 for r in plastic], label="FE plastic dissipation (log scale)")
         ax.axvline(c, color="k", ls="--", lw=1, label=f"first yield, Hertz + von Mises: p0 = {c:.3f} Y")
-        ax.set_xlabel("Hertz peak pressure of the FE contact force, p0 / Y")
-        ax.set_ylabel("plastic dissipation (zJ)")
         ax.set_xlim(1.4, max(hertz_p0(r["contact_normal_force"]) for r in rows) / Y)
-        ax.set_title("Si sphere on Si flat, J2: Y = 4 GPa, R = 27 nm")
-        ax.legend(fontsize=8)
+        finish_axes(ax, "Hertz peak pressure of the FE contact force, p0 / Y", "plastic dissipation (zJ)",
+                    "Si sphere on Si flat, J2: Y = 4 GPa, R = 27 nm")
         save_figure(fig, a.plot)
     return report_failures(failures, verdict=True)
 

@@ -9,7 +9,6 @@ translates rigidly at 1.4 and 5 m/s, and that kinetic energy is the drive, not a
 
 usage: compare.py HISTORY.csv [--plot OUT.png]
 """
-import argparse
 import math
 import pathlib
 import sys
@@ -17,8 +16,8 @@ import sys
 from scipy import integrate
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import (max_kinetic_over_stored, mean, pyplot, read_history, report_failures,  # noqa: E402
-                            rows_between, save_figure)
+from history_checks import (finish_axes, history_parser, max_kinetic_over_stored, mean, pyplot,  # noqa: E402
+                            read_history, report_failures, rows_between, save_figure)
 
 # The deck's parameters (rough_flats.i)
 ETA, R, SIGMA = 26.14e12, 192.9e-9, 35.01e-9       # 1/m^2, m, m
@@ -46,9 +45,7 @@ def gw(d):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("history")
-    ap.add_argument("--plot", help="PNG: apparent pressure against d (FE and GW), friction against time")
+    ap = history_parser(__doc__, "PNG: apparent pressure against d (FE and GW), friction against time")
     a = ap.parse_args()
     rows = read_history(a.history)
     failures = []
@@ -97,15 +94,11 @@ def main():
         ds = [OFFSET * 0.25 + i * (OFFSET * 0.8) / 120 for i in range(121)]
         ax1.semilogy([d * 1e9 for d in ds], [max(gw(d)[0], 1e-3) / 1e6 for d in ds], "-", label="GW integral (direct)")
         ax1.semilogy([p[0] * 1e9 for p in points], [p[1] / 1e6 for p in points], "o", ms=3, label="FE apparent pressure")
-        ax1.set_xlabel("mean-plane separation d (nm)")
-        ax1.set_ylabel("apparent pressure (MPa)")
-        ax1.legend(fontsize=8)
+        finish_axes(ax1, "mean-plane separation d (nm)", "apparent pressure (MPa)")
         t = [r["time"] * 1e9 for r in rows]
         ax2.plot(t, [r["friction_force"] * 1e6 for r in rows], label="friction force (FE)")
         ax2.plot(t, [TAU * r["real_contact_area"] * 1e6 for r in rows], "--", label="tau* x real area")
-        ax2.set_xlabel("time (ns): press 0-100, hold, slide 150-200")
-        ax2.set_ylabel("force (uN)")
-        ax2.legend(fontsize=8)
+        finish_axes(ax2, "time (ns): press 0-100, hold, slide 150-200", "force (uN)")
         save_figure(fig, a.plot, announce=None)
     return report_failures(failures)
 

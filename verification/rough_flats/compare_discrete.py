@@ -6,14 +6,13 @@ mean-plane separation read back from the run, within 1 %.
 
 usage: compare_discrete.py HISTORY.csv [--plot OUT.png]
 """
-import argparse
 import math
 import os
 import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import pyplot, read_history, report_failures, rows_between, save_figure  # noqa: E402
+from history_checks import finish_axes, history_parser, pyplot, read_history, report_failures, rows_between, save_figure  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 E_STAR, W = 84.1e9, 0.05                      # Pa, J/m^2 (rough_flats_discrete.i)
@@ -47,10 +46,7 @@ def direct_sum(pop, d):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("history")
-    ap.add_argument("--plot")
-    a = ap.parse_args()
+    a = history_parser(__doc__, "PNG: normal load against real contact area, FE and the direct sum").parse_args()
     pop = summits()
     rows = rows_between(read_history(a.history), *PRESS)
     points, worst_load, worst_area, contacts = [], 0.0, 0.0, set()
@@ -77,9 +73,7 @@ def main():
         fig, ax = pyplot().subplots(figsize=(5.5, 4))
         ax.plot([p[4] * 1e12 for p in points], [p[2] * 1e6 for p in points], "-", label="direct sum over the summits")
         ax.plot([p[3] * 1e12 for p in points], [p[1] * 1e6 for p in points], "o", ms=3, label="FE (discrete rough-surface model)")
-        ax.set_xlabel("real contact area (um^2)")
-        ax.set_ylabel("normal load (uN)")
-        ax.legend(fontsize=8)
+        finish_axes(ax, "real contact area (um^2)", "normal load (uN)")
         save_figure(fig, a.plot, announce=None)
     return report_failures(failures)
 

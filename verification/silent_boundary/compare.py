@@ -7,19 +7,16 @@ the column, so R = (kinetic + internal energy) / external work is the reflected 
 Tolerances (issue "Foundation", docs/theory.md 4.4): silent boundary R < 2 % and at least 98 % of the
 input in silent_boundary_dissipation; fixed end R > 95 % (so that the test can fail).
 """
-import argparse
 import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import pyplot, read_history, save_figure  # noqa: E402
+from history_checks import finish_axes, history_parser, pyplot, read_history, save_figure  # noqa: E402
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("history")
+    p = history_parser(__doc__, "write a PNG of the energies against time")
     p.add_argument("--case", required=True, help="p_silent, p_half, p_fixed, s_silent or s_fixed")
-    p.add_argument("--plot", help="write a PNG of the energies against time")
     a = p.parse_args()
     rows = read_history(a.history)
     t = [r["time"] for r in rows]
@@ -54,10 +51,7 @@ def main():
         ax.plot(ps, [x * 1e21 for x in wext], label="external work")
         ax.plot(ps, [(k + i) * 1e21 for k, i in zip(ke, ie)], label="kinetic + internal")
         ax.plot(ps, [x * 1e21 for x in sil], label="absorbed by silent boundary")
-        ax.set_xlabel("time (ps)")
-        ax.set_ylabel("energy (zJ)")
-        ax.set_title(f"{a.case}: reflected fraction {reflected:.2%}")
-        ax.legend()
+        finish_axes(ax, "time (ps)", "energy (zJ)", f"{a.case}: reflected fraction {reflected:.2%}")
         save_figure(fig, a.plot, announce="  plot: ")
     return 0 if ok else 1
 
