@@ -47,11 +47,14 @@ std::span<const Field<contact::ContactTotals>> contact_total_fields() {
       field<&C::nodes>("nodes", "count", "slave nodes in contact"),
       field<&C::max_penetration>("max_penetration", "m", "deepest penetration of a slave node"),
       field<&C::radius_max>("radius_max", "m", "distance from the contact axis of the farthest slave node in contact"),
-      field<&C::radius_edge>("radius_edge", "m", "mean distance from the axis of the points where the gap changes sign along slave-face edges"),
+      field<&C::radius_edge>("radius_edge", "m",
+                             "edge estimator: mean distance from the contact axis of the points where the gap changes "
+                             "sign along slave-face edges (linear between the edge's nodes); 0 without a contact axis"),
       field<&C::searches>("searches", "count", "broad-phase searches this step"),
       field<&C::radius_pressure_fit>("radius_pressure_fit", "m",
-                                     "zero of the least-squares line p^2 = alpha - beta r^2 through the contacting nodes' "
-                                     "pressures (the radius of an elliptic, Hertz-like, pressure)"),
+                                     "pressure-fit estimator: zero of the least-squares line p^2 = alpha - beta r^2 through "
+                                     "the contacting nodes' pressures at axis distance r; presumes an elliptic (Hertz-like) "
+                                     "pressure; 0 without a contact axis or with under 3 nodes"),
       field<&C::real_area>("real_area", "m^2", "rough-surface law: real contact area sum A_I (A_c/A_0)"),
       field<&C::asperity_contacts>("asperity_contacts", "count", "rough-surface law: asperities in contact sum A_I (N/A_0)"),
       field<&C::nominal_area>("nominal_area", "m^2", "rough-surface law: nominal area within reach of the law"),

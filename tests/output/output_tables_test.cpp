@@ -1,17 +1,20 @@
 // SPDX-License-Identifier: MIT
 // The data-struct tables (solver/output/output_tables.hpp) and what they drive: restart arrays that
 // keep the layout of restart files written before the tables (format version 1, pinned here value
-// by value), summary.json's keys in their order with a "units" object.
+// by value), summary.json's keys in their order with a "units" object; history columns in their
+// order, and the plain contact_radius the estimator its definition says.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "solver/output/history_columns.hpp"
 #include "solver/output/output_tables.hpp"
 #include "solver/output/summary_writer.hpp"
 
@@ -174,4 +177,66 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
     EXPECT_NE(text.find(expected), std::string::npos) << "summary.json lacks " << expected << "\n" << text;
   EXPECT_EQ(text.substr(text.size() - 5), "}}\n}\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json.tmp"));
+}
+
+namespace {
+
+double column(std::string_view name, const solver::HistoryState& s) {
+  for (const auto& c : solver::history_columns())
+    if (c.name == name) return c.value(s);
+  ADD_FAILURE() << "no history column " << name;
+  return NAN;
+}
+
+}  // namespace
+
+// Scripts read history.csv by name, some by position: the columns keep their order and new ones go
+// at the end (plastic_dissipation, present only where a material dissipates, stays last).
+TEST(HistoryColumns, OrderIsKeptAndNewColumnsComeLast) {
+  std::vector<std::string_view> names;
+  for (const auto& c : solver::history_columns()) names.push_back(c.name);
+  EXPECT_EQ(names, (std::vector<std::string_view>{
+                       "time", "dt", "kinetic_energy", "internal_energy", "hourglass_energy", "external_work",
+                       "silent_boundary_dissipation", "contact_work", "energy_error", "contact_normal_force",
+                       "contact_tangential_force", "contact_area", "contact_nodes", "damping_dissipation",
+                       "viscous_dissipation", "contact_radius", "contact_radius_max", "contact_max_penetration",
+                       "momentum_x", "momentum_y", "momentum_z", "contact_radius_edge", "adhesive_force",
+                       "compressive_force", "friction_force", "tau_star_times_area", "adhesion_energy",
+                       "friction_power", "contact_radius_pressure_fit", "real_contact_area", "asperity_contacts",
+                       "apparent_pressure", "contact_radius_area", "plastic_dissipation"}));
+}
+
+// contact_radius is the edge estimate where there is one (a contact axis, a contact boundary on the
+// slave surface), else the area one; every estimator keeps a column named after it.
+TEST(HistoryColumns, PlainContactRadiusIsTheEdgeEstimateWhereItIsDefined) {
+  solver::Energies e;
+  contact::ContactTotals c;
+  const double momentum[3] = {0.0, 0.0, 0.0};
+  const solver::HistoryState s{0.0, 0.0, e, c, momentum};
+  c.area = M_PI * 4e-18;  // a disc of radius 2 nm
+  c.radius_edge = 1.9e-9;
+  c.radius_pressure_fit = 1.85e-9;
+  EXPECT_DOUBLE_EQ(column("contact_radius_area", s), 2e-9);
+  EXPECT_EQ(column("contact_radius", s), 1.9e-9);
+  EXPECT_EQ(column("contact_radius_edge", s), 1.9e-9);
+  EXPECT_EQ(column("contact_radius_pressure_fit", s), 1.85e-9);
+  c.radius_edge = 0.0;  // no contact axis in the deck (or no contact boundary on the slave surface)
+  c.radius_pressure_fit = 0.0;
+  EXPECT_DOUBLE_EQ(column("contact_radius", s), 2e-9);
+  c.area = 0.0;  // no contact
+  EXPECT_EQ(column("contact_radius", s), 0.0);
+  // Each definition says which estimator it is.
+  const std::map<std::string, std::string> starts = {
+      {"contact_radius", "contact radius, best estimate: contact_radius_edge where it is defined"},
+      {"contact_radius_edge", "edge estimator:"},
+      {"contact_radius_pressure_fit", "pressure-fit estimator:"},
+      {"contact_radius_area", "area estimator: sqrt(contact_area / pi)"}};
+  int seen = 0;
+  for (const auto& info : solver::describe_history_columns(false, {}, {})) {
+    const auto it = starts.find(info.name);
+    if (it == starts.end()) continue;
+    EXPECT_EQ(info.definition.rfind(it->second, 0), 0u) << info.name << ": " << info.definition;
+    ++seen;
+  }
+  EXPECT_EQ(seen, 4);
 }
