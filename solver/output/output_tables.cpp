@@ -136,7 +136,7 @@ std::span<const Field<RunSummary>> summary_fields() {
         [](const R& s) { return double(s.controlling_element + 1); }, nullptr,
         [](const R& s) { return std::to_string(s.controlling_element + 1); }},
       field<&R::energy_error>("energy_error", "-", "|energy balance| / largest energy of the run at the end"),
-      text("energy_unit", "the unit of the energies below", [](const R&) { return std::string("\"J\""); }),
+      text("energy_unit", "the unit of the energies object", [](const R&) { return std::string("\"J\""); }),
       text("warnings", "the run guards' warnings list (solver/guards/README.md); units: units.warnings",
            [](const R& s) {
              std::string out = "[";
