@@ -205,13 +205,16 @@ void DeckRun::close() {
   summary.communication_seconds = model_->domain.communication_seconds;
   summary.final_time = integrator_->time();
   summary.energy_error = integrator_->energies().relative_error();
+  summary.energies = integrator_->energies();
+  summary.initial_stable_time_step = stable0_.dt;
+  summary.controlling_element = stable0_.controlling_element;
   const long steps_run = summary.steps - summary.first_step;  // by this process
   summary.ns_per_element_step =
       steps_run > 0 && elements_ > 0 ? 1e9 * summary.loop_seconds / (double(elements_) * double(steps_run)) : 0.0;
   summary.wall_seconds = seconds_since(wall_start_);
   if (root_) {
     try {
-      write_summary_json((out_ / "summary.json").string(), summary, integrator_->energies(), stable0_);
+      write_summary_json((out_ / "summary.json").string(), summary);
     } catch (const std::exception& e) {  // a full disk: say so; the status still ends the log and stderr
       std::fprintf(stderr, "error: %s\n", e.what());
       if (summary.exit_code == 0) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/errors.hpp"
+#include "solver/output/output_tables.hpp"
 #include "solver/output/run_log.hpp"
 #include "solver/restart/state_archive.hpp"
 
@@ -188,9 +189,7 @@ void RunGuards::save(StateArchive& archive) const {
   std::vector<double> flat;
   for (const Watch* w : {&energy_, &penetration_, &motion_, &one_point_}) {
     if (w->entry < 0) continue;
-    const RunWarning& r = warnings_[static_cast<std::size_t>(w->entry)];
-    flat.insert(flat.end(), {double(r.kind), double(r.step), r.time, r.value, r.threshold, r.max_value,
-                             double(r.max_step), r.max_time, double(r.node)});
+    append_stored(warning_fields(), warnings_[static_cast<std::size_t>(w->entry)], flat);
   }
   archive.put("guards_warnings", flat);
   archive.put("guards_samples", samples_);
@@ -199,18 +198,15 @@ void RunGuards::save(StateArchive& archive) const {
 
 void RunGuards::restore(const StateArchive& archive) {
   if (!archive.has("guards_warnings")) return;  // a restart file of an earlier tribex: start afresh
+  // The warnings' stored fields, one run of warning_fields() after the other; the message is made again.
   const auto& flat = archive.array("guards_warnings");
-  for (std::size_t i = 0; i + 9 <= flat.size(); i += 9) {
+  const std::size_t width = stored_count(warning_fields());
+  if (flat.size() % width != 0)
+    throw SetupError("restart file: the guards' warnings hold " + std::to_string(flat.size()) +
+                     " values, not a multiple of the " + std::to_string(width) + " this tribex keeps per warning");
+  for (std::size_t i = 0; i < flat.size(); i += width) {
     RunWarning r;
-    r.kind = static_cast<WarningKind>(static_cast<int>(flat[i]));
-    r.step = static_cast<long>(flat[i + 1]);
-    r.time = flat[i + 2];
-    r.value = flat[i + 3];
-    r.threshold = flat[i + 4];
-    r.max_value = flat[i + 5];
-    r.max_step = static_cast<long>(flat[i + 6]);
-    r.max_time = flat[i + 7];
-    r.node = static_cast<int>(flat[i + 8]);
+    restore_stored(warning_fields(), flat.data() + i, r);
     r.message = text(r);
     for (Watch* w : {&energy_, &penetration_, &motion_, &one_point_})
       if (w->kind == r.kind) w->entry = static_cast<int>(warnings_.size());

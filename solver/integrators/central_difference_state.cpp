@@ -3,83 +3,18 @@
 // for bit, so every member that step() reads from an earlier step is saved exactly: the lagged
 // halves of the trapezoidal energy rules, the stable-step estimate (recomputed only every
 // dt_update_interval steps), the forces f^n of the last force pass, the element outputs of that
-// pass and the contact search state.
-#include <concepts>
+// pass and the contact search state. The energy ledger and the contact totals are kept as one array
+// each, their fields in the order of their tables (solver/output/output_tables.hpp): a new member
+// of Energies or ContactTotals is a row there (the history row after a resume is written from the
+// restored values).
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "solver/integrators/central_difference.hpp"
+#include "solver/output/output_tables.hpp"
 #include "solver/restart/state_archive.hpp"
 
 namespace tribex::solver {
-namespace {
-
-// The energy ledger and the contact totals as flat arrays. for_each_member is the one list of
-// their members in restart-file order that saving and restoring both follow: a new member of
-// Energies or ContactTotals must be added there (the history row after a resume is written from
-// the restored values). `visit` gets each member by reference (const when saving).
-template <class E, class Visit>
-  requires std::same_as<std::remove_const_t<E>, Energies>
-void for_each_member(E& e, Visit&& visit) {
-  visit(e.kinetic);
-  visit(e.internal);
-  visit(e.hourglass);
-  visit(e.external_work);
-  visit(e.silent_boundary_dissipation);
-  visit(e.damping_dissipation);
-  visit(e.viscous_dissipation);
-  visit(e.contact_work);
-  visit(e.initial);
-  visit(e.plastic_dissipation);
-}
-
-template <class C, class Visit>
-  requires std::same_as<std::remove_const_t<C>, contact::ContactTotals>
-void for_each_member(C& c, Visit&& visit) {
-  visit(c.normal_force);
-  visit(c.tangential_force);
-  visit(c.compressive_force);
-  visit(c.adhesive_force);
-  visit(c.adhesion_energy);
-  visit(c.junction_capacity);
-  visit(c.friction_power);
-  visit(c.area);
-  visit(c.nodes);  // int, stored as a double (exact)
-  visit(c.max_penetration);
-  visit(c.radius_max);
-  visit(c.radius_edge);
-  visit(c.searches);  // int, stored as a double (exact)
-  visit(c.radius_pressure_fit);
-  visit(c.real_area);
-  visit(c.asperity_contacts);
-  visit(c.nominal_area);
-  visit(c.max_penetration_ratio);
-  visit(c.penetration_node);  // int, stored as a double (exact)
-  visit(c.motion_ratio);
-  visit(c.motion_node);  // int, stored as a double (exact)
-}
-
-template <class T>
-std::vector<double> to_array(const T& value) {
-  std::vector<double> a;
-  for_each_member(value, [&a](const auto& member) { a.push_back(static_cast<double>(member)); });
-  return a;
-}
-
-// The inverse of to_array; `what` begins the error for an array of another length.
-template <class T>
-void from_array(const std::vector<double>& a, T& value, const std::string& what) {
-  std::size_t count = 0;
-  for_each_member(value, [&count](const auto&) { ++count; });
-  if (a.size() != count)
-    throw SetupError("restart file: " + what + " " + std::to_string(a.size()) + " terms, expected " + std::to_string(count));
-  value = {};
-  std::size_t k = 0;
-  for_each_member(value, [&](auto& member) { member = static_cast<std::remove_reference_t<decltype(member)>>(a[k++]); });
-}
-
-}  // namespace
 
 void CentralDifference::save_state(StateArchive& a) const {
   a.put_integer("step", step_);
@@ -100,7 +35,7 @@ void CentralDifference::save_state(StateArchive& a) const {
   a.put("force", f_);
   a.put("external_force", f_ext_);
   a.put("reaction", reaction_);
-  a.put("energies", to_array(energies_));
+  a.put("energies", stored_array(energy_fields(), energies_));
   a.put("lagged_power", std::vector<double>{external_power_right_, viscous_power_, silent_power_right_,
                                             damping_power_right_, viscous_power_right_, contact_power_right_,
                                             contact_seconds_});
@@ -113,7 +48,7 @@ void CentralDifference::save_state(StateArchive& a) const {
   if (model_.contact) {
     a.put("contact_x", x_);
     a.put("contact_force", f_contact_);
-    a.put("contact_totals", to_array(contact_totals_));
+    a.put("contact_totals", stored_array(contact_total_fields(), contact_totals_));
     const auto s = model_.contact->state();
     a.put("contact_traction", s.traction);
     a.put("contact_status", s.status);
@@ -159,7 +94,7 @@ void CentralDifference::restore_state(const StateArchive& a) {
   a.get("force", f_);
   a.get("external_force", f_ext_);
   a.get("reaction", reaction_);
-  from_array(a.array("energies"), energies_, "energy ledger has");
+  restore_array(energy_fields(), a.array("energies"), energies_, "the energy ledger");
   std::vector<double> lagged(7);
   a.get("lagged_power", lagged);
   external_power_right_ = lagged[0];
@@ -183,7 +118,7 @@ void CentralDifference::restore_state(const StateArchive& a) {
   if (model_.contact) {
     a.get("contact_x", x_);
     a.get("contact_force", f_contact_);
-    from_array(a.array("contact_totals"), contact_totals_, "contact totals have");
+    restore_array(contact_total_fields(), a.array("contact_totals"), contact_totals_, "the contact totals");
     contact::ContactManager::State s;
     s.traction = a.array("contact_traction");
     s.status = a.array("contact_status");

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The columns of history.csv as one table: name, SI unit, one-line definition and where the value
 // comes from. The header, the row, the units file (history_columns.csv beside history.csv) and
-// `tribex run --list-columns` are all made from it, so a column is added here and nowhere else.
+// `tribex run --list-columns` are all made from it, so a column is added here and nowhere else. A
+// column that shows a field of Energies or ContactTotals takes its unit and definition from that
+// field's row (solver/output/output_tables.hpp), so the two cannot disagree.
 // Node-set columns (<set>_reaction_{x,y,z}, <set>_displacement_{x,y,z}) follow the deck's
-// `reaction force` / `mean displacement` lines and are described by node_set_column().
+// `reaction force` / `mean displacement` lines and are described by describe_history_columns().
 #pragma once
 
 #include <span>
@@ -13,6 +15,7 @@
 
 #include "contact/contact_manager.hpp"
 #include "solver/energy.hpp"
+#include "solver/output/field_table.hpp"
 
 namespace tribex::solver {
 
@@ -32,10 +35,18 @@ struct ColumnInfo {
   std::string definition;  // one line
 };
 
+/// A column is a field of the energy ledger or of the contact totals (its unit and definition are
+/// that field's row in solver/output/output_tables.cpp), or a value derived from the state.
 struct HistoryColumn {
   std::string_view name, unit, definition;
-  double (*value)(const HistoryState&);
+  double (*derived)(const HistoryState&) = nullptr;
+  const Field<Energies>* energy = nullptr;
+  const Field<contact::ContactTotals>* contact = nullptr;
   bool material_dissipation_only = false;  // present only when a block's material dissipates
+
+  double value(const HistoryState& s) const {
+    return energy ? energy->get(s.energies) : contact ? contact->get(s.contact) : derived(s);
+  }
 };
 
 /// The standard columns in file order (after `step`).

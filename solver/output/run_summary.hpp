@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The closing figures of a run, as run_deck returns them and summary.json writes them.
+// The closing figures of a run, as run_deck returns them and summary.json writes them (the keys:
+// summary_fields() in solver/output/output_tables.cpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "solver/energy.hpp"
 #include "solver/guards/run_warning.hpp"
 #include "solver/output/run_identity.hpp"
 
@@ -28,6 +30,9 @@ struct RunSummary {
   double communication_seconds = 0.0;  // rank 0's loop time in halo exchange, surface gather, energy sums
   int elements = 0;
   int nodes = 0;
+  double initial_stable_time_step = 0.0;  // s, the stable step at t = 0 (before the scale factor)
+  int controlling_element = -1;            // the element that set it (0-based; summary.json: 1-based)
+  Energies energies;                       // the energy ledger at the end
   std::vector<RunWarning> warnings;  // set-up and run guards (solver/guards/README.md), in the order raised
 };
 

@@ -4,9 +4,7 @@
 
 #include <string>
 
-#include "solver/energy.hpp"
 #include "solver/output/run_summary.hpp"
-#include "solver/stable_time_step.hpp"
 
 namespace tribex::solver {
 
@@ -16,7 +14,8 @@ namespace tribex::solver {
 /// run's status says why it stopped). Best effort: a reservation that cannot be made is skipped.
 void reserve_summary_json(const std::string& path);
 
-void write_summary_json(const std::string& path, const RunSummary& summary, const Energies& energies,
-                        const StableStep& initial_stable_step);
+/// Writes `summary` (keys, order and units: summary_fields(), solver/output/output_tables.cpp)
+/// through a temporary file and a rename: whole or not at all.
+void write_summary_json(const std::string& path, const RunSummary& summary);
 
 }  // namespace tribex::solver

@@ -4,6 +4,7 @@
 
 #include "inputs/diagnostics.hpp"
 #include "solver/output/history_columns.hpp"
+#include "solver/output/output_tables.hpp"
 #include "solver/run.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
@@ -15,7 +16,7 @@ namespace {
 const char* run_usage =
     "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE [--restart-allow-changed]] [--stop-at-step N]\n"
     "           [--heartbeat SECONDS]\n"
-    "tribex run --list-columns\n"
+    "tribex run --list-columns | --list-summary-keys\n"
     "  Runs an input deck. Outputs go to OUTDIR (default ./<deck name>_output): history.csv,\n"
     "  results.h5 + results.xdmf (open the .xdmf in ParaView), summary.json, log.txt.\n"
     "  --quiet   no progress line and no terminal echo (log.txt is still written)\n"
@@ -29,6 +30,8 @@ const char* run_usage =
     "            (wall time, default 60; 0: none; with --quiet to log.txt only)\n"
     "  --list-columns   print every column history.csv can have, with its unit and definition\n"
     "            (history_columns.csv beside each history.csv lists a run's own), and exit\n"
+    "  --list-summary-keys   print every key of summary.json (energies.NAME, warnings[].NAME for the\n"
+    "            fields of those two) with its unit and definition, and exit\n"
     "  Exit codes: 0 ok, 2 bad input, 3 numerical failure, 130 interrupted (outputs valid).\n";
 
 const char* check_usage =
@@ -43,6 +46,14 @@ void one_deck(tools::Args& args, const char* command) {
                           "' (one DECK; options start with --)");
 }
 
+// One line per row of a summary.json table: key (under `prefix`), unit ("" for text), definition.
+template <class T>
+void print_fields(const std::string& prefix, std::span<const solver::Field<T>> table) {
+  for (const auto& f : table)
+    std::printf("%-36s %-7s %s\n", (prefix + std::string(f.name)).c_str(), std::string(f.unit).c_str(),
+                std::string(f.definition).c_str());
+}
+
 bool args_has_stop(const std::vector<std::string>& argv) {
   for (const auto& a : argv)
     if (a == "--stop-at-step" || a.rfind("--stop-at-step=", 0) == 0) return true;
@@ -52,7 +63,8 @@ bool args_has_stop(const std::vector<std::string>& argv) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& argv) {
-  tools::Args args(argv, "tribex run", run_usage, {"--quiet", "--restart-allow-changed", "--list-columns"});
+  tools::Args args(argv, "tribex run", run_usage, {"--quiet", "--restart-allow-changed", "--list-columns",
+                                                             "--list-summary-keys"});
   if (args.help_requested()) {
     std::fputs(run_usage, stdout);
     return 0;
@@ -61,6 +73,13 @@ int run_command(const std::vector<std::string>& argv) {
     args.finish();
     for (const auto& c : solver::describe_history_columns(true, {"SET"}, {"SET"}))
       std::printf("%-28s %-7s %s\n", c.name.c_str(), c.unit.c_str(), c.definition.c_str());
+    return 0;
+  }
+  if (args.flag("--list-summary-keys")) {
+    args.finish();
+    print_fields("", solver::summary_fields());
+    print_fields("energies.", solver::energy_fields());
+    print_fields("warnings[].", solver::warning_fields());
     return 0;
   }
   const std::string deck_path = args.positional(0, "DECK");

@@ -15,12 +15,26 @@ def dmt_radius(P, R, W, estar):
     return (3 * R * max(P + 2 * math.pi * W * R, 0.0) / (4 * estar)) ** (1 / 3)
 
 
-RADIUS_ESTIMATORS = ("pressure_fit", "edge")  # history columns contact_radius_<estimator>
+# The contact-radius estimators, by the name --radius takes, and their history columns
+# (solver/output/history_columns.cpp; errors on the Hertz decks: verification/hertz/README.md, "The
+# contact-radius estimators"): the elliptic fit of the nodal pressures, the gap sign change on
+# slave-face edges, sqrt(contact_area/pi), and the plain column, which is the edge one where that is
+# defined (a contact axis) and the area one elsewhere.
+RADIUS_COLUMNS = {"pressure_fit": "contact_radius_pressure_fit", "edge": "contact_radius_edge",
+                  "area": "contact_radius_area", "plain": "contact_radius"}
+RADIUS_ESTIMATORS = tuple(RADIUS_COLUMNS)
+
+
+def radius_column(estimator):
+    """The history column of a contact-radius estimator (a key of RADIUS_COLUMNS)."""
+    return RADIUS_COLUMNS[estimator]
 
 
 def print_unchecked_radius(rows, reference, checked):
-    """Prints the error against `reference` (one radius per row) of the contact-radius estimator
-    that is not `checked`, for information."""
-    other = "contact_radius_edge" if checked == "pressure_fit" else "contact_radius_pressure_fit"
-    worst, average = max_and_mean(relative_errors([r[other] for r in rows], reference))
-    print(f"  (not checked: {other} max error {worst:.2%}, mean {average:.2%})")
+    """Prints the error against `reference` (one radius per row) of each contact-radius column that
+    is not the `checked` one, for information."""
+    for name, column in RADIUS_COLUMNS.items():
+        if name == checked or column not in rows[0]:
+            continue
+        worst, average = max_and_mean(relative_errors([r[column] for r in rows], reference))
+        print(f"  (not checked: {column} max error {worst:.2%}, mean {average:.2%})")

@@ -9,7 +9,9 @@ Measured: P = contact_normal_force (compressive minus adhesive: the load the tip
 a = --radius pressure_fit (default): contact_radius_pressure_fit, the zero of the least-squares line
 p^2 = alpha - beta r^2 through the contacting nodes' compressive (penalty) pressures, whose shape in
 the DMT limit is Hertz's at the load P + 2 pi W R (see verification/hertz/README.md); --radius edge:
-contact_radius_edge (gap sign change along the tip-surface edges, interpolated between nodes).
+contact_radius_edge (gap sign change along the tip-surface edges, interpolated between nodes);
+--radius area: contact_radius_area, sqrt(contact_area/pi); --radius plain: contact_radius (the edge
+estimate here: the deck has a contact axis).
 Compared: loading branch, at loads whose DMT radius a_D(P) is at least 5 element sizes and at most
 R/4 (rows chosen by the load, not by the radius under test): a within the tolerance of a_D; pull-off = the most negative P during withdrawal, within
 the tolerance of 2 pi W R. With W = 0 the same comparison is the Hertz one (--work-of-adhesion 0).
@@ -24,7 +26,8 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from contact_theory import RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius  # noqa: E402
+from contact_theory import (RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius,  # noqa: E402
+                            radius_column)
 from history_checks import deepest_index, max_and_mean, pyplot, read_history, relative_errors, save_figure  # noqa: E402
 
 E, NU, R = 161e9, 0.23, 27e-9
@@ -38,7 +41,8 @@ def main():
     p.add_argument("--work-of-adhesion", type=float, default=0.05, help="J/m^2")
     p.add_argument("--tolerance", type=float, default=0.05)
     p.add_argument("--radius", choices=RADIUS_ESTIMATORS, default="pressure_fit",
-                   help="contact-radius estimator checked (history column contact_radius_<this>)")
+                   help="contact-radius estimator checked: pressure_fit, edge, area (history column "
+                        "contact_radius_<this>) or plain (contact_radius)")
     p.add_argument("--energy-tolerance", type=float, default=0.01, help="largest |energy_error| allowed")
     p.add_argument("--plot")
     p.add_argument("--hertz-output", help="output folder of the W = 0 run (verification/hertz) to draw beside")
@@ -48,7 +52,7 @@ def main():
     h = a.element_size * 1e-9
     # Loading branch: up to the deepest tip position.
     deepest = deepest_index(rows)
-    column = f"contact_radius_{a.radius}"
+    column = radius_column(a.radius)
     radius = lambda P: dmt_radius(P, R, W, ESTAR)  # noqa: E731
     used = [r for r in rows[: deepest + 1]
             if 5 * h <= radius(r["contact_normal_force"]) <= 0.25 * R]
