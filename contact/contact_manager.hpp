@@ -74,7 +74,7 @@ class ContactManager {
   /// pair on a fixed master sticks exactly. `prescribed` [node] nonzero for such nodes.
   void set_prescribed_nodes(std::vector<char> prescribed) { prescribed_ = std::move(prescribed); }
 
-  /// Contact axis for contact_radius_max: a point and a unit direction.
+  /// Contact axis the radii are measured from (radius_max, radius_edge, radius_pressure_fit): a point and a unit direction.
   void set_axis(const double point[3], const double direction[3]);
 
   const std::vector<double>& traction() const { return traction_; }

@@ -248,7 +248,7 @@ struct ContactSpec {
   std::vector<InteractionSpec> interactions;
   double penalty_scale_factor = 1.0;        // k_p dt^2 / m_eff, (0, 2]
   std::optional<double> search_margin;      // m; default: mean face edge of the master surface
-  /// `contact axis = px py pz dx dy dz` (point and direction) for contact_radius_max.
+  /// `contact axis = px py pz dx dy dz` (point and direction) from which the contact radii are measured (contact_radius, _edge, _max, _pressure_fit).
   std::optional<std::array<double, 6>> axis;
   /// Largest initial overlap accepted before the run (m); default 0.01 x the mean face edge.
   std::optional<double> initial_overlap_tolerance;

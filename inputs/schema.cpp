@@ -309,7 +309,8 @@ std::vector<BlockSchema> build_table() {
                   real("search margin", dim::length, positive(), false, "",
                        "capture distance of the contact search (default: mean face edge)"),
                   reals("contact axis", dim::length, 6, Range{}, false, "",
-                        "px py pz dx dy dz: point and direction for contact_radius_max"),
+                        "px py pz dx dy dz: point and direction of the axis the contact radii are measured from "
+                        "(contact_radius, _edge, _max, _pressure_fit)"),
                   real("initial overlap tolerance", dim::length, non_negative(), false, "",
                        "largest overlap accepted at t = 0 (default: 1 % of the mean face edge)")},
                  {{"interaction", 1, unlimited}},

@@ -33,7 +33,8 @@ struct RoughSurface {
       {"composite modulus", "Pa", 0.0, true, true, "E* = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) of the asperity contacts"},
       {"summit density", "1/m^2", 0.0, true, false, "eta, summits per nominal area (or a summit file)"},
       {"summit radius", "m", 0.0, true, false, "R_s, mean summit radius (or a summit file)"},
-      {"summit height deviation", "m", 0.0, true, false, "sigma_s, standard deviation of the summit heights (or a summit file)"},
+      {"summit height deviation", "m", 0.0, true, false,
+       "sigma_s, standard deviation of the summit heights (or a summit file)"},
       {"summit file", "path", 0.0, true, false, "discrete population: CSV height_m,radius_m per summit, relative to the deck"},
       {"summit map area", "m^2", 0.0, true, false, "area of the map the summit file came from"},
       {"mean plane offset", "m", -INFINITY, true, false, "d = gap + offset: mean-plane separation when the surfaces touch (default 0)"},
@@ -50,9 +51,11 @@ struct RoughSurface {
     const char* continuous_keys[] = {"summit density", "summit radius", "summit height deviation"};
     if (v.has("summit file")) {
       for (const char* k : continuous_keys)
-        if (v.has(k)) return LawProblem{k, std::string("'") + k + "' is taken from the summit file; remove it or remove 'summit file'"};
+        if (v.has(k))
+          return LawProblem{k, std::string("'") + k + "' is taken from the summit file; remove it or remove 'summit file'"};
       if (!v.has("summit map area"))
-        return LawProblem{"summit file", "'summit file' needs 'summit map area' (area of the map the summits were found on, m^2); add it"};
+        return LawProblem{"summit file",
+                          "'summit file' needs 'summit map area' (area of the map the summits were found on, m^2); add it"};
       return std::nullopt;
     }
     if (v.has("summit map area"))

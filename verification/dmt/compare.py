@@ -28,7 +28,8 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from contact_theory import (RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius,  # noqa: E402
                             radius_column)
-from history_checks import deepest_index, max_and_mean, pyplot, read_history, relative_errors, save_figure  # noqa: E402
+from history_checks import (deepest_index, finish_axes, max_and_mean, pyplot, read_history,  # noqa: E402
+                            relative_errors, save_figure)
 
 E, NU, R = 161e9, 0.23, 27e-9
 ESTAR = effective_modulus(E, NU)
@@ -94,9 +95,7 @@ def main():
                    if 5 * h <= r[column] <= 0.25 * R and 0 < r["contact_normal_force"] <= max(P)]
             ax.plot([x * 1e9 for x, _ in pts], [y * 1e9 for _, y in pts], "s", ms=3, mfc="none", label="FE, W = 0")
         ax.axvline(pull_off * 1e9, color="r", lw=0.8, label=f"FE pull-off {pull_off * 1e9:.2f} nN")
-        ax.set_xlabel("applied load P (nN)")
-        ax.set_ylabel("contact radius a (nm)")
-        ax.legend(fontsize=8)
+        finish_axes(ax, "applied load P (nN)", "contact radius a (nm)")
         save_figure(fig, a.plot)
     return 0 if ok else 1
 

@@ -68,10 +68,9 @@ def main():
               f"(t = {dmin / SIGMA:.2f}), apparent pressure up to {max(p[1] for p in points) / 1e6:.4g} MPa")
         print(f"press: worst |p_FE / p_GW - 1| = {100 * worst_p:.4f} %, worst |A_FE / A_GW - 1| = {100 * worst_a:.4f} % "
               f"(tolerance {100 * TOL:.1f} %); max kinetic/internal energy in the hold {100 * worst_ke:.2e} % (2 %)")
-        if worst_p > TOL:
-            failures.append(f"apparent pressure differs from the direct GW integral by {100 * worst_p:.3f} % (> 0.5 %)")
-        if worst_a > TOL:
-            failures.append(f"real contact area differs from the direct GW integral by {100 * worst_a:.3f} % (> 0.5 %)")
+        for what, worst in (("apparent pressure", worst_p), ("real contact area", worst_a)):
+            if worst > TOL:
+                failures.append(f"{what} differs from the direct GW integral by {100 * worst:.3f} % (> 0.5 %)")
         if worst_ke > 0.02:
             failures.append(f"kinetic energy reaches {100 * worst_ke:.2f} % of internal energy (> 2 %): not quasi-static")
     slide = rows_between(rows, *SLIDE)

@@ -65,10 +65,9 @@ def main():
         failures.append("the press did not bring every summit into contact")
     print(f"{len(points)} rows with {min(contacts)} to {max(contacts)} of {len(pop)} summits in contact: worst |load_FE / "
           f"load_sum - 1| = {100 * worst_load:.4f} %, worst |A_FE / A_sum - 1| = {100 * worst_area:.4f} % (tolerance 1 %)")
-    if worst_load > TOL:
-        failures.append(f"load differs from the direct summit sum by {100 * worst_load:.3f} % (> 1 %)")
-    if worst_area > TOL:
-        failures.append(f"real area differs from the direct summit sum by {100 * worst_area:.3f} % (> 1 %)")
+    for what, worst in (("load", worst_load), ("real area", worst_area)):
+        if worst > TOL:
+            failures.append(f"{what} differs from the direct summit sum by {100 * worst:.3f} % (> 1 %)")
     if a.plot:
         fig, ax = pyplot().subplots(figsize=(5.5, 4))
         ax.plot([p[4] * 1e12 for p in points], [p[2] * 1e6 for p in points], "-", label="direct sum over the summits")

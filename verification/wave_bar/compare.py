@@ -15,7 +15,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import pyplot, read_history, save_figure  # noqa: E402
+from history_checks import finish_axes, pyplot, read_history, save_figure  # noqa: E402
 
 E, NU, RHO = 160e9, 0.22, 2330.0
 L, A, V0, T_RAMP = 100e-9, 1e-18, 1.0, 1e-12
@@ -64,9 +64,7 @@ def main():
         ax.axhline(2 * piston * 1e12, ls="--", c="k", lw=0.8, label="2 rho c v0 A, rho c v0 A")
         ax.axhline(piston * 1e12, ls="--", c="k", lw=0.8)
         ax.axvline(expected_arr * 1e12, ls=":", c="r", lw=0.8, label="L/c_d + t_r/2")
-        ax.set_xlabel("time (ps)")
-        ax.set_ylabel("force (pN)")
-        ax.legend(fontsize=8)
+        finish_axes(ax, "time (ps)", "force (pN)")
         save_figure(fig, a.plot)
     return 0 if ok else 1
 
