@@ -83,6 +83,11 @@ RoughSurface RoughSurface::make(const LawValues& v) {
     q.summit_radius = v.get("summit radius", 0.0);
     q.sigma_s = v.get("summit height deviation", 0.0);
   }
+  if (const auto z0 = v.find("noncontact equilibrium separation")) {
+    q.noncontact_z0 = *z0;
+    q.noncontact_cutoff = v.get("noncontact cutoff", default_noncontact_cutoff_in_z0 * *z0);
+    q.surface_sigma = v.get("surface height deviation", q.sigma_s);
+  }
   r.law = std::make_shared<const RoughSurfaceLaw>(std::move(q));
   r.mean_plane_offset = v.get("mean plane offset", 0.0);
   r.shear.strength = v.get("junction strength", 0.0);
@@ -111,19 +116,22 @@ std::string RoughSurface::describe() const {
                      "; mean-plane separation d = gap + %.4g m; no asperity touches beyond d = %.4g m; no penalty "
                      "contact (the GW pressure is the normal law); the springs A_I dp/dd bound the time step",
                      mean_plane_offset, law->contact_separation());
-  if (!(shear.strength > 0.0)) return std::string(text) + "; no 'junction strength': frictionless";
+  std::string line = text;
+  if (const NoncontactAttraction& a = law->noncontact(); a.active())
+    line += format_line("; attraction of the non-contacting area: W = %.4g J/m^2, z0 = %.4g m, h_c = %.4g m, surface "
+                        "heights sigma = %.4g m, zero beyond d = %.4g m",
+                        a.law().work, a.law().z0, a.law().cutoff, a.sigma(), a.reach());
+  if (!(shear.strength > 0.0)) return line + "; no 'junction strength': frictionless";
   // The shear damper c_I = tau* (A_c/A_0) A_I / v_ref is weak where few asperities touch, so v_ref is
   // not raised: its bound 2 m_eff / c_I enters the stable time step at run time.
-  std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
-                "; shear tau* (A_c/A_0) tanh(|v_t|/v_ref): tau* = %.4g Pa, v_ref = %.4g m/s; the damper bound 2 m_eff / "
-                "c_I enters the time step",
-                shear.strength, shear.reference_speed);
-  return text;
+  return line + format_line("; shear tau* (A_c/A_0) tanh(|v_t|/v_ref): tau* = %.4g Pa, v_ref = %.4g m/s; the damper "
+                            "bound 2 m_eff / c_I enters the time step",
+                            shear.strength, shear.reference_speed);
 }
 
 void RoughSurface::at_point(const ContactPoint& p, PassView& view) const {
   const double d = p.gap + mean_plane_offset;
-  if (d >= law->contact_separation()) return;
+  if (d >= law->reach()) return;
   const RoughSurfaceState s = law->evaluate(d);
   ContactTotals& totals = view.totals;
   const double fn_mag = view.factor * s.pressure * p.area;

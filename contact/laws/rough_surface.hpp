@@ -29,7 +29,8 @@ struct RoughSurface {
   std::string summit_file;                     // for the log
 
   static constexpr std::string_view deck_name = "rough surface";
-  static constexpr std::array<LawKey, 10> keys{{
+  static constexpr double default_noncontact_cutoff_in_z0 = 200.0;
+  static constexpr std::array<LawKey, 13> keys{{
       {"composite modulus", "Pa", 0.0, true, true, "E* = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) of the asperity contacts"},
       {"summit density", "1/m^2", 0.0, true, false, "eta, summits per nominal area (or a summit file)"},
       {"summit radius", "m", 0.0, true, false, "R_s, mean summit radius (or a summit file)"},
@@ -41,6 +42,11 @@ struct RoughSurface {
       {"work of adhesion", "J/m^2", 0.0, true, false, "W of DMT adhesion per asperity (default 0)"},
       {"junction strength", "Pa", 0.0, true, false, "tau* on the real area (default none: frictionless)"},
       {"junction reference speed", "m/s", 0.0, true, false, "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s)"},
+      {"noncontact equilibrium separation", "m", 0.0, true, false,
+       "z0 of the attraction of the non-contacting area (on when given; needs W; docs/theory.md 10.8)"},
+      {"noncontact cutoff", "m", 0.0, true, false, "h_c of the non-contact attraction, > its z0 (default 200 z0)"},
+      {"surface height deviation", "m", 0.0, true, false,
+       "sigma of the surface heights for the non-contact attraction (default: the summit height deviation)"},
   }};
   static constexpr bool penalty = false;  // the GW pressure is the whole normal law
   static constexpr bool mortar = false;
@@ -48,6 +54,7 @@ struct RoughSurface {
 
   /// Continuous (the three summit keys) or discrete (summit file and its map area), not both.
   static std::optional<LawProblem> check(const LawValues& v) {
+    if (auto problem = check_noncontact(v)) return problem;
     const char* continuous_keys[] = {"summit density", "summit radius", "summit height deviation"};
     if (v.has("summit file")) {
       for (const char* k : continuous_keys)
@@ -66,11 +73,30 @@ struct RoughSurface {
                                   "' (from `tribex surface stats`) or a 'summit file'; add it to the interaction"};
     return std::nullopt;
   }
+  /// The non-contact attraction: its z0 switches it on and needs W and continuous summits.
+  static std::optional<LawProblem> check_noncontact(const LawValues& v) {
+    const auto z0 = v.find("noncontact equilibrium separation");
+    for (const char* k : {"noncontact cutoff", "surface height deviation"})
+      if (v.has(k) && !z0)
+        return LawProblem{k, std::string("'") + k + "' belongs to the non-contact attraction; add 'noncontact equilibrium "
+                                                   "separation' or remove the key"};
+    if (!z0) return std::nullopt;
+    if (!(v.get("work of adhesion", 0.0) > 0.0))
+      return LawProblem{"noncontact equilibrium separation",
+                        "the non-contact attraction needs 'work of adhesion' (W of its Lennard-Jones law); add it"};
+    if (v.has("summit file"))
+      return LawProblem{"noncontact equilibrium separation",
+                        "the non-contact attraction needs the continuous summit statistics, not a 'summit file'"};
+    if (const auto cutoff = v.find("noncontact cutoff"); cutoff && !(*cutoff > *z0))
+      return LawProblem{"noncontact cutoff", "'noncontact cutoff' must exceed 'noncontact equilibrium separation'"};
+    return std::nullopt;
+  }
   /// Reads the summit file (LawError naming FILE:LINE) and tabulates the law.
   static RoughSurface make(const LawValues& v);
   std::string describe() const;
-  /// Beyond this gap no asperity touches: the contact separation minus the offset, m.
-  double reach() const { return law->contact_separation() - mean_plane_offset; }
+  /// Beyond this gap the law is zero: its reach (contact separation, or the non-contact attraction's)
+  /// minus the offset, m.
+  double reach() const { return law->reach() - mean_plane_offset; }
 
   void at_point(const ContactPoint& p, PassView& view) const;
 };

@@ -8,20 +8,11 @@
 #include <utility>
 
 #include "contact/rough/asperity_contact.hpp"
+#include "contact/rough/hermite.hpp"
 #include "contact/rough/gw_integrals.hpp"
 
 namespace tribex::contact {
 namespace {
-
-// Cubic Hermite on [0, 1] with end values f0, f1 and end slopes (already times the spacing) m0, m1.
-inline double hermite(double s, double f0, double f1, double m0, double m1) {
-  const double s2 = s * s, s3 = s2 * s;
-  return (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * f1 + (s3 - s2) * m1;
-}
-inline double hermite_slope(double s, double f0, double f1, double m0, double m1) {
-  const double s2 = s * s;
-  return (6 * s2 - 6 * s) * f0 + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * f1 + (3 * s2 - 2 * s) * m1;
-}
 
 // The continuous law from F_0, F_1, F_3/2 and dF_3/2/dt at t = d / sigma_s, with the scales of
 // RoughSurfaceLaw::Scales (computed once: no pow or sqrt per call).
@@ -33,6 +24,16 @@ RoughSurfaceState continuous_state(const RoughSurfaceLaw::Scales& c, double f0, 
   s.pressure = c.hertz * f32 - s.adhesion;
   s.stiffness = -c.hertz * df32 * c.inverse_sigma;  // dt/dd = 1/sigma_s
   return s;
+}
+
+// The attraction of the non-contacting area (rough/noncontact_attraction.hpp) on top of the contact
+// part: it pulls like the DMT term (in `adhesion`, subtracted from p) and its slope counts in the
+// stiffness of the stable step whatever its sign.
+void add_noncontact(RoughSurfaceState& s, const NoncontactAttraction::Value& v) {
+  s.noncontact = v.pressure;
+  s.adhesion += v.pressure;
+  s.pressure -= v.pressure;
+  s.stiffness += std::abs(v.slope);
 }
 
 }  // namespace
@@ -78,10 +79,19 @@ RoughSurfaceLaw::RoughSurfaceLaw(RoughSurfaceParameters parameters) : parameters
     df32_.push_back(-1.5 * gw::gw_integral(0.5, t));  // dF_n/dt = -n F_{n-1}(t)
   }
   contact_separation_ = table_t_max * q.sigma_s;
+  if (q.noncontact_z0 > 0.0)
+    noncontact_ = NoncontactAttraction({q.work_of_adhesion, q.noncontact_z0, q.noncontact_cutoff},
+                                       q.surface_sigma > 0.0 ? q.surface_sigma : q.sigma_s);
 }
 
 RoughSurfaceState RoughSurfaceLaw::evaluate(double d) const {
   if (discrete()) return evaluate_direct(d);
+  RoughSurfaceState s = contact_part(d);
+  if (noncontact_.active()) add_noncontact(s, noncontact_.evaluate(d));
+  return s;
+}
+
+RoughSurfaceState RoughSurfaceLaw::contact_part(double d) const {
   const double t = d * scales_.inverse_sigma;
   if (t >= table_t_max) return {};  // F_0(6) = 1e-9: no contact
   const int last = static_cast<int>(f0_.size()) - 1;
@@ -104,8 +114,10 @@ RoughSurfaceState RoughSurfaceLaw::evaluate_direct(double d) const {
   const auto& q = parameters_;
   if (!discrete()) {
     const double t = d / q.sigma_s;
-    return continuous_state(scales_, gw::gw_integral(0.0, t), gw::gw_integral(1.0, t), gw::gw_integral(1.5, t),
-                            -1.5 * gw::gw_integral(0.5, t));
+    RoughSurfaceState s = continuous_state(scales_, gw::gw_integral(0.0, t), gw::gw_integral(1.0, t),
+                                           gw::gw_integral(1.5, t), -1.5 * gw::gw_integral(0.5, t));
+    if (noncontact_.active()) add_noncontact(s, noncontact_.evaluate_direct(d));
+    return s;
   }
   RoughSurfaceState s;
   double count = 0.0;

@@ -23,7 +23,10 @@
 // first summit below d: cost proportional to the contacts, meant for few-asperity populations).
 #pragma once
 
+#include <algorithm>
 #include <vector>
+
+#include "contact/rough/noncontact_attraction.hpp"
 
 namespace tribex::contact {
 
@@ -37,6 +40,12 @@ struct RoughSurfaceParameters {
   // mean), radii (m) and the area of the map they were found on (m^2).
   std::vector<double> summit_heights, summit_radii;
   double map_area = 0.0;
+  // Attraction of the non-contacting area (continuous only; rough/noncontact_attraction.hpp), on when
+  // noncontact_z0 > 0: the Lennard-Jones law with W, this z0 and cut-off, over Gaussian surface
+  // heights of deviation surface_sigma (0: sigma_s).
+  double noncontact_z0 = 0.0;      // m
+  double noncontact_cutoff = 0.0;  // h_c, m (> z0)
+  double surface_sigma = 0.0;      // m
 };
 
 /// The law at one separation, per unit nominal area.
@@ -45,7 +54,8 @@ struct RoughSurfaceState {
   double adhesion = 0.0;           // the DMT pull 2 pi W R per contacting asperity, per nominal area (Pa, >= 0)
   double area_fraction = 0.0;      // A_c / A_0
   double contact_density = 0.0;    // asperity contacts per nominal area N/A_0, 1/m^2
-  double stiffness = 0.0;          // -dp/dd, Pa/m (Hertz part; >= 0), for the stable time step
+  double stiffness = 0.0;          // -dp/dd, Pa/m (Hertz part; >= 0) + |slope| of the non-contact term, for the stable time step
+  double noncontact = 0.0;         // attraction of the non-contacting area (Pa, >= 0; included in `adhesion`)
 };
 
 class RoughSurfaceLaw {
@@ -61,8 +71,11 @@ class RoughSurfaceLaw {
   /// (discrete): the reference the table is checked against; too slow for the step loop.
   RoughSurfaceState evaluate_direct(double d) const;
 
-  /// Beyond this separation no asperity touches (p = 0): t_max sigma_s, or the highest summit.
+  /// Beyond this separation no asperity touches: t_max sigma_s, or the highest summit.
   double contact_separation() const { return contact_separation_; }
+  /// Beyond this separation p = 0: the contact separation, or the reach of the non-contact attraction.
+  double reach() const { return noncontact_.active() ? std::max(contact_separation_, noncontact_.reach()) : contact_separation_; }
+  const NoncontactAttraction& noncontact() const { return noncontact_; }
   bool discrete() const { return !heights_.empty(); }
   const RoughSurfaceParameters& parameters() const { return parameters_; }
   /// Dimensional factors of the continuous law: N/A_0 = count F_0, A_c/A_0 = area F_1,
@@ -81,6 +94,8 @@ class RoughSurfaceLaw {
   std::vector<double> f0_, f1_, f32_, df0_, df1_, df32_;
   // discrete: heights above the mean summit height (descending) and the matching radii
   std::vector<double> heights_, radii_;
+  NoncontactAttraction noncontact_;
+  RoughSurfaceState contact_part(double d) const;  // the continuous GW law from the table
 };
 
 }  // namespace tribex::contact

@@ -89,3 +89,40 @@ TEST(SurfaceCommand, LevelOptionIsReportedAndSetsTheRms) {
   EXPECT_NEAR(rms_about_mean(map), 226.4e-9, 0.1e-9);
   EXPECT_EQ(run_surface({"stats", file, "--level", "tilt"}), 2);
 }
+
+// `tribex gw curve` with the attraction of the non-contacting area (docs/theory.md 10.8): the column
+// noncontact_load is the DMT load minus S x int_0^{C - Z} [r^3 - r^9 - shift] phi((t - g)/G)/G dg,
+// r = Z/(g + Z), checked against a plain trapezoid sum of that integral (2e5 intervals).
+TEST(GwCommand, NoncontactLoadIsTheDmtLoadMinusTheAttraction) {
+  const std::string csv = testing::TempDir() + "gw_noncontact.csv";
+  const double S = 0.7, Z = 0.13, C = 26.0, G = 1.2;
+  ASSERT_EQ(run_gw({"curve", "--t-min", "3", "--t-max", "5", "--step", "1", "--beta", "0.05", "--noncontact-scale", "0.7",
+                    "--noncontact-z0", "0.13", "--surface-sigma", "1.2", "--csv", csv}),
+            0);
+  std::FILE* f = std::fopen(csv.c_str(), "r");
+  ASSERT_NE(f, nullptr);
+  char header[256];
+  ASSERT_NE(std::fgets(header, sizeof header, f), nullptr);
+  EXPECT_EQ(std::string(header), "t,count,area,load,dmt_load,noncontact_load\n");
+  auto law = [&](double g) {
+    const double r3 = std::pow(Z / (g + Z), 3), c3 = std::pow(Z / C, 3);
+    return r3 - r3 * r3 * r3 - (c3 - c3 * c3 * c3);
+  };
+  int rows = 0;
+  double t, count, area, load, dmt, noncontact;
+  while (std::fscanf(f, "%lf,%lf,%lf,%lf,%lf,%lf", &t, &count, &area, &load, &dmt, &noncontact) == 6) {
+    const int n = 200000;
+    const double h = (C - Z) / n;
+    double sum = 0.0;
+    for (int i = 0; i <= n; ++i) {
+      const double g = i * h, x = (t - g) / G;
+      sum += (i == 0 || i == n ? 0.5 : 1.0) * law(g) * std::exp(-0.5 * x * x) / (G * std::sqrt(2 * M_PI));
+    }
+    const double attraction = S * sum * h;
+    EXPECT_NEAR(dmt - noncontact, attraction, 1e-5 * attraction) << t;
+    ++rows;
+  }
+  std::fclose(f);
+  EXPECT_EQ(rows, 3);
+  EXPECT_EQ(run_gw({"curve", "--noncontact-scale", "1", "--noncontact-z0", "-0.1"}), 2);
+}

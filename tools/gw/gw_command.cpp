@@ -10,6 +10,7 @@
 #include "tools/common/errors.hpp"
 #include "tools/common/text_file.hpp"
 #include "contact/rough/gw_integrals.hpp"
+#include "contact/rough/noncontact_attraction.hpp"
 #include "tools/gw/gw_models.hpp"
 
 namespace tribex::cli {
@@ -49,6 +50,20 @@ std::vector<double> population(Args& a) {
                     : gw::gaussian_population(static_cast<std::size_t>(n), static_cast<std::uint64_t>(seed));
 }
 
+// The attraction of the non-contacting area in the tool's units (lengths / sigma_s, pressure / the load
+// scale per summit density): the law's own class with W chosen so that 8 W / (3 z0) = S.
+struct NoncontactOption {
+  contact::NoncontactAttraction attraction;
+};
+NoncontactOption noncontact_option(Args& a) {
+  const double scale = a.real("--noncontact-scale", 0.0), z0 = a.real("--noncontact-z0", 0.0);
+  const double cutoff = a.real("--noncontact-cutoff", 200.0 * z0), sigma = a.real("--surface-sigma", 1.0);
+  if (scale == 0.0 && z0 == 0.0) return {};
+  if (!(scale > 0.0 && z0 > 0.0 && cutoff > z0 && sigma > 0.0))
+    throw BadInput("--noncontact-scale and --noncontact-z0 must be positive, --noncontact-cutoff above z0, --surface-sigma positive");
+  return {contact::NoncontactAttraction({3.0 * scale * z0 / 8.0, z0, cutoff}, sigma)};
+}
+
 int fn(const std::vector<std::string>& argv) {
   const char* usage =
       "usage: tribex gw fn [--t-min -3] [--t-max 8] [--step 0.1] [--csv FILE]\n"
@@ -78,12 +93,18 @@ int curve(const std::vector<std::string>& argv) {
       "Columns t, count, area, load of the continuous GW; with --population N also those of a discrete\n"
       "population of N Gaussian summit heights (random, seeded, or --stratified at the normal quantiles);\n"
       "with --beta the DMT applied load, beta = 3 pi W sqrt(R) / (2 E* sigma_s^{3/2}), and --z0 (units of\n"
-      "sigma_s) adds the 3-9 attraction of the asperities out of contact.\n";
+      "sigma_s) adds the 3-9 attraction of the asperities out of contact.\n"
+      "With --noncontact-scale S --noncontact-z0 Z [--noncontact-cutoff C] [--surface-sigma G] the column\n"
+      "noncontact_load is the (DMT) load minus the attraction of the non-contacting area (docs/theory.md 10.8;\n"
+      "the rough-surface law's option): S = (8 W / (3 z0)) / (eta (4/3) E* sqrt(R) sigma_s^{3/2}) the\n"
+      "Lennard-Jones traction scale in load units per summit density, Z, C (default 200 Z) and G (the surface\n"
+      "height deviation, default 1) in units of sigma_s; evaluated by quadrature.\n";
   Args a(argv, "tribex gw curve", usage, {"--stratified"});
   if (a.help_requested()) { std::fputs(usage, stdout); return tools::exit_ok; }
   const Range r = t_range(a, -3.0, 4.0, 0.05);
   const auto pop = population(a);
   const double beta = a.real("--beta", 0.0), z0 = a.real("--z0", 0.0);
+  const NoncontactOption nc = noncontact_option(a);
   const std::string csv = a.text("--csv", "");
   a.finish();
   if (beta < 0 || z0 < 0) throw BadInput("--beta and --z0 must be >= 0");
@@ -91,6 +112,7 @@ int curve(const std::vector<std::string>& argv) {
   o << "t,count,area,load";
   if (!pop.empty()) o << ",discrete_count,discrete_area,discrete_load";
   if (beta > 0) o << ",dmt_load" << (pop.empty() ? "" : ",discrete_dmt_load");
+  if (nc.attraction.active()) o << ",noncontact_load";
   o << "\n";
   char b[128];
   for (long i = 0; r.lo + static_cast<double>(i) * r.step <= r.hi + 1e-12; ++i) {
@@ -110,6 +132,11 @@ int curve(const std::vector<std::string>& argv) {
         std::snprintf(b, sizeof b, ",%.12g", gw::dmt_gw_discrete(pop, t, beta, z0).load);
         o << b;
       }
+    }
+    if (nc.attraction.active()) {
+      const double contact = beta > 0 ? gw::dmt_gw(t, beta, z0).load : c.load;
+      std::snprintf(b, sizeof b, ",%.12g", contact - nc.attraction.evaluate_direct(t).pressure);
+      o << b;
     }
     o << "\n";
   }

@@ -8,7 +8,7 @@
 #
 #   foot_zmax: pressure p = N / (200 x 10 um) ramped over 0-200 ns, then held
 #   +------------------------------------------+  block `foot` 200 x 10 x 2 um; foot_xmin pulled in +x at
-#   +------------------------------------------+  0.01 m/s from 600 ns (prescribed displacement: the foot's
+#   +------------------------------------------+  0.05 m/s from 600 ns (prescribed displacement: the foot's
 #  +--------------------------------------------+ own axial stiffness, 16 kN/m, is the pull spring)
 #  +--------------------------------------------+ block `counter`, every node fixed (the counterface)
 #
@@ -37,7 +37,7 @@ begin sierra clamp_friction
     begin values
       0     0
       600   0
-      1200  6
+      1200  30
     end values
   end function pull
   begin property specification for material polysilicon
