@@ -10,6 +10,7 @@ namespace tribex::cli {
 
 int run_command(const std::vector<std::string>& args);    // tools/cli/run_command.cpp
 int check_command(const std::vector<std::string>& args);  // tools/cli/run_command.cpp
+int keys_command(const std::vector<std::string>& args);   // tools/cli/keys_command.cpp
 int bench_command(const std::vector<std::string>& args);  // tools/bench/bench_command.cpp
 
 int gw_command(const std::vector<std::string>& args);       // tools/gw/gw_command.cpp
