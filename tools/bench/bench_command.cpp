@@ -66,10 +66,7 @@ int bench_command(const std::vector<std::string>& argv) {
   if (!argv.empty() && argv[0] == "broad-phase")
     return broad_phase_bench(std::vector<std::string>(argv.begin() + 1, argv.end()));
   tools::Args args(argv, "tribex bench", usage);
-  if (args.help_requested()) {
-    std::fputs(usage, stdout);
-    return 0;
-  }
+  if (args.answered_help()) return tools::exit_ok;
   const std::string what = args.positional(0, "benchmark name (block)");
   const long n = args.integer("--n", 20);
   const long steps = args.integer("--steps", 200);

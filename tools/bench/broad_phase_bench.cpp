@@ -20,10 +20,7 @@ namespace tribex::cli {
 int broad_phase_bench(const std::vector<std::string>& argv) {
   const char* usage = "tribex bench broad-phase [--faces N] [--repeat R]\n";
   tools::Args args(argv, "tribex bench broad-phase", usage);
-  if (args.help_requested()) {
-    std::fputs(usage, stdout);
-    return 0;
-  }
+  if (args.answered_help()) return tools::exit_ok;
   const long faces = args.integer("--faces", 10000);
   const long repeat = args.integer("--repeat", 5);
   args.finish();

@@ -24,10 +24,7 @@ int contact_bench(const std::vector<std::string>& argv) {
       "tribex bench contact [--faces N] [--steps S] [--enforcement node-to-face|mortar]\n"
       "  Times contact search + enforcement on two flat surfaces with about N faces each (default 10000).\n";
   tools::Args args(argv, "tribex bench contact", usage);
-  if (args.help_requested()) {
-    std::fputs(usage, stdout);
-    return 0;
-  }
+  if (args.answered_help()) return tools::exit_ok;
   const long faces = args.integer("--faces", 10000);
   const long steps = args.integer("--steps", 200);
   const std::string enforcement = args.text("--enforcement", "node-to-face");

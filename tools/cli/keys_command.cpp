@@ -19,10 +19,7 @@ int keys_command(const std::vector<std::string>& argv) {
       "each key's value type, unit dimension, default and description. BLOCK (words, e.g. 'interaction' or\n"
       "'generated asperity') prints that block only; --markdown prints the text of docs/deck_reference.md.\n";
   tools::Args a(argv, "tribex keys", usage, {"--markdown"});
-  if (a.help_requested()) {
-    std::fputs(usage, stdout);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const bool markdown = a.flag("--markdown");
   std::string block;
   for (std::size_t i = 0; i < a.positional_count(); ++i) {

@@ -65,10 +65,7 @@ bool args_has_stop(const std::vector<std::string>& argv) {
 int run_command(const std::vector<std::string>& argv) {
   tools::Args args(argv, "tribex run", run_usage, {"--quiet", "--restart-allow-changed", "--list-columns",
                                                              "--list-summary-keys"});
-  if (args.help_requested()) {
-    std::fputs(run_usage, stdout);
-    return 0;
-  }
+  if (args.answered_help()) return tools::exit_ok;
   if (args.flag("--list-columns")) {
     args.finish();
     for (const auto& c : solver::describe_history_columns(true, {"SET"}, {"SET"}))
@@ -109,10 +106,7 @@ int run_command(const std::vector<std::string>& argv) {
 
 int check_command(const std::vector<std::string>& argv) {
   tools::Args args(argv, "tribex check", check_usage);
-  if (args.help_requested()) {
-    std::fputs(check_usage, stdout);
-    return 0;
-  }
+  if (args.answered_help()) return tools::exit_ok;
   const std::string deck_path = args.positional(0, "DECK");
   args.finish();
   one_deck(args, "tribex check");

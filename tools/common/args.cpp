@@ -2,6 +2,7 @@
 #include "tools/common/args.hpp"
 
 #include <charconv>
+#include <cstdio>
 #include <sstream>
 
 #include "inputs/did_you_mean.hpp"
@@ -32,6 +33,11 @@ Args::Args(std::vector<std::string> argv, std::string command, std::string usage
       positionals_.push_back(a);
     }
   }
+}
+
+bool Args::answered_help() const {
+  if (help_) std::fputs(usage_.c_str(), stdout);
+  return help_;
 }
 
 std::optional<std::string> Args::take(const std::string& name, bool is_flag) {

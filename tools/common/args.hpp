@@ -27,6 +27,9 @@ class Args {
        std::set<std::string> flags = {});
 
   bool help_requested() const { return help_; }
+  /// Prints the usage text to stdout when --help/-h was given; returns whether it was (the caller then
+  /// returns exit_ok: `if (a.answered_help()) return tools::exit_ok;`).
+  bool answered_help() const;
   const std::string& usage() const { return usage_; }
 
   bool flag(const std::string& name);

@@ -134,10 +134,7 @@ void plot_fit(const std::string& png, const FrictionModel& model, const Friction
 int friction_command(const std::vector<std::string>& argv) {
   const std::string cmd = "tribex fit friction";
   Args a(argv, cmd, friction_usage, {"--json", "--no-plot", "--pressure-dependent", "--fit-coating-modulus"});
-  if (a.help_requested()) {
-    std::printf("%s", friction_usage);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string file = a.positional(0, "DATA.csv");
   FrictionSetup setup = parse_setup(a, cmd);
   setup.free_coating_modulus = a.flag("--fit-coating-modulus");
@@ -251,10 +248,7 @@ int friction_command(const std::vector<std::string>& argv) {
 int synth_command(const std::vector<std::string>& argv) {
   const std::string cmd = "tribex fit synth";
   Args a(argv, cmd, synth_usage, {"--pressure-dependent"});
-  if (a.help_requested()) {
-    std::printf("%s", synth_usage);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const auto out = a.text("-o");
   const FrictionSetup setup = parse_setup(a, cmd);
   const auto tau = a.quantity("--tau", dim::pressure);

@@ -106,10 +106,7 @@ void plot_trace(const std::string& png, const std::string& title, const std::vec
 // ---------------------------------------------------------------- calibrate
 int calibrate(const std::vector<std::string>& argv) {
   Args a(argv, "tribex friction-test calibrate", calibrate_usage, {"--json"});
-  if (a.help_requested()) {
-    std::printf("%s", calibrate_usage);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const bool json = a.flag("--json");
   const double mass = a.quantity("--mass", 2.25e-9, dim::mass);
   const double mass_sigma = a.quantity("--mass-uncertainty", mass == 2.25e-9 ? 0.15e-9 : 0.0, dim::mass);
@@ -201,10 +198,7 @@ int calibrate(const std::vector<std::string>& argv) {
 // ---------------------------------------------------------------- static
 int static_friction(const std::vector<std::string>& argv) {
   Args a(argv, "tribex friction-test static", static_usage, {"--json"});
-  if (a.help_requested()) {
-    std::printf("%s", static_usage);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const bool json = a.flag("--json");
   const auto stiffness = a.quantity("--stiffness", dim::stiffness);
   const double stiffness_sigma = a.quantity("--stiffness-uncertainty", 0.0, dim::stiffness);
@@ -307,10 +301,7 @@ int static_friction(const std::vector<std::string>& argv) {
 // ---------------------------------------------------------------- dynamic
 int dynamic_friction(const std::vector<std::string>& argv) {
   Args a(argv, "tribex friction-test dynamic", dynamic_usage, {"--json"});
-  if (a.help_requested()) {
-    std::printf("%s", dynamic_usage);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string cmd = "tribex friction-test dynamic";
   const bool json = a.flag("--json");
   Calibration cal;
@@ -426,10 +417,7 @@ int dynamic_friction(const std::vector<std::string>& argv) {
 // ---------------------------------------------------------------- synth
 int synth(const std::vector<std::string>& argv) {
   Args a(argv, "tribex friction-test synth", synth_usage);
-  if (a.help_requested()) {
-    std::printf("%s", synth_usage);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string cmd = "tribex friction-test synth";
   const std::string kind = a.positional(0, "KIND (ringdown, dynamic or static)");
   const auto out = a.text("-o");

@@ -69,7 +69,7 @@ int fn(const std::vector<std::string>& argv) {
       "usage: tribex gw fn [--t-min -3] [--t-max 8] [--step 0.1] [--csv FILE]\n"
       "Columns t, F_0, F_1/2, F_1, F_3/2 (closed forms for n = 0, 1; quadrature otherwise, ~1e-14 relative).\n";
   Args a(argv, "tribex gw fn", usage);
-  if (a.help_requested()) { std::fputs(usage, stdout); return tools::exit_ok; }
+  if (a.answered_help()) return tools::exit_ok;
   const Range r = t_range(a, -3.0, 8.0, 0.1);
   const std::string csv = a.text("--csv", "");
   a.finish();
@@ -100,7 +100,7 @@ int curve(const std::vector<std::string>& argv) {
       "Lennard-Jones traction scale in load units per summit density, Z, C (default 200 Z) and G (the surface\n"
       "height deviation, default 1) in units of sigma_s; evaluated by quadrature.\n";
   Args a(argv, "tribex gw curve", usage, {"--stratified"});
-  if (a.help_requested()) { std::fputs(usage, stdout); return tools::exit_ok; }
+  if (a.answered_help()) return tools::exit_ok;
   const Range r = t_range(a, -3.0, 4.0, 0.05);
   const auto pop = population(a);
   const double beta = a.real("--beta", 0.0), z0 = a.real("--z0", 0.0);
@@ -151,7 +151,7 @@ int tangential(const std::vector<std::string>& argv) {
       "t = d/sigma_s: each asperity sticks (Mindlin stiffness 8 G* a) until tau* pi R w, then slides.\n"
       "Full sliding gives F_1(t), i.e. tau* times the real contact area.\n";
   Args a(argv, "tribex gw tangential", usage, {"--stratified"});
-  if (a.help_requested()) { std::fputs(usage, stdout); return tools::exit_ok; }
+  if (a.answered_help()) return tools::exit_ok;
   const double t = a.real("--t", 1.0), smax = a.real("--slip-max", 3.0);
   const long pts = a.integer("--points", 301);
   const auto pop = population(a);
@@ -184,7 +184,7 @@ int figures(const std::vector<std::string>& argv) {
       "the continuous curve), fig4_7_8.csv (Hertz and DMT GW) and fig4_11.csv (tangential, continuous and\n"
       "a discrete population of 100 contacting asperities) into DIR.\n";
   Args a(argv, "tribex gw figures", usage);
-  if (a.help_requested()) { std::fputs(usage, stdout); return tools::exit_ok; }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string out = a.text("--out", "");
   const long seed = a.integer("--seed", 1);
   const double beta = a.real("--beta", 0.2);

@@ -56,10 +56,7 @@ std::optional<std::array<double, 4>> rectangle(Args& a, const std::string& name)
 
 int afm(const std::vector<std::string>& argv) {
   Args a(argv, "tribex mesh afm", afm_usage);
-  if (a.help_requested()) {
-    std::fputs(afm_usage, stdout);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string file = a.positional(0, "FILE");
   const long channel = a.integer("--channel", -1);
   mesh::afm::AfmMeshSpec spec;

@@ -166,10 +166,7 @@ Profiles make_profiles(tools::Args& a, double dx, std::uint64_t seed) {
 int pstd_command(const std::vector<std::string>& args) {
   namespace dim = inputs::dim;
   tools::Args a(args, "tribex pstd", usage, {"--study", "--no-plots", "--quiet"});
-  if (a.help_requested()) {
-    std::fputs(usage, stdout);
-    return tools::exit_ok;
-  }
+  if (a.answered_help()) return tools::exit_ok;
   // 1. Everything is read and checked before anything is computed or written.
   const double dx = a.quantity("--sampling", 1e-9, dim::length);
   const long seed_arg = a.integer("--seed", 1);

@@ -149,7 +149,7 @@ void write_summits(const std::string& path, const mesh::afm::HeightMap& map, con
 
 int stats(const std::vector<std::string>& argv) {
   Args a(argv, "tribex surface stats", stats_usage, {"--json", "--median", "--smooth"});
-  if (a.help_requested()) { std::fputs(stats_usage, stdout); return tools::exit_ok; }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string file = a.positional(0, "FILE");
   const int channel = channel_option(a, "--channel");
   const Preprocess pre = preprocess_options(a);
@@ -209,7 +209,7 @@ int stats(const std::vector<std::string>& argv) {
 
 int mccool(const std::vector<std::string>& argv) {
   Args a(argv, "tribex surface mccool", mccool_usage, {"--json", "--median", "--smooth"});
-  if (a.help_requested()) { std::fputs(mccool_usage, stdout); return tools::exit_ok; }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string f1 = a.positional(0, "FILE1");
   const auto f2 = a.optional_positional(1);
   const int c1 = channel_option(a, "--channel1"), c2 = channel_option(a, "--channel2");
@@ -295,7 +295,7 @@ const char* contact_usage =
 
 int contact(const std::vector<std::string>& argv) {
   Args a(argv, "tribex surface contact", contact_usage, {"--median", "--smooth"});
-  if (a.help_requested()) { std::fputs(contact_usage, stdout); return tools::exit_ok; }
+  if (a.answered_help()) return tools::exit_ok;
   const std::string file = a.positional(0, "FILE");
   const int channel = channel_option(a, "--channel");
   const Preprocess pre = preprocess_options(a);
