@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <unordered_map>
@@ -21,6 +22,19 @@
 namespace tribex::mesh {
 
 namespace {
+
+/// Groups the members of named sets by the sets that hold them: key = the names (sorted), value = the
+/// members in no other combination. Every member appears under exactly one key.
+template <class Member>
+std::map<std::vector<std::string>, std::vector<Member>> shared_memberships(
+    const std::map<std::string, std::vector<Member>>& sets) {
+  std::map<Member, std::vector<std::string>> holders;
+  for (const auto& [name, members] : sets)
+    for (const Member& m : members) holders[m].push_back(name);  // names arrive sorted (std::map order)
+  std::map<std::vector<std::string>, std::vector<Member>> groups;
+  for (const auto& [member, names] : holders) groups[names].push_back(member);
+  return groups;
+}
 
 constexpr int gmsh_hex8 = 5;
 constexpr int gmsh_quad4 = 3;
@@ -409,11 +423,15 @@ void write_gmsh(const Mesh& mesh, const std::string& path) {
       gmsh::model::setPhysicalName(3, group, block.name);
     }
     next_element_tag = static_cast<std::size_t>(mesh.element_count()) + 1;
+    std::map<std::string, std::vector<int>> surfaces_of, points_of;  // set name -> its gmsh entities
 
+    // gmsh holds each element once: a face in several side sets (substrate_track inside substrate_top,
+    // substrate_xmin inside substrate_sides) goes into one surface entity per combination of sets, and
+    // each set's physical group names the entities it covers, so `gmsh -check` finds no duplicates.
+    // The same for the points of the extra node sets.
     int surface = 0;
-    for (const auto& [name, sides] : mesh.side_sets) {
-      ++surface;
-      gmsh::model::addDiscreteEntity(2, surface);
+    for (const auto& [names, sides] : shared_memberships(mesh.side_sets)) {
+      gmsh::model::addDiscreteEntity(2, ++surface);
       std::vector<std::size_t> tags(sides.size()), conn(sides.size() * 4);
       for (std::size_t s = 0; s < sides.size(); ++s) {
         tags[s] = next_element_tag++;
@@ -421,22 +439,37 @@ void write_gmsh(const Mesh& mesh, const std::string& path) {
         for (int k = 0; k < 4; ++k) conn[4 * s + k] = static_cast<std::size_t>(n[k]) + 1;
       }
       gmsh::model::mesh::addElementsByType(surface, gmsh_quad4, tags, conn);
-      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}, surface), name);
+      for (const std::string& name : names) surfaces_of[name].push_back(surface);
     }
+    for (const auto& [name, sides] : mesh.side_sets)
+      if (!surfaces_of.count(name)) {  // an empty set keeps its name on an empty entity
+        gmsh::model::addDiscreteEntity(2, ++surface);
+        surfaces_of[name].push_back(surface);
+      }
+    for (const auto& [name, entities] : surfaces_of)
+      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, entities), name);
 
+    std::map<std::string, std::vector<int>> extra_node_sets;
+    for (const auto& [name, nodes] : mesh.node_sets)
+      if (!mesh.side_sets.count(name) || mesh.side_set_nodes(name) != nodes) extra_node_sets[name] = nodes;  // else rebuilt from the side set
     int point = 0;
-    for (const auto& [name, nodes] : mesh.node_sets) {
-      if (mesh.side_sets.count(name) && mesh.side_set_nodes(name) == nodes) continue;  // rebuilt from the side set
-      ++point;
-      gmsh::model::addDiscreteEntity(0, point);
+    for (const auto& [names, nodes] : shared_memberships(extra_node_sets)) {
+      gmsh::model::addDiscreteEntity(0, ++point);
       std::vector<std::size_t> tags(nodes.size()), conn(nodes.size());
       for (std::size_t i = 0; i < nodes.size(); ++i) {
         tags[i] = next_element_tag++;
         conn[i] = static_cast<std::size_t>(nodes[i]) + 1;
       }
       gmsh::model::mesh::addElementsByType(point, gmsh_point, tags, conn);
-      gmsh::model::setPhysicalName(0, gmsh::model::addPhysicalGroup(0, {point}, point), name);
+      for (const std::string& name : names) points_of[name].push_back(point);
     }
+    for (const auto& [name, nodes] : extra_node_sets)
+      if (!points_of.count(name)) {
+        gmsh::model::addDiscreteEntity(0, ++point);
+        points_of[name].push_back(point);
+      }
+    for (const auto& [name, entities] : points_of)
+      gmsh::model::setPhysicalName(0, gmsh::model::addPhysicalGroup(0, entities), name);
 
     gmsh::option::setNumber("Mesh.Binary", 1);
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <compare>
 #include <map>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ struct Side {
   int element = 0;
   int face = 0;  // 0..5, see hex8_face_nodes
   friend bool operator==(const Side&, const Side&) = default;
+  friend auto operator<=>(const Side&, const Side&) = default;  // element, then face
 };
 
 struct Block {
