@@ -105,6 +105,7 @@ struct GeneratedAsperitySpec {
   bool tip_only = false;  // `substrate = none`: blocks and sets of the tip only (over an `afm surface`)
   bool paraboloid = false;  // `tip profile = paraboloid`: z = r^2/(2R) instead of the sphere
   std::optional<std::array<double, 3>> apex;  // `apex position`: where the apex goes, m (default (0, 0, gap))
+  std::optional<double> gap_above_surface;    // m: tip lowered to this vertical gap over the `afm surface`
   SourceLocation where;
 };
 
@@ -121,6 +122,7 @@ struct AfmSurfaceSpec {
   double coating_thickness = 0.0;   // m, >= 0 (0: no coating block)
   int coating_layers = 6;           // 1 to 100
   double grading_ratio = 1.3;       // in [1, 1.3]
+  bool interpolate_small_window = false;  // `small window = interpolate`
   SourceLocation where;
 };
 

@@ -241,6 +241,11 @@ class Builder {
       g.tip_only = word(*a, "substrate") == "none";
       g.paraboloid = word(*a, "tip profile") == "paraboloid";
       if (auto v = get(*a, "apex position"); v && v->numbers.size() == 3) g.apex = {{v->numbers[0], v->numbers[1], v->numbers[2]}};
+      g.gap_above_surface = optional_real(*a, "gap above surface");
+      if (g.gap_above_surface && (!g.tip_only || afm.empty()))
+        error(where(*a, "gap above surface"), *a,
+              "'gap above surface' places a tip over an 'afm surface': it needs 'substrate = none' and a 'begin afm "
+              "surface' in the same finite element model; use 'gap' for the generated substrate");
       m.asperity = g;
     }
     if (db) {
@@ -309,6 +314,7 @@ class Builder {
     spec.coating_thickness = real(a, "coating thickness", 0.0);
     spec.coating_layers = static_cast<int>(real(a, "coating layers", 6));
     spec.grading_ratio = real(a, "grading ratio", 1.3);
+    spec.interpolate_small_window = word(a, "small window") == "interpolate";
     return spec;
   }
 

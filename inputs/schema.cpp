@@ -221,7 +221,10 @@ std::vector<BlockSchema> build_table() {
                 choice("substrate", ValueKind::enumeration, {"generated", "none"}, false, "generated",
                        "none: the tip only (block tip), e.g. above an 'afm surface' in the same model"),
                 reals("apex position", dim::length, 3, Range{}, false, "",
-                      "x y z of the apex (default 0 0 gap); the substrate top is then at z - gap")},
+                      "x y z of the apex (default 0 0 gap); the substrate top is then at z - gap"),
+                real("gap above surface", dim::length, non_negative(), false, "",
+                     "with substrate = none over an 'afm surface': lower the tip (apex x y from 'apex position', "
+                     "its z not used) until its smallest vertical distance to the surface is this")},
                {},
                false, "sphere-tipped asperity above a substrate (blocks tip, substrate, coating)"});
 
@@ -235,7 +238,9 @@ std::vector<BlockSchema> build_table() {
                 real("coating thickness", dim::length, non_negative(), false, "0", "bonded coating block on top (0: none)"),
                 integer("coating layers", {1.0, 100.0, false, false}, false, "6", "elements through the coating"),
                 real("grading ratio", dim::none, {1.0, 1.3, false, false}, false, "1.3",
-                     "size ratio of neighbours away from the track and with depth")},
+                     "size ratio of neighbours away from the track and with depth"),
+                choice("small window", ValueKind::enumeration, {"refuse", "interpolate"}, false, "refuse",
+                       "a window under 4 pixels a side: an error, or the spline between the pixels meshed anyway")},
                {},
                false, "an all-hex substrate block (and coating) on an AFM height map"});
 

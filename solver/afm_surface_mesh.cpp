@@ -16,6 +16,7 @@ mesh::Mesh build_afm_surface_mesh(const inputs::AfmSurfaceSpec& spec) {
   m.coating_thickness = spec.coating_thickness;
   m.coating_layers = spec.coating_layers;
   m.grading_ratio = spec.grading_ratio;
+  m.interpolate_small_window = spec.interpolate_small_window;
   try {
     return mesh::afm::mesh_afm_file(spec.file, spec.channel, m);
   } catch (const mesh::MeshError& e) {

@@ -10,6 +10,7 @@
 #include "mesh/box.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/vertical_gap.hpp"
 #include "solver/afm_surface_mesh.hpp"
 #include "solver/contact_setup.hpp"
 #include "solver/errors.hpp"
@@ -79,6 +80,17 @@ void area_vector(const double* x, const std::array<int, 4>& n, double a[3]) {
   a[2] = 0.5 * (d1[0] * d2[1] - d1[1] * d2[0]);
 }
 
+// `gap above surface`: the tip (nodes from first_tip_node on) moves vertically so that its bottom face
+// (tip_surface) is `gap` above the AFM surface's top (substrate_top) at the closest point, measured
+// vertically (mesh/vertical_gap.hpp).
+void place_tip_above_surface(mesh::Mesh& m, int first_tip_node, double gap) {
+  const auto now = mesh::smallest_vertical_gap(m, "tip_surface", "substrate_top");
+  if (!now)
+    throw mesh::MeshError("'gap above surface': the tip's footprint lies outside the AFM surface's window; move "
+                          "'apex position' x y over the window (or enlarge the window)");
+  for (int n = first_tip_node; n < m.node_count(); ++n) m.coordinates[3 * static_cast<std::size_t>(n) + 2] += gap - *now;
+}
+
 }  // namespace
 
 mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
@@ -120,7 +132,9 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
         g.apex = *a.apex;
       }
       try {
+        const int first_tip_node = m.node_count();
         mesh::append(m, mesh::generate_asperity(g));
+        if (a.gap_above_surface) place_tip_above_surface(m, first_tip_node, *a.gap_above_surface);
       } catch (const mesh::MeshError& e) {
         const bool clash = spec.afm_surface && !a.tip_only;  // both would make block `substrate`
         throw SetupError(a.where.str() + ": error: " + e.what() +

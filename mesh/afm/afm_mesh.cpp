@@ -97,6 +97,19 @@ Mesh generate_afm_mesh(const HeightMap& map, const AfmMeshSpec& spec, AfmMeshRep
         window[1] + window[3] <= sy + tol))
     throw MeshError(f + ": window " + rect(window) + " must be non-empty and inside the " + nm(sx) + " x " + nm(sy) +
                     " map; choose X0,Y0,W,H with X0+W <= " + nm(sx) + " and Y0+H <= " + nm(sy));
+  // A window narrower than a few pixels has no measured relief of its own: its surface is the spline
+  // between a handful of heights, and its mean and RMS come from a pixel or two (an "RMS 0 nm" mesh,
+  // a window `tribex surface stats` refuses). Refused unless the deck or command line asks for it.
+  const double span_x = window[2] / map.dx, span_y = window[3] / map.dy;
+  if (!spec.interpolate_small_window && (span_x < min_window_pixels || span_y < min_window_pixels)) {
+    char spans[64];
+    std::snprintf(spans, sizeof spans, "%.3g x %.3g", span_x, span_y);
+    throw MeshError(f + ": window " + rect(window) + " spans " + spans + " pixels (pixel " + nm(map.dx) + " x " +
+                    nm(map.dy) + "); a mesh that follows measured heights needs at least " +
+                    std::to_string(min_window_pixels) + " a side: enlarge it to " + nm(min_window_pixels * map.dx) +
+                    " x " + nm(min_window_pixels * map.dy) +
+                    ", or mesh the spline between pixels with 'small window = interpolate' (--small-window interpolate)");
+  }
   const std::array<double, 4> track = spec.track.value_or(window);
   if (!(track[2] > 0 && track[3] > 0 && track[0] >= window[0] - tol && track[1] >= window[1] - tol &&
         track[0] + track[2] <= window[0] + window[2] + tol && track[1] + track[3] <= window[1] + window[3] + tol))

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -21,6 +22,10 @@
 #include "mesh/mesh.hpp"
 
 namespace tribex::mesh::afm {
+
+/// The smallest window, in pixel spacings per side, that `generate_afm_mesh` meshes (MeshError below)
+/// unless `AfmMeshSpec::interpolate_small_window`.
+inline constexpr int min_window_pixels = 4;
 
 struct AfmMeshSpec {
   /// x0, y0, width, height (m) in map coordinates; unset: the whole map.
@@ -32,6 +37,7 @@ struct AfmMeshSpec {
   double coating_thickness = 0.0;   // m, 0: no coating
   int coating_layers = 6;           // elements through the coating
   double grading_ratio = 1.3;       // in [1, 1.3]: size ratio of neighbouring elements outside the track
+  bool interpolate_small_window = false;  // mesh a window under min_window_pixels a side (the spline between pixels)
   long max_elements = 20'000'000;   // refuse a larger mesh before allocating it (~ 6 GB of mesh + solver state)
 };
 

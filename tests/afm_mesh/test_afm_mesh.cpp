@@ -232,6 +232,18 @@ TEST(AfmMesh, BadSpecsAreRefusedWithTheFix) {
   s.depth = 10 * nm;
   s.window = {{10 * nm, 0, 10 * nm, 10 * nm}};
   EXPECT_NE(message(s).find("inside the 16 nm x 16 nm map"), std::string::npos) << message(s);
+  // Under 4 pixels a side (pixel 1 nm): refused with the smallest window and the opt-in, which meshes it.
+  s.window = {{4.2 * nm, 4.2 * nm, 3.5 * nm, 8 * nm}};
+  EXPECT_NE(message(s).find("spans 3.5 x 8 pixels (pixel 1 nm x 1 nm); a mesh that follows measured heights needs at "
+                            "least 4 a side: enlarge it to 4 nm x 4 nm, or mesh the spline between pixels with "
+                            "'small window = interpolate'"),
+            std::string::npos)
+      << message(s);
+  s.interpolate_small_window = true;
+  EXPECT_EQ(message(s), "no error");
+  s.interpolate_small_window = false;
+  s.window = {{4.2 * nm, 4.2 * nm, 4 * nm, 8 * nm}};
+  EXPECT_EQ(message(s), "no error");
   s.window.reset();
   s.track = {{0, 0, 20 * nm, 4 * nm}};
   EXPECT_NE(message(s).find("inside the window"), std::string::npos) << message(s);

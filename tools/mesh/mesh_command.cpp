@@ -40,6 +40,8 @@ const char* afm_usage =
     "  --coating T             bonded coating of thickness T on top, block `coating` (default: none)\n"
     "  --coating-layers N      elements through the coating (default 6)\n"
     "  --grading-ratio R       size ratio of neighbours outside the track and with depth, in [1, 1.3] (default 1.3)\n"
+    "  --small-window MODE     refuse (default): a window under 4 pixels a side is an error; interpolate: mesh\n"
+    "                          the spline between the pixels anyway (a sub-pixel window of a coarse map)\n"
     "  --max-elements N        refuse a larger mesh, counted before it is built (default 20000000, ~6 GB to run)\n"
     "  -o FILE                 output .msh (required)\n"
     "Blocks substrate (+ coating); side sets = node sets: substrate_top (contact surface), substrate_track,\n"
@@ -68,6 +70,7 @@ int afm(const std::vector<std::string>& argv) {
   const long layers = a.integer("--coating-layers", spec.coating_layers);
   spec.grading_ratio = a.real("--grading-ratio", spec.grading_ratio);
   spec.max_elements = a.integer("--max-elements", spec.max_elements);
+  const std::string small_window = a.text("--small-window").value_or("refuse");
   const auto out = a.text("-o");
   a.finish();
   if (a.positional_count() > 1) throw BadInput("tribex mesh afm takes one FILE, got " + std::to_string(a.positional_count()));
@@ -75,6 +78,9 @@ int afm(const std::vector<std::string>& argv) {
   if (channel < -1 || channel > 64) throw BadInput("--channel " + std::to_string(channel) + " is out of range (0 to 64)");
   if (layers < 1 || layers > 100) throw BadInput("--coating-layers " + std::to_string(layers) + " must lie in 1 to 100");
   spec.coating_layers = static_cast<int>(layers);
+  if (small_window != "refuse" && small_window != "interpolate")
+    throw BadInput("--small-window " + small_window + ": use refuse or interpolate");
+  spec.interpolate_small_window = small_window == "interpolate";
   if (spec.max_elements < 1 || spec.max_elements > 2'000'000'000)
     throw BadInput("--max-elements " + std::to_string(spec.max_elements) + " must lie in 1 to 2000000000");
   if (!(spec.grading_ratio >= 1.0 && spec.grading_ratio <= 1.3))

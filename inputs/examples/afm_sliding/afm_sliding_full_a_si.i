@@ -76,6 +76,7 @@ begin sierra afm_sliding_full_a_si
       file = ../../data/afm/di-3.di
       channel = 0
       window = 100 100 100 100 nm
+      small window = interpolate   # di-3 has 39 nm pixels: the window is the spline between them
       track = 102.5 100 35 100 nm
       element size = 0.5 nm
       depth = 40 nm

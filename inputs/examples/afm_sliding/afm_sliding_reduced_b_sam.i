@@ -86,6 +86,7 @@ begin sierra afm_sliding_reduced_b_sam
       file = ../../data/afm/di-3.di
       channel = 0
       window = 102 153 40 36 nm
+      small window = interpolate   # di-3 has 39 nm pixels: the window is the spline between them
       track = 106 156 28 30 nm
       element size = 1.0 nm
       depth = 15 nm

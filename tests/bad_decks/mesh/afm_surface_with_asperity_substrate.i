@@ -1,4 +1,4 @@
-# expect: 30: needs 'substrate = none'
+# expect: 31: needs 'substrate = none'
 # an AFM substrate and a generated asperity that also generates its own substrate (block clash)
 begin sierra bad
   begin property specification for material silicon
@@ -15,6 +15,7 @@ begin sierra bad
     begin afm surface
       file = ../../../inputs/data/afm/di-3.di
       window = 110 160 20 20 nm
+      small window = interpolate   # di-3 has 39 nm pixels: the window is the spline between them
       element size = 2 nm
       depth = 10 nm
     end afm surface
