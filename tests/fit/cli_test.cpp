@@ -123,8 +123,9 @@ TEST(FitCli, BadCsvAndArgumentsExitTwoWithOneLineMessage) {
   std::string good = "load[nN],friction[nN]\n";
   for (int i = 0; i < 10; ++i) good += std::to_string(-5 + 3 * i) + "," + std::to_string(2 + 0.3 * i) + "\n";
   const BadCase cases[] = {
-      {"missing_column.csv", "load[nN],lateral[nN]\n1,2\n2,3\n3,4\n4,5\n5,6\n", "missing column 'friction'", {}},
-      {"load_in_nm.csv", "load[nm],friction[nN]\n1,2\n2,3\n3,4\n4,5\n5,6\n", "column 'load' has unit [nm] but needs a N unit", {}},
+      {"missing_column.csv", "load[nN],lateral[nN]\n1,2\n2,3\n3,4\n4,5\n5,6\n", "missing column 'friction_force' (the header has: normal_force,lateral", {}},
+      {"load_in_nm.csv", "load[nm],friction[nN]\n1,2\n2,3\n3,4\n4,5\n5,6\n", "column 'load' (read as 'normal_force') has unit [nm] but needs a N unit", {}},
+      {"both_names.csv", "load[nN],normal_force[nN],friction[nN]\n1,1,2\n", "both_names.csv:1: column 'normal_force' appears twice", {}},
       {"bad_unit.csv", "load[-nN],friction[nN]\n1,2\n2,3\n3,4\n4,5\n5,6\n", "bad_unit.csv:1: unit [-nN]", {}},
       {"too_few.csv", "load[nN],friction[nN]\n1,2\n2,3\n3,4\n", "3 data rows, at least 4 needed", {}},
       {"negative_friction.csv", "load[nN],friction[nN]\n1,2\n2,-3\n3,4\n4,5\n5,6\n",

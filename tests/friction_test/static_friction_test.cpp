@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "tools/cli/commands.hpp"
 
@@ -136,6 +137,36 @@ TEST(StaticFriction, ReducedPointsAreFittedDirectly) {
   EXPECT_NEAR(value("mu_s"), 0.3, 1e-9);
   EXPECT_NEAR(value("adhesion_force"), 0.2e-6, 1e-15);
   EXPECT_NEAR(value("slip_events"), 4.0, 0.0);
+}
+
+// One CSV convention with `tribex fit`: a `load,friction` file (fit's synonyms) is the same reduced
+// points; a file with neither points nor a position record names the missing column.
+TEST(StaticFriction, FitsCsvConventionAndMissingColumnNamed) {
+  const auto dir = std::filesystem::temp_directory_path() / "tribex_friction_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "load_friction.csv").string();
+  {
+    std::ofstream f(path);
+    f << "load[uN],friction[uN]\n1,0.36\n2,0.66\n5,1.56\n9,2.76\n";  // F = 0.3 (N + 0.2 uN)
+  }
+  testing::internal::CaptureStdout();
+  EXPECT_EQ(cli::friction_test_command({"static", path, "--json"}), 0);
+  const std::string out = testing::internal::GetCapturedStdout();
+  const auto at = out.find("\"mu_s\": {\"value\": ");
+  ASSERT_NE(at, std::string::npos) << out;
+  EXPECT_NEAR(std::stod(out.substr(at + 18)), 0.3, 1e-9);
+
+  const std::string bad = (dir / "lateral.csv").string();
+  {
+    std::ofstream f(bad);
+    f << "load[uN],lateral[uN]\n1,0.36\n2,0.66\n";
+  }
+  try {
+    cli::friction_test_command({"static", bad});
+    ADD_FAILURE() << "no error";
+  } catch (const tools::BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find("lateral.csv:1: missing column 'friction_force'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

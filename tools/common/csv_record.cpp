@@ -60,6 +60,20 @@ CsvRecord::CsvRecord(std::string path, std::vector<std::pair<std::string, CsvCol
   for (std::size_t i = 0; i < rows_; ++i) lines_.push_back(i + 2);
 }
 
+std::string canonical_column_name(const std::string& name) {
+  // The one convention of `tribex friction-test` and `tribex fit` (tools/common/README.md): a force
+  // pair is normal_force, friction_force; `load` and `friction` are read as those.
+  static const std::map<std::string, std::string> synonyms = {{"load", "normal_force"}, {"friction", "friction_force"}};
+  const auto it = synonyms.find(name);
+  return it == synonyms.end() ? name : it->second;
+}
+
+std::string CsvRecord::display(const std::string& name) const {
+  const auto it = written_.find(name);
+  if (it == written_.end()) return "'" + name + "'";
+  return "'" + it->second + "' (read as '" + name + "')";
+}
+
 CsvRecord CsvRecord::read(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw BadInput(path + ": cannot open the file (check the path)");
@@ -89,7 +103,12 @@ CsvRecord CsvRecord::read(const std::string& path) {
         const bool first_char_digit = (name[0] >= '0' && name[0] <= '9') || name[0] == '-' || name[0] == '.';
         if (first_char_digit)
           throw BadInput(where + ": the first line must be a header such as time[s],position[nm], found '" + t + "'");
-        if (r.columns_.count(name)) throw BadInput(where + ": column '" + name + "' appears twice in the header");
+        const std::string written = name;
+        name = canonical_column_name(name);
+        if (r.columns_.count(name))
+          throw BadInput(where + ": column '" + written + "' appears twice in the header" +
+                         (written == name ? std::string() : " (as '" + name + "' or a synonym of it)"));
+        if (written != name) r.written_[name] = written;
         r.columns_[name].unit = unit;
         r.order_.push_back(name);
         factors.push_back(unit_factor(unit, where));
@@ -135,7 +154,7 @@ const std::vector<double>& CsvRecord::column(const std::string& name, inputs::Di
     std::string error;
     auto q = inputs::parse_unit(unit, &error);
     if (!q || !(q->dimension == d))
-      throw BadInput(path_ + ":1: column '" + name + "' has unit [" + unit + "] but needs a " + d.str() +
+      throw BadInput(path_ + ":1: column " + display(name) + " has unit [" + unit + "] but needs a " + d.str() +
                      " unit");
   }
   return it->second.values;

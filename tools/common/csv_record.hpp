@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A measured record: a CSV file with a header row, one column per quantity, optional units in
-// brackets (`time[s],position[nm],voltage[V]`). Values are converted to SI on reading; every
+// brackets (`time[s],position[nm],voltage[V]`; forces as `normal_force[nN],friction_force[nN]`, with
+// `load` and `friction` read as those). Values are converted to SI on reading; every
 // problem is a tools::BadInput naming `file:line` and the fix.
 #pragma once
 
@@ -17,6 +18,10 @@ struct CsvColumn {
   std::vector<double> values;  // SI (volts for a voltage column)
   std::string unit;            // as written in the header, "" when none was given
 };
+
+/// The column name a header cell stands for: `load` is read as `normal_force` and `friction` as
+/// `friction_force` (the convention of friction-test and fit); every other name is itself.
+std::string canonical_column_name(const std::string& name);
 
 class CsvRecord {
  public:
@@ -49,7 +54,9 @@ class CsvRecord {
   CsvRecord() = default;
   std::string path_;
   std::map<std::string, CsvColumn> columns_;
-  std::vector<std::string> order_;  // header order
+  std::vector<std::string> order_;  // header order (canonical names)
+  std::map<std::string, std::string> written_;  // canonical name -> the synonym the header used
+  std::string display(const std::string& name) const;  // for messages: 'load' (read as 'normal_force')
   std::vector<std::size_t> lines_;  // file line of each row (comment/blank lines skipped)
   std::size_t rows_ = 0;
 };

@@ -45,7 +45,8 @@ const char* top_usage =
 const char* friction_usage =
     "usage: tribex fit friction DATA.csv --radius R [model options] [--fit-coating-modulus]\n"
     "         [--residual absolute|relative] [--json] [-o PLOT.png] [--no-plot]\n"
-    "DATA.csv: columns load and friction, force units in the header (load[nN],friction[nN]); no unit = N.\n"
+    "DATA.csv: columns normal_force and friction_force (or load and friction), force units in the header\n"
+    "(normal_force[nN],friction_force[nN]); no unit = N. The CSV of `tribex friction-test static` points.\n"
     "Fits F = tau A(L + 2 pi R W) (report Eq. 3.1 for the coated model) by Levenberg-Marquardt and\n"
     "prints tau*, W with 1-sigma uncertainties, the correlation matrix and the pull-off load; draws\n"
     "the data and the fitted curve to PLOT.png (default DATA.png). --fit-coating-modulus frees Ec too:\n"
@@ -55,7 +56,7 @@ const char* friction_usage =
 const char* synth_usage =
     "usage: tribex fit synth -o OUT.csv --radius R --tau T --W W [model options] [--alpha-p A]\n"
     "         [--loads -5nN,30nN] [--points 30] [--noise 0.05] [--noise-kind relative|absolute] [--seed 1]\n"
-    "Writes load[nN],friction[nN] from the model plus Gaussian noise of --noise times F (relative)\n"
+    "Writes normal_force[nN],friction_force[nN] from the model plus Gaussian noise of --noise times F (relative)\n"
     "or times the largest F (absolute).\n" FIT_MODEL_OPTIONS;
 
 FrictionSetup parse_setup(Args& a, const std::string& cmd) {
@@ -124,9 +125,9 @@ void plot_fit(const std::string& png, const FrictionModel& model, const Friction
   char title[200];
   std::snprintf(title, sizeof title, "%s fit: tau = %.4g MPa, W = %.4g J/m^2", model_name(model.setup().model).c_str(),
                 fit.best.tau / 1e6, fit.best.work_of_adhesion);
-  tools::PlotPanel main{"load (nN)", "friction (nN)", title,
+  tools::PlotPanel main{"normal force (nN)", "friction force (nN)", title,
                         {{"load", scaled(x, 1e9)}, {"data", scaled(data, 1e9)}, {"fit", scaled(curve, 1e9)}}};
-  tools::PlotPanel res{"load (nN)", "data - fit (nN)", "residuals",
+  tools::PlotPanel res{"normal force (nN)", "data - fit (nN)", "residuals",
                        {{"load", scaled(load, 1e9)}, {"residual", scaled(residual, 1e9)}}};
   if (tools::write_plot(png, "tribex fit friction", {main, res})) std::fprintf(stderr, "plot: %s\n", png.c_str());
 }
@@ -146,8 +147,8 @@ int friction_command(const std::vector<std::string>& argv) {
   const FrictionModel model(setup);
 
   const auto rec = tools::CsvRecord::read(file);
-  const auto& load = rec.column("load", dim::force);
-  const auto& friction = rec.column("friction", dim::force);
+  const auto& load = rec.column("normal_force", dim::force);
+  const auto& friction = rec.column("friction_force", dim::force);
   const std::size_t n_free = model.free_names().size();
   rec.require_rows(n_free + 2, "(to fit " + std::to_string(n_free) + " parameters with 2 degrees of freedom left)");
   for (std::size_t i = 0; i < rec.size(); ++i) {
@@ -273,7 +274,7 @@ int synth_command(const std::vector<std::string>& argv) {
     throw BadInput(cmd + ": --loads starts below the model's pull-off load " + std::to_string(model.pull_off_load(p) * 1e9) +
                    " nN (raise the first load)");
   const auto f = synth_friction(model, p, l, noise, kind, static_cast<std::uint64_t>(seed));
-  tools::CsvRecord(*out, {{"load", {l, "nN"}}, {"friction", {f, "nN"}}}).write(*out);
+  tools::CsvRecord(*out, {{"normal_force", {l, "nN"}}, {"friction_force", {f, "nN"}}}).write(*out);
   std::fprintf(stderr, "wrote %s\n", out->c_str());
   return tools::exit_ok;
 }

@@ -221,6 +221,12 @@ int static_friction(const std::vector<std::string>& argv) {
   // Points already reduced (normal_force and friction_force columns, e.g. one steady-sliding FE run per
   // load, inputs/examples/clamp_friction): the Eq. 2.2 line through them, no slip detection.
   const bool points = rec.has("friction_force") && rec.has("normal_force") && !rec.has("position");
+  if (!points && !rec.has("position")) {
+    std::string have;
+    for (const auto& n : rec.names()) have += (have.empty() ? "" : ",") + n;
+    throw BadInput(file + ":1: missing column 'friction_force' (reduced points: normal_force, friction_force) or "
+                   "'position' (a ramp record, with --stiffness); the header has: " + have);
+  }
   if (!points && (!stiffness || *stiffness <= 0))
     throw BadInput(cmd + ": --stiffness K (N/m, > 0) is required: the load-spring constant");
   const std::vector<double> x = points ? std::vector<double>(rec.size(), 0.0) : rec.column("position", dim::length);
@@ -283,17 +289,21 @@ int static_friction(const std::vector<std::string>& argv) {
       ev_s.push_back(e.friction_force * 1e6);
       fit_s.push_back((f.intercept + f.mu_s * e.normal_force) * 1e6);
     }
-    std::vector<double> before(fn.size(), NAN);
-    for (const auto& e : f.events) before[e.row] = x[e.row] * 1e9;
-    tools::PlotPanel ramp{"normal force F_N (uN)", "position (nm)", "record; points before each slip",
-                   {{"F_N", fn_uN}, {"position", to_nm(x)}, {"before slip", before}}};
-    tools::PlotPanel line{"normal force F_N (uN)", "static friction F_s (uN)", "Eq. 2.2 fit",
-                   {{"F_N", ev_n}, {"slip events", ev_s}, {"fit mu_s", fit_s}}};
+    // Reduced points have no position record: one panel, the points and the line through them.
+    std::vector<tools::PlotPanel> panels;
+    if (!points) {
+      std::vector<double> before(fn.size(), NAN);
+      for (const auto& e : f.events) before[e.row] = x[e.row] * 1e9;
+      panels.push_back({"normal force F_N (µN)", "position (nm)", "record; points before each slip",
+                        {{"F_N", fn_uN}, {"position", to_nm(x)}, {"before slip", before}}});
+    }
+    panels.push_back({"normal force F_N (µN)", points ? "friction force F (µN)" : "static friction F_s (µN)",
+                      "Eq. 2.2 fit", {{"F_N", ev_n}, {points ? "points" : "slip events", ev_s}, {"fit mu_s", fit_s}}});
     char title[160];
-    std::snprintf(title, sizeof title, "static friction: mu_s = %.4f +- %.4f, F_adh = %.4g +- %.2g N", f.mu_s, mu_sigma,
-                  f.adhesion_force, f.adhesion_force_sigma);
+    std::snprintf(title, sizeof title, "static friction: mu_s = %.4f ± %.4f, F_adh = %.4g ± %.2g µN", f.mu_s, mu_sigma,
+                  f.adhesion_force * 1e6, f.adhesion_force_sigma * 1e6);
     const std::string png = plot.value_or(tools::default_plot_path(file));
-    if (tools::write_plot(png, title, {ramp, line})) std::fprintf(stderr, "plot: %s\n", png.c_str());
+    if (tools::write_plot(png, title, panels)) std::fprintf(stderr, "plot: %s\n", png.c_str());
   }
   return tools::exit_ok;
 }
@@ -385,14 +395,14 @@ int dynamic_friction(const std::vector<std::string>& argv) {
         r.add("adhesion_pressure", line.adhesion_force / *foot_area, line.adhesion_force_sigma / *foot_area, "Pa",
               "F_adh / foot area");
       r.add("rms_residual", line.rms_residual, -1, "N", "load line");
-      std::vector<double> fn_uN, fd_uN, fit_uN;
+      std::vector<double> fn_nN, fd_nN, fit_nN;
       for (std::size_t i = 0; i < fits.size(); ++i) {
-        fn_uN.push_back(loads[i] * 1e9);
-        fd_uN.push_back(fd[i] * 1e9);
-        fit_uN.push_back((line.intercept + line.mu_d * loads[i]) * 1e9);
+        fn_nN.push_back(loads[i] * 1e9);
+        fd_nN.push_back(fd[i] * 1e9);
+        fit_nN.push_back((line.intercept + line.mu_d * loads[i]) * 1e9);
       }
       panels.insert(panels.begin(), tools::PlotPanel{"applied normal load F_N (nN)", "dynamic friction F_d (nN)",
-                                              "load line (Fig. 2.11)", {{"F_N", fn_uN}, {"records", fd_uN}, {"fit mu_d", fit_uN}}});
+                                              "load line (Fig. 2.11)", {{"F_N", fn_nN}, {"records", fd_nN}, {"fit mu_d", fit_nN}}});
     }
   }
   if (json) {

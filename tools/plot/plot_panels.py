@@ -21,7 +21,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 def read_panel(path):
-    with open(path, newline="") as f:
+    with open(path, newline="", encoding="utf-8") as f:
         labels = f.readline().lstrip("#").strip().split("|")
         rows = list(csv.reader(f))
     header, data = rows[0], rows[1:]
@@ -32,14 +32,21 @@ def read_panel(path):
     return labels, header, cols
 
 
+def has_points(panel):
+    _, header, cols = panel
+    x = cols[header[0]]
+    return any(not (math.isnan(a) or math.isnan(b)) for name in header[1:] for a, b in zip(x, cols[name]))
+
+
 def main(argv):
     if len(argv) < 4:
         print(__doc__, file=sys.stderr)
         return 2
-    out, title, panels = argv[1], argv[2], argv[3:]
+    out, title, paths = argv[1], argv[2], argv[3:]
+    # A panel with no point to draw is left out (no empty axes in the figure).
+    panels = [p for p in map(read_panel, paths) if has_points(p)] or [read_panel(paths[0])]
     fig, axes = plt.subplots(len(panels), 1, figsize=(7.5, 3.4 * len(panels)), squeeze=False)
-    for ax, path in zip(axes[:, 0], panels):
-        labels, header, cols = read_panel(path)
+    for ax, (labels, header, cols) in zip(axes[:, 0], panels):
         x = cols[header[0]]
         for name in header[1:]:
             pts = [(a, b) for a, b in zip(x, cols[name]) if not (math.isnan(a) or math.isnan(b))]

@@ -38,7 +38,7 @@ def main(out):
     shade_events(ax, ev)
     ax.set_xlabel("counterface position [um]")
     ax.set_yscale("log")  # W falls by orders of magnitude along a run
-    ax.set_ylabel("normal force [uN]")
+    ax.set_ylabel("normal force [µN]")
     ax.set_title("PSTD model: normal force vs position (%d PSTD events shaded)" % len(ev.get("event", [])))
     ax.grid(alpha=0.3)
     fig.tight_layout()
@@ -70,7 +70,7 @@ def main(out):
             ax.plot(xs, fs, lw=0.9, label="%d copies, %d initial contacts" % (n, c0))
         ax.set_xlabel("counterface position [um]")
         ax.set_yscale("log")
-        ax.set_ylabel("normal force per copy [uN]")
+        ax.set_ylabel("normal force per copy [µN]")
         ax.set_title("apparent-area study")
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)

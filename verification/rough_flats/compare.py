@@ -97,7 +97,7 @@ def main():
         t = [r["time"] * 1e9 for r in rows]
         ax2.plot(t, [r["friction_force"] * 1e6 for r in rows], label="friction force (FE)")
         ax2.plot(t, [TAU * r["real_contact_area"] * 1e6 for r in rows], "--", label="tau* x real area")
-        finish_axes(ax2, "time (ns): press 0-100, hold, slide 150-200", "force (uN)")
+        finish_axes(ax2, "time (ns): press 0-100, hold, slide 150-200", "force (µN)")
         save_figure(fig, a.plot, announce=None)
     return report_failures(failures)
 

@@ -72,7 +72,7 @@ def main():
         fig, ax = pyplot().subplots(figsize=(5.5, 4))
         ax.plot([p[4] * 1e12 for p in points], [p[2] * 1e6 for p in points], "-", label="direct sum over the summits")
         ax.plot([p[3] * 1e12 for p in points], [p[1] * 1e6 for p in points], "o", ms=3, label="FE (discrete rough-surface model)")
-        finish_axes(ax, "real contact area (um^2)", "normal load (uN)")
+        finish_axes(ax, "real contact area (µm²)", "normal load (µN)")
         save_figure(fig, a.plot, announce=None)
     return report_failures(failures)
 

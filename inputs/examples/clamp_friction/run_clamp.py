@@ -157,16 +157,16 @@ def plot(results, path):
             line = axis.plot(n, [p["friction_force"] * 1e6 for p in points], marker, label=f"FE {variant}")[0]
             x = ([-f_adh * 1e6] if axis is ax and f_adh > 0 else []) + n
             axis.plot(x, [mu * (v + f_adh * 1e6) for v in x], "-", color=line.get_color(),
-                      label=f"fit: mu = {mu:.3f}, F_adh = {f_adh * 1e6:.3g} uN ({f_adh / FOOT_AREA * 1e-3:.3g} nN/um^2)")
+                      label=f"fit: mu = {mu:.3f}, F_adh = {f_adh * 1e6:.3g} µN ({f_adh / FOOT_AREA * 1e-3:.3g} nN/µm²)")
     for axis in (ax, ax_log):
         x = sorted({p["normal_force"] * 1e6 for _, points, _, _ in results for p in points})
         axis.plot(x, [REPORT_MU_D * (v + report_adh * 1e6) for v in x], "k--", lw=1,
-                  label=f"report, measured: F = {REPORT_MU_D} (N + 1 nN/um^2 x A)")
-        finish_axes(axis, "normal load N (uN)", "friction force F (uN)")
+                  label=f"report, measured: F = {REPORT_MU_D} (N + 1 nN/µm² x A)")
+        finish_axes(axis, "normal load N (µN)", "friction force F (µN)")
     ax_log.set_xscale("log")
     ax_log.set_yscale("log")
     ax_log.get_legend().remove()
-    ax.set_title("friction clamp on di-5 (A = 2000 um^2)")
+    ax.set_title("friction clamp on di-5 (A = 2000 µm²)")
     save_figure(fig, path, announce=None)
 
 
