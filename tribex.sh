@@ -14,8 +14,8 @@ ROOT=$PWD
 PACKAGES=(
   cmake make g++ git
   libeigen3-dev libmetis-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
-  libgmsh-dev gmsh libcgal-dev libgtest-dev
-  python3 python3-matplotlib python3-numpy python3-scipy python3-h5py
+  libgmsh-dev gmsh libcgal-dev libgtest-dev libexodusii-dev libnetcdf-dev
+  python3 python3-matplotlib python3-numpy python3-scipy python3-h5py python3-netcdf4
   paraview python3-paraview xvfb xauth
 )
 

@@ -138,8 +138,8 @@ struct BlockParameters {
 /// `begin finite element model NAME`.
 struct FiniteElementModelSpec {
   std::string name;
-  enum class Source { generated, gmsh } source = Source::generated;
-  std::string database_path;  // gmsh: path resolved relative to the deck's folder
+  enum class Source { generated, gmsh, exodus } source = Source::generated;
+  std::string database_path;  // gmsh, exodus: path resolved relative to the deck's folder
   std::vector<GeneratedBoxSpec> boxes;  // generated: boxes (appended in deck order)
   std::optional<GeneratedAsperitySpec> asperity;  // generated: the asperity problem
   std::optional<AfmSurfaceSpec> afm_surface;       // generated: a block from an AFM height map
@@ -263,6 +263,8 @@ struct ResultsOutputSpec {
   std::optional<int> step_increment;
   std::vector<std::string> nodal_variables;    // displacement velocity force (+ later ones)
   std::vector<std::string> element_variables;  // stress
+  bool xdmf = true;     // `format`: xdmf (default) or both -> results.h5 + results.xdmf
+  bool exodus = false;  //           exodus or both -> results.exo
   SourceLocation where;
 };
 

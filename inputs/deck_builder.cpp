@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <span>
@@ -249,14 +250,21 @@ class Builder {
       m.asperity = g;
     }
     if (db) {
-      m.source = FiniteElementModelSpec::Source::gmsh;
       std::filesystem::path p(word(s, "database name"));
+      // Exodus II by the extension (.exo .e .g .gen, any case) unless the type says otherwise.
+      std::string ext = p.extension().string();
+      for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      const bool exodus_name = ext == ".exo" || ext == ".e" || ext == ".g" || ext == ".gen";
+      m.source = type == "exodus" || (type.empty() && exodus_name) ? FiniteElementModelSpec::Source::exodus
+                                                                    : FiniteElementModelSpec::Source::gmsh;
       if (p.is_relative()) p = std::filesystem::path(db->where.file).parent_path() / p;
       m.database_path = p.lexically_normal().string();
-      if (type == "generated") error(where(s, "database type"), s, "'database type = generated' but 'database name' is given; use 'gmsh' or drop the key");
+      if (type == "generated") error(where(s, "database type"), s, "'database type = generated' but 'database name' is given; use 'gmsh' or 'exodus', or drop the key");
     } else {
       m.source = FiniteElementModelSpec::Source::generated;
-      if (type == "gmsh") error(where(s, "database type"), s, "'database type = gmsh' needs 'database name = FILE.msh'");
+      if (type == "gmsh" || type == "exodus")
+        error(where(s, "database type"), s, "'database type = " + type + "' needs 'database name = FILE" +
+                                                (type == "gmsh" ? ".msh" : ".exo") + "'");
     }
     for (const Scope* b : boxes) {
       GeneratedBoxSpec box;
@@ -451,6 +459,9 @@ class Builder {
         schedule(c, o);
         o.nodal_variables = words(c, "nodal variables");
         o.element_variables = words(c, "element variables");
+        const std::string format = word(c, "format");
+        o.xdmf = format != "exodus";
+        o.exodus = format == "exodus" || format == "both";
         r.results = o;
       } else if (t == "history output") {
         HistoryOutputSpec o;

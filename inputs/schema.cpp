@@ -195,9 +195,10 @@ std::vector<BlockSchema> build_table() {
                false, "element formulation and artificial viscosities"});
 
   t.push_back({"finite element model", NameRule::required, {}, {}, true,
-               {text("database name", ValueKind::string, false, "gmsh mesh file, relative to the deck"),
-                choice("database type", ValueKind::enumeration, {"gmsh", "generated"}, false, "",
-                       "inferred from database name / generated box")},
+               {text("database name", ValueKind::string, false,
+                     "mesh file, relative to the deck: gmsh .msh, or Exodus II .exo/.e/.g/.gen"),
+                choice("database type", ValueKind::enumeration, {"gmsh", "exodus", "generated"}, false, "",
+                       "inferred: exodus for a database name ending .exo .e .g .gen, gmsh for any other, generated without one")},
                {{"generated box"}, {"generated asperity", 0, 1}, {"afm surface", 0, 1}, {"parameters for block", 1}},
                false, "the mesh and its element blocks"});
 
@@ -373,7 +374,7 @@ std::vector<BlockSchema> build_table() {
 
   {
     BlockSchema results{"results output", NameRule::required, {}, {}, true, output_schedule(), {}, false,
-                        "results.h5 + results.xdmf"};
+                        "results.h5 + results.xdmf and/or results.exo"};
     results.keys.push_back(choice("nodal variables", ValueKind::enumerations,
                                   {"displacement", "velocity", "force", "acceleration", "contact_traction",
                                    "contact_status"},
@@ -381,6 +382,9 @@ std::vector<BlockSchema> build_table() {
     results.keys.push_back(
         choice("element variables", ValueKind::enumerations, {"stress", "equivalent_plastic_strain"}, false, "",
                "element fields: Cauchy stress (Pa); equivalent plastic strain (J2 plasticity, element mean)"));
+    results.keys.push_back(choice("format", ValueKind::enumeration, {"xdmf", "exodus", "both"}, false, "xdmf",
+                                  "xdmf: results.h5 + results.xdmf; exodus: results.exo (Exodus II, with the history "
+                                  "columns as global variables); both"));
     t.push_back(results);
   }
   {

@@ -17,6 +17,7 @@
 #include "solver/guards/run_guards.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/model.hpp"
+#include "solver/output/exodus_writer.hpp"
 #include "solver/output/history_writer.hpp"
 #include "solver/output/results_writer.hpp"
 #include "solver/output/run_log.hpp"
@@ -64,12 +65,13 @@ class DeckRun {
   // ---- stage 3: the output folder, history.csv, results.h5, restart output ----
   void open_outputs();
   void choose_history_columns();  // every rank: the row is built everywhere, written by rank 0
-  void open_results();
+  void open_results();  // results.h5 + results.xdmf and/or results.exo (`format`)
   // ---- stage 4: the loop and what it writes at time n ----
   void loop();
   void write_outputs();
+  void fill_history_row(double t);  // row_: the history columns after `step` (collective in parallel)
   void write_history_row(double t, long n);
-  void write_fields(double t);
+  void write_fields(double t, long n);
   void write_restart();
   std::string progress_text(long n, double t, double error) const;
   // ---- stage 5: summary.json and the closing lines ----
@@ -124,6 +126,7 @@ class DeckRun {
   std::vector<double> set_sums_;
   std::optional<Schedule> history_schedule_;
   std::unique_ptr<ResultsWriter> results_;
+  std::unique_ptr<ExodusWriter> exodus_;  // results.exo; its global variables are the history columns
   std::optional<Schedule> field_schedule_;
   ResultsSlab slab_;
   long first_step_ = 0;
@@ -133,6 +136,7 @@ class DeckRun {
   Clock::time_point loop_start_;
   bool closing_ = false;
   std::vector<double> row_;
+  std::vector<double> globals_;  // results.exo: step, then row_
   std::vector<double> element_stress_, element_plastic_strain_;
   std::vector<std::vector<double>> packed_;  // parallel: this rank's rows of each field (output steps only)
   bool terminal_ = false, heartbeat_ = false;

@@ -47,7 +47,7 @@ std::string DeckRun::progress_text(long n, double t, double error) const {
                 human_seconds(frac > 0 ? elapsed * (1 - frac) / frac : NAN).c_str(), integrator_->dt(), error);
 }
 
-void DeckRun::write_history_row(double t, long n) {
+void DeckRun::fill_history_row(double t) {
   const HistoryState state{t, integrator_->dt(), integrator_->energies(), integrator_->contact_totals(),
                            integrator_->momentum()};
   row_.clear();
@@ -69,10 +69,14 @@ void DeckRun::write_history_row(double t, long n) {
   for (std::size_t k = 0; k < displacement_sets_.size(); ++k)
     for (int i = 0; i < 3; ++i) set_sums_[3 * (reaction_sets_.size() + k) + i] /= displacement_set_size_[k];
   row_.insert(row_.end(), set_sums_.begin(), set_sums_.end());
+}
+
+void DeckRun::write_history_row(double t, long n) {
+  fill_history_row(t);
   if (history_) history_->write_row(n, row_);
 }
 
-void DeckRun::write_fields(double t) {
+void DeckRun::write_fields(double t, long n) {
   // Parallel runs write the rows this rank owns: nodal fields packed from local (or, for the
   // contact fields, global) numbering; the rank's elements are its rows already.
   const Model& model = *model_;
@@ -111,6 +115,13 @@ void DeckRun::write_fields(double t) {
     }
   }
   if (results_) results_->write_step(t, nodal, element);
+  if (exodus_) {
+    fill_history_row(t);  // every rank: the node-set columns are sums over the ranks
+    globals_.clear();
+    globals_.push_back(static_cast<double>(n));
+    globals_.insert(globals_.end(), row_.begin(), row_.end());
+    exodus_->write_step(t, nodal, element, globals_);
+  }
 }
 
 void DeckRun::write_outputs() {
@@ -122,7 +133,7 @@ void DeckRun::write_outputs() {
     history_schedule_->done(t);
   }
   if (field_schedule_ && field_schedule_->due(t, n, closing_)) {
-    write_fields(t);
+    write_fields(t, n);
     field_schedule_->done(t);
   }
   guards_->observe(n, t, E, model_->contact ? &integrator_->contact_totals() : nullptr,
@@ -145,6 +156,7 @@ void DeckRun::loop() {
            field_schedule_->due(t, n, t >= end_time * (1 - 1e-14));
   });
   row_.reserve(history_columns_.size());
+  globals_.reserve(history_columns_.size());
   element_stress_.assign(6 * static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
   element_plastic_strain_.assign(static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
   terminal_ = root_ && !options_.quiet && isatty(STDERR_FILENO);
@@ -190,6 +202,7 @@ void DeckRun::close() {
   summary.warnings = guards_->warnings();
   try {
     if (results_) results_->flush();  // collective in a parallel run: every rank gets here
+    if (exodus_) exodus_->flush();
   } catch (const OutputError& e) {
     if (summary.exit_code == 0 || summary.exit_code == 130) {
       summary.exit_code = 3;
@@ -238,8 +251,8 @@ void DeckRun::close_log_lines() {
   else if (summary.first_step > 0)
     log_.say(format("resumed at step %ld: the whole run's time is unknown (an earlier segment's restart file did not "
                     "record it; add the segments' wall times in log.txt)", summary.first_step));
-  log_.say(format("outputs: %s/{history.csv,summary.json,log.txt%s}", out_.string().c_str(),
-                  results_ ? ",results.h5,results.xdmf" : ""));
+  log_.say(format("outputs: %s/{history.csv,summary.json,log.txt%s%s}", out_.string().c_str(),
+                  results_ ? ",results.h5,results.xdmf" : "", exodus_ ? ",results.exo" : ""));
   if (model_->contact) {
     const double segment_contact_seconds = summary.contact_seconds - contact_seconds_before_;
     log_.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", segment_contact_seconds,

@@ -232,7 +232,8 @@ void DeckRun::choose_history_columns() {
 
 void DeckRun::open_results() {
   // results.h5: in a parallel run every rank writes the rows of its owned nodes and its elements
-  // (runs of consecutive global rows) collectively with parallel HDF5.
+  // (runs of consecutive global rows) collectively with parallel HDF5. results.exo: the same rows
+  // gathered to rank 0, which writes the file.
   if (!region_.results) return;
   const auto& domain = model_->domain;
   const auto add_row = [](std::vector<std::array<unsigned long long, 2>>& runs, unsigned long long row) {
@@ -247,10 +248,18 @@ void DeckRun::open_results() {
   slab_.element_rows = static_cast<long long>(domain.global_element.size());
   std::exception_ptr error;
   try {
-    // A restarted run continues the folder's results.h5 (the steps up to the restart time stay).
-    results_ = std::make_unique<ResultsWriter>(out_.string(), whole_mesh_ ? *whole_mesh_ : model_->mesh,
-                                               ranks_ > 1 ? &slab_ : nullptr,
-                                               resume_ ? std::optional<double>(integrator_->time()) : std::nullopt);
+    // A restarted run continues the folder's results.h5 (the steps up to the restart time stay) and
+    // rewrites its results.exo with the steps before the restart time.
+    const mesh::Mesh& mesh = whole_mesh_ ? *whole_mesh_ : model_->mesh;
+    const auto resume_time = resume_ ? std::optional<double>(integrator_->time()) : std::nullopt;
+    if (region_.results->xdmf)
+      results_ = std::make_unique<ResultsWriter>(out_.string(), mesh, ranks_ > 1 ? &slab_ : nullptr, resume_time);
+    if (region_.results->exodus) {
+      std::vector<std::string> globals;  // the history columns, `step` first
+      for (const auto& c : history_columns_) globals.push_back(c.name);
+      exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, std::move(globals), ranks_ > 1 ? &slab_ : nullptr,
+                                               resume_time);
+    }
   } catch (...) {
     error = std::current_exception();
   }

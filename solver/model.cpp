@@ -8,6 +8,7 @@
 #include "inputs/did_you_mean.hpp"
 #include "mesh/asperity.hpp"
 #include "mesh/box.hpp"
+#include "mesh/exodus_io.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/vertical_gap.hpp"
@@ -97,6 +98,8 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
   mesh::Mesh m;
   if (spec.source == inputs::FiniteElementModelSpec::Source::gmsh) {
     m = mesh::read_gmsh(spec.database_path);
+  } else if (spec.source == inputs::FiniteElementModelSpec::Source::exodus) {
+    m = mesh::read_exodus(spec.database_path);
   } else {
     if (spec.afm_surface) m = build_afm_surface_mesh(*spec.afm_surface);
     for (const auto& box : spec.boxes) {

@@ -19,7 +19,7 @@ std::size_t clear_owned_outputs(const std::filesystem::path& folder) {
     const bool restart = name.rfind("restart", 0) == 0 && (name.ends_with(".h5") || name.ends_with(".h5.link"));
     const bool output = name == "history.csv" || name == "history_columns.csv" || name == "results.h5" || name == "results.xdmf" ||
                         name == "summary.json" || name == "summary.json.tmp" || name == "log.txt" ||
-                        name == "results.xdmf.tmp";
+                        name == "results.xdmf.tmp" || name == "results.exo" || name == ".results.exo.partial";
     if (restart || output) owned.push_back(entry.path());
   }
   for (const auto& p : owned) {

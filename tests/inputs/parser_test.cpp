@@ -344,3 +344,51 @@ TEST(Parser, HostileInputIsBounded) {
 }
 
 }  // namespace
+
+namespace {
+
+// The mesh source from `database name` / `database type` (Exodus II by the extension), and the
+// results `format`.
+Deck deck_with_database(const std::string& lines) {
+  return parse_deck_string(
+      "begin sierra s\n  begin property specification for material m\n    density = 1\n"
+      "    begin parameters for model elastic\n      youngs modulus = 1\n      poissons ratio = 0\n    end\n  end\n"
+      "  begin solid section s\n  end\n  begin finite element model fem\n" + lines +
+          "    begin parameters for block b\n      material = m\n      section = s\n    end\n  end\n"
+          "  begin presto procedure p\n    begin time control\n      termination time = 1\n    end\n"
+          "    begin presto region r\n      use finite element model fem\n"
+          "      begin results output o\n        step increment = 1\n        format = both\n      end\n"
+          "    end\n  end\nend\n",
+      "/decks/d.i");
+}
+
+TEST(Parser, DatabaseTypeFollowsTheExtension) {
+  using S = FiniteElementModelSpec::Source;
+  for (const char* name : {"m.exo", "m.e", "m.g", "m.gen", "M.EXO", "sub/m.G"}) {
+    const Deck d = deck_with_database(std::string("    database name = ") + name + "\n");
+    EXPECT_EQ(d.models.at(0).source, S::exodus) << name;
+  }
+  EXPECT_EQ(deck_with_database("    database name = m.msh\n").models.at(0).source, S::gmsh);
+  EXPECT_EQ(deck_with_database("    database name = m.exo\n    database type = gmsh\n").models.at(0).source, S::gmsh);
+  const Deck d = deck_with_database("    database name = m.mesh\n    database type = exodus\n");
+  EXPECT_EQ(d.models.at(0).source, S::exodus);
+  EXPECT_EQ(d.models.at(0).database_path, "/decks/m.mesh");
+  EXPECT_TRUE(d.procedure.region.results->xdmf);
+  EXPECT_TRUE(d.procedure.region.results->exodus);
+  EXPECT_NE(d.resolved_text.find("format = both"), std::string::npos);
+}
+
+TEST(Parser, ResultsFormatDefaultsToXdmf) {
+  const Deck d = parse_deck_string(deck_with_region(
+                                       "      begin results output o\n        step increment = 1\n      end\n"),
+                                   "d.i");
+  EXPECT_TRUE(d.procedure.region.results->xdmf);
+  EXPECT_FALSE(d.procedure.region.results->exodus);
+  const Deck e = parse_deck_string(deck_with_region("      begin results output o\n        step increment = 1\n"
+                                                    "        format = exodus\n      end\n"),
+                                   "d.i");
+  EXPECT_FALSE(e.procedure.region.results->xdmf);
+  EXPECT_TRUE(e.procedure.region.results->exodus);
+}
+
+}  // namespace

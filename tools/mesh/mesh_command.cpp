@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `tribex mesh SUBCOMMAND ...`: mesh generators that write gmsh .msh files. Today: `afm` (a
-// substrate block on an AFM height map, mesh/afm/afm_mesh.hpp). `box` and `asperity` are free
-// second words for later generators.
+// substrate block on an AFM height map, mesh/afm/afm_mesh.hpp), and `convert` (gmsh .msh <->
+// Exodus II .exo/.g, by the file extensions). `box` and `asperity` are free second words for later
+// generators.
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "mesh/afm/afm_mesh.hpp"
+#include "mesh/exodus_io.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
@@ -24,7 +26,31 @@ using tools::BadInput;
 const char* mesh_usage =
     "usage: tribex mesh GENERATOR [options]   (tribex mesh GENERATOR --help)\n"
     "generators:\n"
-    "  afm     all-hex substrate block whose top follows an AFM height map (spline surface)\n";
+    "  afm     all-hex substrate block whose top follows an AFM height map (spline surface)\n"
+    "  convert IN OUT: a mesh file from gmsh .msh to Exodus II .exo/.e/.g/.gen or back (by the extensions)\n";
+
+const char* convert_usage =
+    "usage: tribex mesh convert IN OUT\n"
+    "Reads IN and writes OUT, each a gmsh .msh (4.1 binary when written) or an Exodus II .exo/.e/.g/.gen\n"
+    "(64-bit-offset netCDF), chosen by the extension. Blocks, node sets and side sets keep their names\n"
+    "(mesh/README.md: the gmsh and Exodus II mapping rules). The mesh is validated on reading.\n";
+
+int convert(const std::vector<std::string>& argv) {
+  Args a(argv, "tribex mesh convert", convert_usage);
+  if (a.answered_help()) return tools::exit_ok;
+  const std::string in = a.positional(0, "IN");
+  const std::string out = a.positional(1, "OUT");
+  a.finish();
+  if (a.positional_count() != 2) throw BadInput("tribex mesh convert takes IN and OUT, got " + std::to_string(a.positional_count()) + " files");
+  const mesh::Mesh m = mesh::is_exodus_path(in) ? mesh::read_exodus(in) : mesh::read_gmsh(in);
+  if (mesh::is_exodus_path(out))
+    mesh::write_exodus(m, out);
+  else
+    mesh::write_gmsh(m, out);
+  std::printf("wrote %s: %d nodes, %d hex8 elements, %zu block(s), %zu node set(s), %zu side set(s)\n", out.c_str(),
+              m.node_count(), m.element_count(), m.blocks.size(), m.node_sets.size(), m.side_sets.size());
+  return tools::exit_ok;
+}
 
 const char* afm_usage =
     "usage: tribex mesh afm FILE -o MESH.msh [options]\n"
@@ -115,7 +141,8 @@ int mesh_command(const std::vector<std::string>& argv) {
   }
   const std::vector<std::string> rest(argv.begin() + 1, argv.end());
   if (argv[0] == "afm") return afm(rest);
-  throw BadInput("tribex mesh: unknown generator '" + argv[0] + "'; available: afm (tribex mesh --help)");
+  if (argv[0] == "convert") return convert(rest);
+  throw BadInput("tribex mesh: unknown generator '" + argv[0] + "'; available: afm, convert (tribex mesh --help)");
 }
 
 }  // namespace tribex::cli

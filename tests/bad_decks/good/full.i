@@ -101,6 +101,7 @@ begin sierra tip_on_flat
         time increment = 100 ps
         nodal variables = displacement velocity force acceleration
         element variables = stress
+        format = both
       end results output out
       begin history output hist
         step increment = 10

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// Exodus II mesh files (.exo, .e, .g, .gen) read and written through the Exodus II C API
+// (Debian's libexodusii, on netCDF). Mapping (mesh/README.md, "Exodus II mapping rules"):
+// element blocks -> blocks (HEX8 only), node sets -> node sets, side sets -> side sets with
+// face = Exodus side - 1. Unnamed entities get Sierra's default names: block_<id>, nodelist_<id>,
+// surface_<id>.
+#pragma once
+
+#include <string>
+
+#include "mesh/mesh.hpp"
+
+namespace tribex::mesh {
+
+/// The netCDF flavour an Exodus file is written in. tribex writes 64-bit-offset classic files (no
+/// HDF5 inside, read by every Exodus tool); netCDF-4 (HDF5-based) is offered for tests and users
+/// that need it. Reading takes any of classic, 64-bit offset, CDF5 and netCDF-4.
+enum class ExodusFormat { offset64, netcdf4 };
+
+/// True for the names tribex treats as Exodus II: .exo .e .g .gen (case-insensitive).
+bool is_exodus_path(const std::string& path);
+
+/// Throws MeshError (one line: file name, what is wrong, the fix) for a missing or unreadable file,
+/// a file that is not Exodus II, a 2-D mesh, a block that is not HEX8, indices out of range, or an
+/// invalid mesh (validate). Nodes no hex uses are dropped (node sets keep the others).
+Mesh read_exodus(const std::string& path);
+
+/// Validates the mesh, writes it to `.NAME.partial` beside `path` and renames it (a failed write
+/// leaves nothing half-written). Blocks in element order with ids 1..B, node and side sets in name
+/// order with ids 1..N, all named. MeshError on failure.
+void write_exodus(const Mesh& mesh, const std::string& path, ExodusFormat format = ExodusFormat::offset64);
+
+namespace exodus {
+
+/// For the results writer (solver/output/exodus_writer.cpp): creates `path` (clobbering it), writes
+/// the mesh as write_exodus does and returns the open Exodus id (the caller closes it with
+/// ex_close). `title` is the database title (at most 80 characters kept). Throws MeshError.
+int create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format);
+
+/// The Exodus library's last error text, for messages ("" when it has none).
+std::string last_error();
+
+}  // namespace exodus
+}  // namespace tribex::mesh

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// Results output in Exodus II (DIR/results.exo), beside or instead of results.h5 + results.xdmf
+// (deck: `format = xdmf | exodus | both` in `begin results output`). README.md, "Exodus II output".
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "solver/output/results_writer.hpp"
+
+namespace tribex::solver {
+
+/// Writes DIR/results.exo: the mesh (coordinates in m, named HEX8 blocks, node sets, side sets)
+/// once, then per step the time, the nodal and element fields (vectors as NAME_x/_y/_z, symmetric
+/// tensors as NAME_xx/_yy/_zz/_xy/_yz/_zx, the names ParaView's Exodus reader recombines) and the
+/// global variables. 64-bit-offset netCDF (no HDF5 inside). ex_update after every step, so a
+/// killed run leaves every completed step readable.
+///
+/// Parallel runs: every rank constructs it with the whole mesh and its slab and calls write_step
+/// (collective); the values are gathered to rank 0 (MPI_Gatherv), which alone writes the file.
+class ExodusWriter {
+ public:
+  /// global_names: the global variables written with every step (same order as the values).
+  /// Creates DIR and the file (truncating an old one); SetupError (one line, path and reason) when
+  /// it cannot. resume_time (a restarted run, s): an existing DIR/results.exo of this mesh is
+  /// rewritten with its steps before that time (SetupError if it is another mesh's file).
+  /// Collective in a parallel run, but only rank 0 touches files and can throw; the caller
+  /// agrees on errors afterwards.
+  ExodusWriter(const std::string& directory, const mesh::Mesh& mesh, std::vector<std::string> global_names,
+               const ResultsSlab* slab = nullptr, std::optional<double> resume_time = std::nullopt);
+  ~ExodusWriter();  // closes; the file stays valid
+  ExodusWriter(const ExodusWriter&) = delete;
+  ExodusWriter& operator=(const ExodusWriter&) = delete;
+
+  /// Appends one step (time in s, increasing). The first step's fields (names, components) fix the
+  /// file's variables; later steps must carry the same (std::invalid_argument before anything is
+  /// written). A write failure throws OutputError naming the file (on every rank).
+  void write_step(double time, std::span<const FieldView> nodal, std::span<const FieldView> element,
+                  std::span<const double> globals);
+
+  /// ex_update (rank 0). write_step already does it.
+  void flush();
+
+  int step_count() const;
+  const std::string& path() const;
+
+  /// The Exodus variable names of one field: NAME (1 component), NAME_x/_y/_z (3), NAME_xx/_yy/
+  /// _zz/_xy/_yz/_zx (6, Voigt order), NAME_xx/_xy/_xz/_yx/_yy/_yz/_zx/_zy/_zz (9), else NAME_1..
+  static std::vector<std::string> component_names(const std::string& name, int components);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tribex::solver

@@ -1,0 +1,246 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Checks of results.exo (tests/output/README.md), run by CTest with Debian's /usr/bin/python3
+(netCDF4 and h5py).
+
+  check_exodus.py fields TRIBEX DECK OUT [--ranks N]
+      runs DECK (format = both) on N ranks, then reads results.exo with netCDF4 and results.h5 with
+      h5py: same coordinates and connectivity (exactly), block names equal to results.h5's, the
+      node and side sets of the generated boxes present and on the right faces; every Exodus time
+      equal to results.h5's and every nodal and element variable equal to its results.h5 component
+      within 1e-12 of the field's largest value; every global variable equal to history.csv's column
+      at that step within 1e-12 relative. Prints the largest differences.
+  check_exodus.py restart TRIBEX DECK OUT --stop STEP [--ranks N]
+      uninterrupted run, then a run stopped after STEP and resumed into the same folder: the resumed
+      results.exo (rewritten with the steps before the restart time, then continued) holds the same
+      times and bitwise the same values as the uninterrupted one.
+  check_exodus.py mesh TRIBEX DECK OUT
+      runs DECK (generated boxes), then the same deck on its results.exo as `database name = mesh.g`,
+      on a netCDF-4 copy of it (mesh4.g) and on `tribex mesh convert mesh.g mesh.msh`: history.csv
+      byte-identical in all four.
+"""
+import argparse
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import h5py
+import netCDF4
+import numpy as np
+
+TOL = 1e-12
+
+
+def run(tribex, deck, out, ranks=1, *extra, check=True):
+    cmd = []
+    if ranks > 1:
+        cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+    cmd += [tribex, "run", deck, "-o", out, "--quiet", *extra]
+    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
+    if check and p.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
+    return p
+
+
+def names(nc, var):
+    """Exodus name arrays (eb_names, name_nod_var, ...) as Python strings."""
+    if var not in nc.variables:
+        return []
+    return ["".join(c.decode() for c in row if c not in (b"", b"\x00")).strip() for row in nc.variables[var][:].data]
+
+
+def history(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    return rows[0], {int(float(r[0])): [float(x) for x in r] for r in rows[1:]}
+
+
+# results.h5 stores the symmetric stress as the full 3x3 row-major tensor.
+SYM = {"xx": 0, "yy": 4, "zz": 8, "xy": 1, "yz": 5, "zx": 6}
+VEC = {"x": 0, "y": 1, "z": 2}
+
+
+def h5_component(group, exo_name):
+    """The results.h5 column an Exodus variable name stands for, or None."""
+    if exo_name in group:
+        return group[exo_name][()]
+    base, _, suffix = exo_name.rpartition("_")
+    if base in group:
+        data = group[base][()]
+        index = SYM.get(suffix) if data.shape[1] == 9 else VEC.get(suffix)
+        return None if index is None else data[:, index]
+    return None
+
+
+def fields(a):
+    out = a.out
+    shutil.rmtree(out, ignore_errors=True)
+    run(a.tribex, a.deck, out, a.ranks)
+    exo = netCDF4.Dataset(os.path.join(out, "results.exo"))
+    h5 = h5py.File(os.path.join(out, "results.h5"), "r")
+    fmt = exo.data_model
+    if fmt != "NETCDF3_64BIT_OFFSET":
+        sys.exit(f"FAIL: results.exo is {fmt}, expected NETCDF3_64BIT_OFFSET")
+
+    # Mesh: coordinates, connectivity (blocks in element order), names, sets.
+    xyz = np.stack([exo.variables[c][:].data for c in ("coordx", "coordy", "coordz")], axis=1)
+    if not np.array_equal(xyz, h5["/mesh/coordinates"][()]):
+        sys.exit("FAIL: coordinates differ")
+    nblocks = exo.dimensions["num_el_blk"].size
+    conn = np.concatenate([exo.variables[f"connect{b + 1}"][:].data for b in range(nblocks)]) - 1
+    if not np.array_equal(conn, h5["/mesh/connectivity"][()]):
+        sys.exit("FAIL: connectivity differs")
+    block_names = names(exo, "eb_names")
+    h5_blocks = h5["/mesh/block_id"].attrs["block_names"]
+    h5_blocks = (h5_blocks.decode() if isinstance(h5_blocks, bytes) else str(h5_blocks)).split("\n")
+    if block_names != h5_blocks:
+        sys.exit(f"FAIL: block names {block_names} != results.h5's {h5_blocks}")
+    node_sets, side_sets = names(exo, "ns_names"), names(exo, "ss_names")
+    for b in block_names:
+        for face, side in (("xmin", 4), ("xmax", 2), ("ymin", 1), ("ymax", 3), ("zmin", 5), ("zmax", 6)):
+            name = f"{b}_{face}"
+            if name not in node_sets or name not in side_sets:
+                sys.exit(f"FAIL: set {name} missing (node sets {node_sets}, side sets {side_sets})")
+            nodes = exo.variables[f"node_ns{node_sets.index(name) + 1}"][:].data - 1
+            axis, end = "xyz".index(face[0]), (np.min if face[1:] == "min" else np.max)
+            block_nodes = np.unique(conn[[i for i, n in enumerate(h5["/mesh/block_id"][()]) if block_names[n] == b]])
+            if not np.all(xyz[nodes, axis] == end(xyz[block_nodes, axis])):
+                sys.exit(f"FAIL: node set {name} is not on its face")
+            sides = exo.variables[f"side_ss{side_sets.index(name) + 1}"][:].data
+            if not np.all(sides == side):
+                sys.exit(f"FAIL: side set {name} has sides {set(sides)}, expected Exodus side {side}")
+    print(f"mesh: {xyz.shape[0]} nodes, {conn.shape[0]} elements, blocks {block_names}, "
+          f"{len(node_sets)} node sets, {len(side_sets)} side sets: equal to results.h5")
+
+    # Steps: times, nodal, element and global variables.
+    times = exo.variables["time_whole"][:].data
+    steps = sorted(h5["/steps"].keys())
+    if len(times) != len(steps) or len(times) < 2:
+        sys.exit(f"FAIL: {len(times)} Exodus times, {len(steps)} results.h5 steps")
+    nodal, element, globals_ = names(exo, "name_nod_var"), names(exo, "name_elem_var"), names(exo, "name_glo_var")
+    header, rows = history(os.path.join(out, "history.csv"))
+    if globals_ != header:
+        sys.exit(f"FAIL: global variables {globals_} != history.csv columns {header}")
+    worst = {"nodal": 0.0, "element": 0.0, "global": 0.0}
+    block_sizes = [exo.dimensions[f"num_el_in_blk{b + 1}"].size for b in range(nblocks)]
+    for k, step in enumerate(steps):
+        g = h5["/steps"][step]
+        if times[k] != g.attrs["time"]:
+            sys.exit(f"FAIL: step {k}: Exodus time {times[k]!r} != results.h5 {g.attrs['time']!r}")
+        for v, name in enumerate(nodal):
+            ref = h5_component(g["nodal"], name)
+            if ref is None:
+                sys.exit(f"FAIL: nodal variable {name} has no results.h5 field")
+            got = exo.variables[f"vals_nod_var{v + 1}"][k, :].data
+            scale = max(np.max(np.abs(ref)), 1e-300)
+            worst["nodal"] = max(worst["nodal"], np.max(np.abs(got - ref)) / scale)
+        for v, name in enumerate(element):
+            ref = h5_component(g["element"], name)
+            if ref is None:
+                sys.exit(f"FAIL: element variable {name} has no results.h5 field")
+            got = np.concatenate([exo.variables[f"vals_elem_var{v + 1}eb{b + 1}"][k, :].data for b in range(nblocks)])
+            scale = max(np.max(np.abs(ref)), 1e-300)
+            worst["element"] = max(worst["element"], np.max(np.abs(got - ref)) / scale)
+        values = exo.variables["vals_glo_var"][k, :].data
+        row = rows.get(int(values[0]))
+        if row is None:
+            sys.exit(f"FAIL: no history.csv row for step {values[0]}")
+        for j, name in enumerate(globals_):
+            diff = abs(values[j] - row[j]) / max(abs(row[j]), 1e-300)
+            worst["global"] = max(worst["global"], diff if row[j] != 0 else abs(values[j]))
+    print(f"{len(times)} steps; variables: nodal {nodal}, element {element}, {len(globals_)} global; block sizes {block_sizes}")
+    print("largest difference Exodus vs results.h5 / history.csv (relative to the field's largest value): " +
+          ", ".join(f"{k} {v:.3g}" for k, v in worst.items()))
+    if max(worst.values()) > TOL:
+        sys.exit(f"FAIL: a difference above {TOL}")
+    print(f"results.exo {os.path.getsize(os.path.join(out, 'results.exo'))} bytes, results.h5 "
+          f"{os.path.getsize(os.path.join(out, 'results.h5'))} bytes")
+    print("PASS")
+
+
+def all_values(path):
+    exo = netCDF4.Dataset(path)
+    return {k: v[:].data.copy() for k, v in exo.variables.items()}
+
+
+def restart(a):
+    full, stopped = os.path.join(a.out, "full"), os.path.join(a.out, "stopped")
+    for d in (full, stopped):
+        shutil.rmtree(d, ignore_errors=True)
+    run(a.tribex, a.deck, full, a.ranks)
+    p = run(a.tribex, a.deck, stopped, a.ranks, "--stop-at-step", str(a.stop), check=False)
+    if p.returncode != 130:
+        sys.exit(f"FAIL: the stopped run exited {p.returncode}, expected 130\n{p.stderr}")
+    before = len(all_values(os.path.join(stopped, "results.exo"))["time_whole"])
+    run(a.tribex, a.deck, stopped, a.ranks, "--restart", os.path.join(stopped, "restart.h5"))
+    want, got = all_values(os.path.join(full, "results.exo")), all_values(os.path.join(stopped, "results.exo"))
+    if sorted(want) != sorted(got):
+        sys.exit(f"FAIL: variables differ: {sorted(set(want) ^ set(got))}")
+    for k in want:
+        if want[k].shape != got[k].shape or not np.array_equal(want[k], got[k]):
+            sys.exit(f"FAIL: {k} differs after the restart ({want[k].shape} vs {got[k].shape})")
+    print(f"stopped run wrote {before} steps (the last at the stop); resumed results.exo: {len(want['time_whole'])} "
+          "steps, every variable bitwise equal to the uninterrupted run's")
+    print("PASS")
+
+
+def to_netcdf4(source, target):
+    """A copy of a netCDF-3 file in NETCDF4_CLASSIC (what Exodus writes with EX_NETCDF4)."""
+    with netCDF4.Dataset(source) as src, netCDF4.Dataset(target, "w", format="NETCDF4_CLASSIC") as dst:
+        dst.setncatts({k: src.getncattr(k) for k in src.ncattrs()})
+        for name, dim in src.dimensions.items():
+            dst.createDimension(name, None if dim.isunlimited() else len(dim))
+        for name, var in src.variables.items():
+            out = dst.createVariable(name, var.dtype if var.dtype != np.dtype("S1") else "S1", var.dimensions)
+            out.setncatts({k: var.getncattr(k) for k in var.ncattrs()})
+            var.set_auto_maskandscale(False)
+            out.set_auto_maskandscale(False)
+            out[:] = var[:]
+
+
+def mesh(a):
+    gen = os.path.join(a.out, "generated")
+    shutil.rmtree(a.out, ignore_errors=True)
+    run(a.tribex, a.deck, gen)
+    shutil.copy(os.path.join(gen, "results.exo"), os.path.join(a.out, "mesh.g"))
+    p = subprocess.run([a.tribex, "mesh", "convert", os.path.join(a.out, "mesh.g"), os.path.join(a.out, "mesh.msh")],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"FAIL: tribex mesh convert exited {p.returncode}\n{p.stdout}{p.stderr}")
+    # The same mesh as netCDF-4 (HDF5 inside, as Cubit may write it): read by tribex through the Open
+    # MPI HDF5 of libnetcdf_mpi, in the process that then writes results.h5 with the same HDF5.
+    to_netcdf4(os.path.join(a.out, "mesh.g"), os.path.join(a.out, "mesh4.g"))
+    text = open(a.deck).read()
+    # The generated boxes give way to the mesh file (the deck's block and set names are its names).
+    text = re.sub(r"\n\s*begin generated box (\w+).*?end generated box \1", "", text, flags=re.S)
+    reference = open(os.path.join(gen, "history.csv"), "rb").read()
+    for mesh_file in ("mesh.g", "mesh4.g", "mesh.msh"):
+        deck = os.path.join(a.out, f"from_{mesh_file.replace('.', '_')}.i")
+        with open(deck, "w") as f:
+            f.write(re.sub(r"(begin finite element model \w+)", rf"\1\n    database name = {mesh_file}", text, count=1))
+        out = os.path.join(a.out, mesh_file.replace(".", "_"))
+        run(a.tribex, deck, out)
+        if open(os.path.join(out, "history.csv"), "rb").read() != reference:
+            sys.exit(f"FAIL: the run on {mesh_file} has another history.csv than the run on the generated mesh")
+        print(f"run on {mesh_file}: history.csv byte-identical to the generated mesh's")
+    print("PASS")
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("mode", choices=["fields", "restart", "mesh"])
+    p.add_argument("tribex")
+    p.add_argument("deck")
+    p.add_argument("out")
+    p.add_argument("--ranks", type=int, default=1)
+    p.add_argument("--stop", type=int, default=0)
+    a = p.parse_args()
+    {"fields": fields, "restart": restart, "mesh": mesh}[a.mode](a)
+
+
+if __name__ == "__main__":
+    main()
