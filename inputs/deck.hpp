@@ -261,6 +261,7 @@ struct ResultsOutputSpec {
   std::optional<int> step_increment;
   std::vector<std::string> nodal_variables;    // displacement velocity force (+ later ones)
   std::vector<std::string> element_variables;  // stress
+  std::string length_unit = "auto";            // auto nm um m: coordinates and displacement in results.h5
   SourceLocation where;
 };
 

@@ -445,6 +445,7 @@ class Builder {
         schedule(c, o);
         o.nodal_variables = words(c, "nodal variables");
         o.element_variables = words(c, "element variables");
+        o.length_unit = word(c, "length unit");
         r.results = o;
       } else if (t == "history output") {
         HistoryOutputSpec o;

@@ -250,7 +250,8 @@ void DeckRun::open_results() {
     // A restarted run continues the folder's results.h5 (the steps up to the restart time stay).
     results_ = std::make_unique<ResultsWriter>(out_.string(), whole_mesh_ ? *whole_mesh_ : model_->mesh,
                                                ranks_ > 1 ? &slab_ : nullptr,
-                                               resume_ ? std::optional<double>(integrator_->time()) : std::nullopt);
+                                               resume_ ? std::optional<double>(integrator_->time()) : std::nullopt,
+                                               ResultsOptions{region_.results->length_unit});
   } catch (...) {
     error = std::current_exception();
   }
