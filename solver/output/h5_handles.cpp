@@ -50,7 +50,13 @@ H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsi
   } else if (H5Pset_alloc_time(dcpl.get(), H5D_ALLOC_TIME_LATE) < 0) {
     fail(file, "prepare dataset '" + name + "'");
   }
-  H5Handle d(H5Dcreate2(loc, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+  // No chunk cache: every chunk is written whole by one H5Dwrite, so caching gains nothing, and a
+  // chunk left dirty in the cache when the disk is full makes H5Fclose fail and HDF5's exit
+  // handler crash on the half-closed file (cli_disk_full: SIGSEGV); uncached, the write fails.
+  H5Handle dapl(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose);
+  if (!dapl.valid() || H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT) < 0)
+    fail(file, "prepare dataset '" + name + "'");
+  H5Handle d(H5Dcreate2(loc, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), dapl.get()),
              H5Dclose);
   if (!d.valid()) fail(file, "create dataset '" + name + "'");
   return d;

@@ -22,6 +22,14 @@
 namespace tribex::solver {
 namespace {
 
+// HDF5 1.10.8 with chunked (compressed) datasets: when the disk fills, the failed metadata flush
+// leaves the file's cache half-flushed ("slist already enabled?"), H5Fclose fails, and HDF5's own
+// exit handler then closes the file again and crashes (SIGSEGV instead of exit code 3,
+// cli_disk_full). Every file tribex opens is closed by its RAII handle and flushed after every
+// step, so the handler has nothing to do: it is switched off before HDF5 initialises (static
+// initialisation, before main; H5dont_atexit has no effect once the library is up).
+[[maybe_unused]] const bool hdf5_exit_handler_off = (H5dont_atexit(), true);
+
 using output::Center;
 using output::H5Handle;
 using output::QuietHdf5Errors;
