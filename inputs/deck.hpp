@@ -265,6 +265,7 @@ struct ResultsOutputSpec {
   std::vector<std::string> element_variables;  // stress
   bool xdmf = true;     // `format`: xdmf (default) or both -> results.h5 + results.xdmf
   bool exodus = false;  //           exodus or both -> results.exo
+  std::string length_unit = "auto";            // auto nm um m: coordinates and displacement in results.h5
   SourceLocation where;
 };
 

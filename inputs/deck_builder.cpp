@@ -462,6 +462,7 @@ class Builder {
         const std::string format = word(c, "format");
         o.xdmf = format != "exodus";
         o.exodus = format == "exodus" || format == "both";
+        o.length_unit = word(c, "length unit");
         r.results = o;
       } else if (t == "history output") {
         HistoryOutputSpec o;

@@ -100,18 +100,21 @@ void DeckRun::write_fields(double t, long n) {
     if (name == "velocity") v = &integrator_->velocity();
     if (name == "acceleration") v = &integrator_->acceleration();
     if (name == "force") v = &integrator_->force();
-    if (v) nodal.push_back({name, 3, owned_rows(*v, 3, false)});
-    if (model.contact && name == "contact_traction") nodal.push_back({name, 3, owned_rows(model.contact->traction(), 3, true)});
-    if (model.contact && name == "contact_status") nodal.push_back({name, 1, owned_rows(model.contact->status(), 1, true)});
+    // SI units (the writer puts lengths, unit "m", into the file's length unit).
+    const char* unit = name == "displacement" ? "m" : name == "velocity" ? "m/s" : name == "acceleration" ? "m/s^2" : "N";
+    if (v) nodal.push_back({name, 3, owned_rows(*v, 3, false), unit});
+    if (model.contact && name == "contact_traction")
+      nodal.push_back({name, 3, owned_rows(model.contact->traction(), 3, true), "Pa"});
+    if (model.contact && name == "contact_status") nodal.push_back({name, 1, owned_rows(model.contact->status(), 1, true), "1"});
   }
   for (const auto& name : region_.results->element_variables) {
     if (name == "stress") {
       for (const auto& b : model.blocks)
         std::copy(b.stress.begin(), b.stress.end(), element_stress_.begin() + 6 * b.first_element);
-      element.push_back({"stress", 6, element_stress_});
+      element.push_back({"stress", 6, element_stress_, "Pa"});
     } else if (name == "equivalent_plastic_strain") {
       for (const auto& b : model.blocks) equivalent_plastic_strain(b, element_plastic_strain_.data() + b.first_element);
-      element.push_back({name, 1, element_plastic_strain_});
+      element.push_back({name, 1, element_plastic_strain_, "1"});
     }
   }
   if (results_) results_->write_step(t, nodal, element);

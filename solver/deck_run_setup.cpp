@@ -253,7 +253,8 @@ void DeckRun::open_results() {
     const mesh::Mesh& mesh = whole_mesh_ ? *whole_mesh_ : model_->mesh;
     const auto resume_time = resume_ ? std::optional<double>(integrator_->time()) : std::nullopt;
     if (region_.results->xdmf)
-      results_ = std::make_unique<ResultsWriter>(out_.string(), mesh, ranks_ > 1 ? &slab_ : nullptr, resume_time);
+      results_ = std::make_unique<ResultsWriter>(out_.string(), mesh, ranks_ > 1 ? &slab_ : nullptr, resume_time,
+                                                 ResultsOptions{region_.results->length_unit});
     if (region_.results->exodus) {
       std::vector<std::string> globals;  // the history columns, `step` first
       for (const auto& c : history_columns_) globals.push_back(c.name);

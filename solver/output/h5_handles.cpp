@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include "solver/errors.hpp"
@@ -28,16 +29,34 @@ H5Handle create_group(hid_t loc, const std::string& name, const std::string& fil
 }
 
 H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsize_t rows,
-                        hsize_t cols, const std::string& file) {
+                        hsize_t cols, const std::string& file, int gzip_level) {
   const hsize_t dims[2] = {rows, cols};
-  H5Handle space(H5Screate_simple(cols == 0 ? 1 : 2, dims, nullptr), H5Sclose);
+  const int rank = cols == 0 ? 1 : 2;
+  H5Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
   H5Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   // No fill pass: the whole dataset is written right after creation, so filling would double
   // the I/O of every step for nothing.
-  if (!space.valid() || !dcpl.valid() || H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER) < 0 ||
-      H5Pset_alloc_time(dcpl.get(), H5D_ALLOC_TIME_LATE) < 0)
+  if (!space.valid() || !dcpl.valid() || H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER) < 0)
     fail(file, "prepare dataset '" + name + "'");
-  H5Handle d(H5Dcreate2(loc, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+  if (gzip_level > 0 && rows > 0) {
+    // Whole rows per chunk, 64 Ki values (512 KiB of f64): under HDF5's default 1 MiB chunk cache,
+    // large enough for deflate to find the repeats. Shuffle groups the bytes of equal significance
+    // (the exponents of neighbouring values agree), which is what makes float64 compress at all.
+    const hsize_t width = std::max<hsize_t>(cols, 1);
+    const hsize_t chunk[2] = {std::clamp<hsize_t>(65536 / width, 1, rows), cols};
+    if (H5Pset_chunk(dcpl.get(), rank, chunk) < 0 || H5Pset_shuffle(dcpl.get()) < 0 ||
+        H5Pset_deflate(dcpl.get(), static_cast<unsigned>(gzip_level)) < 0)
+      fail(file, "prepare compressed dataset '" + name + "'");
+  } else if (H5Pset_alloc_time(dcpl.get(), H5D_ALLOC_TIME_LATE) < 0) {
+    fail(file, "prepare dataset '" + name + "'");
+  }
+  // No chunk cache: every chunk is written whole by one H5Dwrite, so caching gains nothing, and a
+  // chunk left dirty in the cache when the disk is full makes H5Fclose fail and HDF5's exit
+  // handler crash on the half-closed file (cli_disk_full: SIGSEGV); uncached, the write fails.
+  H5Handle dapl(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose);
+  if (!dapl.valid() || H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT) < 0)
+    fail(file, "prepare dataset '" + name + "'");
+  H5Handle d(H5Dcreate2(loc, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), dapl.get()),
              H5Dclose);
   if (!d.valid()) fail(file, "create dataset '" + name + "'");
   return d;
@@ -90,6 +109,17 @@ void write_double_attribute(hid_t loc, const std::string& name, double value, co
              H5Aclose);
   if (!a.valid() || H5Awrite(a.get(), H5T_NATIVE_DOUBLE, &value) < 0)
     fail(what, "write attribute '" + name + "'");
+}
+
+std::string read_string_attribute(hid_t loc, const std::string& name) {
+  if (H5Aexists(loc, name.c_str()) <= 0) return {};
+  H5Handle a(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+  H5Handle type(a.valid() ? H5Aget_type(a.get()) : H5I_INVALID_HID, H5Tclose);
+  if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0) return {};
+  std::string value(H5Tget_size(type.get()), '\0');
+  if (H5Aread(a.get(), type.get(), value.data()) < 0) return {};
+  value.resize(std::strlen(value.c_str()));  // fixed-length strings carry their NUL
+  return value;
 }
 
 void write_string_attribute(hid_t loc, const std::string& name, const std::string& value,

@@ -69,10 +69,12 @@ class QuietHdf5Errors {
 /// a reader can list them in that order rather than by name.
 H5Handle create_group(hid_t loc, const std::string& name, const std::string& file, bool track_order = false);
 
-/// Creates a contiguous dataset of `rows` x `cols` (cols == 0: one-dimensional) elements of
-/// `file_type`, allocated late and never filled (every byte is written by write_rows).
+/// Creates a dataset of `rows` x `cols` (cols == 0: one-dimensional) elements of `file_type`,
+/// never filled (every byte is written by write_rows). gzip_level 0: contiguous, allocated late;
+/// 1..9: chunked (whole rows, about 512 KiB of values per chunk) with the shuffle filter and
+/// deflate at that level (chunks are what parallel HDF5 compresses in a collective write).
 H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsize_t rows,
-                        hsize_t cols, const std::string& file);
+                        hsize_t cols, const std::string& file, int gzip_level = 0);
 
 /// Writes rows [row_offset, row_offset + rows) of a dataset created by create_dataset from a
 /// contiguous [rows][cols] buffer of `mem_type`, through explicit file and memory dataspaces.
@@ -87,6 +89,9 @@ void write_row_runs(hid_t dataset, hid_t mem_type, const void* data, const std::
 
 /// Writes a scalar double attribute `name` on `loc`.
 void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what);
+
+/// Reads the string attribute `name` of `loc`; empty when it is missing or not a string.
+std::string read_string_attribute(hid_t loc, const std::string& name);
 
 /// Writes a fixed-length string attribute `name` on `loc`.
 void write_string_attribute(hid_t loc, const std::string& name, const std::string& value,

@@ -15,11 +15,20 @@
 
 #include "solver/errors.hpp"
 #include "solver/output/h5_handles.hpp"
+#include "solver/output/length_unit.hpp"
 #include "solver/output/xdmf_document.hpp"
 #include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver {
 namespace {
+
+// HDF5 1.10.8 with chunked (compressed) datasets: when the disk fills, the failed metadata flush
+// leaves the file's cache half-flushed ("slist already enabled?"), H5Fclose fails, and HDF5's own
+// exit handler then closes the file again and crashes (SIGSEGV instead of exit code 3,
+// cli_disk_full). Every file tribex opens is closed by its RAII handle and flushed after every
+// step, so the handler has nothing to do: it is switched off before HDF5 initialises (static
+// initialisation, before main; H5dont_atexit has no effect once the library is up).
+[[maybe_unused]] const bool hdf5_exit_handler_off = (H5dont_atexit(), true);
 
 using output::Center;
 using output::H5Handle;
@@ -47,6 +56,25 @@ int stored_components(int components) { return components == 6 ? 9 : components;
 // Voigt index of full-tensor entry (i, j), row-major: xx xy xz / yx yy yz / zx zy zz.
 constexpr int voigt_of_full[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
 
+// The XDMF grids: one per block (blocks are contiguous element ranges), in element order; a run of
+// elements in no block (block_id -1) gets a grid "no_block", so every element is in one grid.
+std::vector<output::XdmfBlock> grid_ranges(const mesh::Mesh& mesh, long long elements) {
+  std::vector<output::XdmfBlock> blocks;
+  for (const auto& b : mesh.blocks)
+    if (b.element_count > 0) blocks.push_back({b.name, b.first_element, b.element_count});
+  std::sort(blocks.begin(), blocks.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<output::XdmfBlock> grids;
+  long long next = 0;
+  for (const auto& b : blocks) {
+    if (b.first > next) grids.push_back({"no_block", next, b.first - next});
+    if (b.first < next) return {{"mesh", 0, elements}};  // overlapping blocks: one grid, block_id tells them apart
+    grids.push_back(b);
+    next = b.first + b.count;
+  }
+  if (next < elements) grids.push_back({"no_block", next, elements - next});
+  return grids;
+}
+
 }  // namespace
 
 struct ResultsWriter::Impl {
@@ -56,23 +84,32 @@ struct ResultsWriter::Impl {
   long long nodes = 0;
   long long elements = 0;
   H5Handle file;
+  output::LengthUnit unit;  // of coordinates and of every field given in metres
+  int gzip_level = 1;
   output::XdmfDocument doc;
   std::vector<FieldSpec> nodal_spec;
   std::vector<FieldSpec> element_spec;
   std::vector<double> tensor_buffer;  // reused every step: full tensors expanded from Voigt
+  std::vector<double> scaled_buffer;  // reused every step: a length field in the file's unit
   double last_time = 0.0;
   // Parallel: this rank's rows (runs) and whether it is rank 0.
   bool parallel = false, root = true;
   std::vector<std::array<hsize_t, 2>> node_runs, element_runs;
   long long node_rows = 0, element_rows = 0;
 
-  Impl(std::string dir, long long n, long long e, std::vector<std::string> block_names)
+  Impl(std::string dir, long long n, long long e, std::vector<output::XdmfBlock> grids, output::LengthUnit length,
+       int gzip)
       : directory(std::move(dir)),
         h5_path((std::filesystem::path(directory) / "results.h5").string()),
         xdmf_path((std::filesystem::path(directory) / "results.xdmf").string()),
         nodes(n),
         elements(e),
-        doc("results.h5", n, e, std::move(block_names)) {}
+        unit(std::move(length)),
+        gzip_level(gzip),
+        doc("results.h5", n, e, std::move(grids), unit.name) {}
+
+  // The unit a field is stored in: the length unit for fields in metres, else the field's own.
+  std::string stored_unit(const std::string& field_unit) const { return field_unit == "m" ? unit.name : field_unit; }
 
   void check_fields(std::span<const FieldView> fields, long long entities, const char* kind,
                     const std::vector<FieldSpec>& spec, std::set<std::string>& seen) const;
@@ -135,6 +172,14 @@ bool ResultsWriter::Impl::open_for_resume(hid_t fapl, double resume_time) {
     throw SetupError("cannot continue '" + h5_path + "': it is not the results file of this mesh (" +
                      std::to_string(nodes) + " nodes, " + std::to_string(elements) +
                      " elements); move it away or resume into another output folder (-o)");
+  // The file keeps its unit: files written before the unit was recorded are in metres.
+  const std::string file_unit = output::read_string_attribute(f, "length_unit");
+  try {
+    unit = output::length_unit_named(file_unit.empty() ? "m" : file_unit);
+  } catch (const std::invalid_argument&) {
+    throw SetupError("cannot continue '" + h5_path + "': its length_unit '" + file_unit + "' is not m, um or nm");
+  }
+  doc.set_length_unit(unit.name);
   H5Handle steps(H5Gopen2(f, "/steps", H5P_DEFAULT), H5Gclose);
   for (int k = 0;; ++k) {
     const std::string name = output::XdmfDocument::step_name(k);
@@ -168,7 +213,9 @@ bool ResultsWriter::Impl::open_for_resume(hid_t fapl, double resume_time) {
         const auto shape = dataset_shape(sub.get(), field);
         const int stored = shape[1] == 0 ? 1 : static_cast<int>(shape[1]);
         const std::string path = "/steps/" + name + "/" + kind + "/" + field;
-        attributes.push_back({field, is_nodal ? Center::node : Center::cell, stored, path});
+        H5Handle d(H5Dopen2(sub.get(), field.c_str(), H5P_DEFAULT), H5Dclose);
+        const std::string field_unit = d.valid() ? output::read_string_attribute(d.get(), "units") : std::string();
+        attributes.push_back({field, is_nodal ? Center::node : Center::cell, stored, path, field_unit});
         (is_nodal ? nodal : element).push_back({field, stored});
       }
     }
@@ -215,12 +262,18 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
   const auto rows = static_cast<hsize_t>(entities);
   if (parallel) entities = nodal ? node_rows : element_rows;  // values hold this rank's rows only
   const auto cols = static_cast<hsize_t>(stored == 1 ? 0 : stored);  // scalars are 1-D [entity]
-  H5Handle d = output::create_dataset(group, f.name, H5T_IEEE_F64LE, rows, cols, h5_path);
+  H5Handle d = output::create_dataset(group, f.name, H5T_IEEE_F64LE, rows, cols, h5_path, gzip_level);
+  output::write_string_attribute(d.get(), "units", stored_unit(f.unit), h5_path + ":" + path);
   const double* data = f.values.data();
+  if (f.unit == "m" && unit.per_metre != 1.0) {  // lengths in the file's unit (a metre file: untouched)
+    scaled_buffer.resize(f.values.size());  // no-op after the first step
+    std::transform(f.values.begin(), f.values.end(), scaled_buffer.begin(), [&](double x) { return x * unit.per_metre; });
+    data = scaled_buffer.data();
+  }
   if (f.components == 6) {
     tensor_buffer.resize(static_cast<std::size_t>(entities) * 9);  // no-op after the first step
     for (long long e = 0; e < entities; ++e) {
-      const double* v = data + 6 * e;
+      const double* v = data + 6 * e;  // data: the caller's values or their scaled copy
       double* t = tensor_buffer.data() + 9 * e;
       for (int k = 0; k < 9; ++k) t[k] = v[voigt_of_full[k]];
     }
@@ -233,7 +286,7 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
 }
 
 ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab,
-                             std::optional<double> resume_time) {
+                             std::optional<double> resume_time, const ResultsOptions& options) {
   if (mesh.coordinates.size() % 3 != 0 || mesh.connectivity.size() % 8 != 0)
     throw std::invalid_argument("ResultsWriter: mesh arrays are not [n][3] and [e][8]");
   const long long n = mesh.node_count();
@@ -247,7 +300,10 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
       block_id[static_cast<std::size_t>(b.first_element + k)] = static_cast<int>(names.size());
     names.push_back(b.name);
   }
-  impl_ = std::make_unique<Impl>(directory, n, e, names);
+  if (options.gzip_level < 0 || options.gzip_level > 9)
+    throw std::invalid_argument("ResultsWriter: gzip level " + std::to_string(options.gzip_level) + " is not 0..9");
+  impl_ = std::make_unique<Impl>(directory, n, e, grid_ranges(mesh, e),
+                                 output::resolve_length_unit(options.length_unit, mesh), options.gzip_level);
   QuietHdf5Errors quiet;
   if (slab) {
     impl_->parallel = true;
@@ -302,6 +358,8 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     output::create_group(f, "/steps", p);
     output::write_string_attribute(g.get(), "connectivity_order",
                                    "hex8 as VTK_HEXAHEDRON / docs/theory.md 2.1, 0-based node indices", p);
+    // The unit of the coordinates and of every length field (readers: README "Units").
+    output::write_string_attribute(f, "length_unit", impl_->unit.name, p);
     // Parallel: the mesh is written once, by rank 0 (the others take part with no rows).
     const auto write_all = [&](hid_t d, hid_t type, const void* data, hsize_t rows, hsize_t cols, const std::string& what) {
       if (!impl_->parallel) return output::write_rows(d, type, data, 0, rows, cols, what);
@@ -309,11 +367,17 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
       if (impl_->root) runs.push_back({0, rows});
       output::write_row_runs(d, type, data, runs, cols, what);
     };
-    H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p);
-    write_all(xyz.get(), H5T_NATIVE_DOUBLE, mesh.coordinates.data(), n, 3, p + ":/mesh/coordinates");
-    H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p);
+    const int z = impl_->gzip_level;
+    std::vector<double> xyz_in_unit(mesh.coordinates);
+    for (double& x : xyz_in_unit) x *= impl_->unit.per_metre;
+    H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p, z);
+    output::write_string_attribute(xyz.get(), "units", impl_->unit.name, p);
+    write_all(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), n, 3, p + ":/mesh/coordinates");
+    H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p, z);
+    output::write_string_attribute(conn.get(), "units", "1", p);  // node indices
     write_all(conn.get(), H5T_NATIVE_INT, mesh.connectivity.data(), e, 8, p + ":/mesh/connectivity");
-    H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p);
+    H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p, z);
+    output::write_string_attribute(bid.get(), "units", "1", p);  // block indices
     write_all(bid.get(), H5T_NATIVE_INT, block_id.data(), e, 0, p + ":/mesh/block_id");
     std::string joined;
     for (std::size_t b = 0; b < names.size(); ++b) {
@@ -358,7 +422,7 @@ void ResultsWriter::write_step(double time, std::span<const FieldView> nodal,
     for (const auto& f : k.fields) {
       const std::string path = base + "/" + k.group + "/" + f.name;
       m.write_field(sub.get(), f, k.entities, path, k.center == Center::node);
-      attributes.push_back({f.name, k.center, stored_components(f.components), path});
+      attributes.push_back({f.name, k.center, stored_components(f.components), path, m.stored_unit(f.unit)});
     }
   }
   if (m.doc.step_count() == 0) {
@@ -379,6 +443,7 @@ void ResultsWriter::flush() {
 }
 
 int ResultsWriter::step_count() const { return impl_->doc.step_count(); }
+const std::string& ResultsWriter::length_unit() const { return impl_->unit.name; }
 const std::string& ResultsWriter::h5_path() const { return impl_->h5_path; }
 const std::string& ResultsWriter::xdmf_path() const { return impl_->xdmf_path; }
 

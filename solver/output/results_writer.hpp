@@ -19,10 +19,20 @@ namespace tribex::solver {
 /// (written as a full 3x3 "Tensor" because ParaView's two XDMF readers disagree on "Tensor6"),
 /// 9 full tensor row-major (xx xy xz yx yy yz zx zy zz); any other count is written as a
 /// "Matrix" attribute of that many components.
+/// unit: the SI unit of the values ("m", "m/s", "Pa", "1", ...), written as the dataset's `units`
+/// attribute and shown in ParaView as "name [unit]"; a field in "m" is written in the file's
+/// length unit (ResultsOptions), like the coordinates, so Warp By Vector at scale 1 is right.
 struct FieldView {
   std::string name;  // letters, digits, '_', '-', '.'; unique within a step
   int components = 1;
   std::span<const double> values;
+  std::string unit;  // empty: none given (the `units` attribute is then empty too)
+};
+
+/// How the files are written. The defaults are the deck's (`begin results output`).
+struct ResultsOptions {
+  std::string length_unit = "auto";  // m, um, nm, or auto (nm under 1 um, um under 1 mm, else m)
+  int gzip_level = 1;                // 0: contiguous, uncompressed; 1..9: chunked, shuffle + deflate
 };
 
 /// Parallel runs: the rows of the global node and element arrays this rank writes, as runs
@@ -44,9 +54,10 @@ class ResultsWriter {
   /// connectivity [e][8] (0-based int32), block_id [e] (-1 for elements in no block) and the block
   /// names. Throws SetupError (one line, path and reason) when a file or directory cannot be made.
   /// resume_time (a restarted run, s): continue DIR/results.h5 when it exists, keeping its steps
-  /// before that time and removing the others; SetupError if it is not this mesh's file.
+  /// before that time and removing the others; SetupError if it is not this mesh's file. A
+  /// continued file keeps its own length unit (files without one are in metres).
   ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab = nullptr,
-                std::optional<double> resume_time = std::nullopt);
+                std::optional<double> resume_time = std::nullopt, const ResultsOptions& options = {});
   ~ResultsWriter();  // closes; the files stay valid
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
@@ -62,6 +73,7 @@ class ResultsWriter {
   void flush();
 
   int step_count() const;
+  const std::string& length_unit() const;  // "m", "um" or "nm": coordinates and length fields
   const std::string& h5_path() const;
   const std::string& xdmf_path() const;
 

@@ -47,11 +47,12 @@ std::string xml_escaped(const std::string& s) {
 }  // namespace
 
 XdmfDocument::XdmfDocument(std::string h5_file_name, long long node_count, long long element_count,
-                           std::vector<std::string> block_names)
+                           std::vector<XdmfBlock> blocks, std::string length_unit)
     : h5_file_(std::move(h5_file_name)),
       nodes_(node_count),
       elements_(element_count),
-      block_names_(std::move(block_names)) {}
+      blocks_(std::move(blocks)),
+      length_unit_(std::move(length_unit)) {}
 
 std::string XdmfDocument::step_name(int k) {
   char buf[32];
@@ -59,53 +60,59 @@ std::string XdmfDocument::step_name(int k) {
   return buf;
 }
 
-std::string XdmfDocument::h5_item(const std::string& dataset, long long rows, int cols,
-                                  bool integer) const {
-  std::string dims = std::to_string(rows);
-  if (cols > 1) {
-    dims += ' ';
-    dims += std::to_string(cols);
-  }
-  return std::string("<DataItem Dimensions=\"") + dims + "\" NumberType=\"" + (integer ? "Int" : "Float") +
-         "\" Precision=\"" + (integer ? "4" : "8") + "\" Format=\"HDF\">" + h5_file_ + ":" + dataset +
+std::string XdmfDocument::h5_item(const std::string& dataset, long long rows, int cols, bool integer,
+                                  const XdmfBlock* block) const {
+  const auto dims = [&](long long r) { return std::to_string(r) + (cols > 1 ? " " + std::to_string(cols) : ""); };
+  std::string item = std::string("<DataItem Dimensions=\"") + dims(rows) + "\" NumberType=\"" +
+                     (integer ? "Int" : "Float") + "\" Precision=\"" + (integer ? "4" : "8") +
+                     "\" Format=\"HDF\">" + h5_file_ + ":" + dataset + "</DataItem>";
+  if (block == nullptr || (block->first == 0 && block->count == rows)) return item;
+  // Rows [first, first + count) of the whole array: start, stride, count per dimension. Both of
+  // ParaView 5.11's readers (Xdmf2 and Xdmf3) read HDF5 hyperslabs of only those rows.
+  const std::string c = cols > 1 ? " 0" : "", one = cols > 1 ? " 1" : "", w = cols > 1 ? " " + std::to_string(cols) : "";
+  // Xdmf3 takes the array type from the outer item ("Skipping unrecognized array type" without it).
+  return "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" + dims(block->count) + "\" Type=\"HyperSlab\" NumberType=\"" +
+         (integer ? "Int" : "Float") + "\" Precision=\"" + (integer ? "4" : "8") + "\">"
+         "<DataItem Dimensions=\"3 " + std::to_string(cols > 1 ? 2 : 1) + "\" NumberType=\"Int\" Format=\"XML\">" +
+         std::to_string(block->first) + c + " 1" + one + " " + std::to_string(block->count) + w + "</DataItem>" + item +
          "</DataItem>";
 }
 
-std::string XdmfDocument::mesh_elements(const std::string& in) const {
-  std::string names;
-  for (std::size_t b = 0; b < block_names_.size(); ++b) {
-    if (b > 0) names += ' ';
-    names += std::to_string(b);
-    names += ':';
-    names += xml_escaped(block_names_[b]);
+std::string XdmfDocument::mesh_elements(std::size_t b, const std::string& in) const {
+  const XdmfBlock& block = blocks_[b];
+  return in + "<Topology TopologyType=\"Hexahedron\" NumberOfElements=\"" + std::to_string(block.count) + "\">" +
+         h5_item("/mesh/connectivity", elements_, 8, true, &block) + "</Topology>\n" + in +
+         "<Geometry GeometryType=\"XYZ\">" + h5_item("/mesh/coordinates", nodes_, 3, false) + "</Geometry>\n" + in +
+         "<Attribute Name=\"block_id\" AttributeType=\"Scalar\" Center=\"Cell\">" +
+         h5_item("/mesh/block_id", elements_, 1, true, &block) + "</Attribute>\n";
+}
+
+std::string XdmfDocument::block_grid(std::size_t b, int step, double time,
+                                     const std::vector<XdmfAttribute>& attributes, bool with_time) const {
+  const std::string in = "        ";
+  std::string g = "      <Grid Name=\"" + xml_escaped(blocks_[b].name) + "\" GridType=\"Uniform\">\n";
+  if (with_time) g += in + "<Time Value=\"" + number(time) + "\"/>\n";
+  if (step == 0) {
+    g += mesh_elements(b, in);
+  } else {
+    // The mesh of this block's first step, by reference (docs/conventions.md B.2: the mesh once).
+    g += in + "<xi:include xpointer=\"xpointer(//Grid[@Name='results']/Grid[" + std::to_string(b + 1) +
+         "]/Grid[1]/*[self::Topology or self::Geometry or self::Attribute[@Name='block_id']])\"/>\n";
   }
-  return in + "<Topology TopologyType=\"Hexahedron\" NumberOfElements=\"" + std::to_string(elements_) +
-         "\">" + h5_item("/mesh/connectivity", elements_, 8, true) + "</Topology>\n" + in +
-         "<Geometry GeometryType=\"XYZ\">" + h5_item("/mesh/coordinates", nodes_, 3, false) +
-         "</Geometry>\n" + in + "<Attribute Name=\"block_id\" AttributeType=\"Scalar\" Center=\"Cell\">" +
-         h5_item("/mesh/block_id", elements_, 1, true) + "</Attribute>\n" + in +
-         "<Information Name=\"block_names\" Value=\"" + names + "\"/>\n";
+  for (const auto& a : attributes) {
+    const bool node = a.center == Center::node;
+    const std::string name = a.unit.empty() || a.unit == "1" ? a.name : a.name + " [" + a.unit + "]";
+    g += in + "<Attribute Name=\"" + xml_escaped(name) + "\" AttributeType=\"" + attribute_type(a.components) +
+         "\" Center=\"" + (node ? "Node" : "Cell") + "\">" +
+         h5_item(a.h5_dataset, node ? nodes_ : elements_, a.components, false, node ? nullptr : &blocks_[b]) +
+         "</Attribute>\n";
+  }
+  return g + "      </Grid>\n";
 }
 
 void XdmfDocument::add_step(double time, const std::vector<XdmfAttribute>& attributes) {
-  const std::string in = "        ";
-  std::string g = "      <Grid Name=\"" + step_name(step_count_) + "\" GridType=\"Uniform\">\n" + in +
-                  "<Time Value=\"" + number(time) + "\"/>\n";
-  if (step_count_ == 0) {
-    g += mesh_elements(in);
-  } else {
-    // The mesh of step 0, pulled in by reference (docs/conventions.md B.2: write the mesh once).
-    g += in + "<xi:include xpointer=\"xpointer(//Grid[@Name='" + step_name(0) +
-         "']/*[self::Topology or self::Geometry or self::Attribute[@Name='block_id']])\"/>\n";
-  }
-  for (const auto& a : attributes) {
-    const long long rows = a.center == Center::node ? nodes_ : elements_;
-    g += in + "<Attribute Name=\"" + a.name + "\" AttributeType=\"" + attribute_type(a.components) +
-         "\" Center=\"" + (a.center == Center::node ? "Node" : "Cell") + "\">" +
-         h5_item(a.h5_dataset, rows, a.components, false) + "</Attribute>\n";
-  }
-  g += "      </Grid>\n";
-  steps_xml_ += g;
+  steps_xml_.resize(blocks_.size());
+  for (std::size_t b = 0; b < blocks_.size(); ++b) steps_xml_[b] += block_grid(b, step_count_, time, attributes, true);
   ++step_count_;
 }
 
@@ -113,14 +120,21 @@ std::string XdmfDocument::text() const {
   std::string t =
       "<?xml version=\"1.0\" ?>\n"
       "<Xdmf Version=\"2.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
-      "  <Domain>\n";
+      "  <Domain>\n"
+      "    <Information Name=\"length_unit\" Value=\"" + length_unit_ + "\"/>\n";
   if (step_count_ == 0) {
-    t += "    <Grid Name=\"mesh\" GridType=\"Uniform\">\n" + mesh_elements("      ") + "    </Grid>\n";
+    t += "    <Grid Name=\"mesh\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
+    for (std::size_t b = 0; b < blocks_.size(); ++b) t += block_grid(b, 0, 0.0, {}, false);
   } else {
-    t += "    <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n" + steps_xml_ +
-         "    </Grid>\n";
+    // One temporal collection per block, named after it, inside one spatial collection: ParaView's
+    // XDMF Reader keeps a block's name constant over time this way (a spatial collection per step
+    // makes it "tip[1]", "tip[2]", ... from the second step on).
+    t += "    <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+      t += "    <Grid Name=\"" + xml_escaped(blocks_[b].name) + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n" +
+           steps_xml_[b] + "    </Grid>\n";
   }
-  t += "  </Domain>\n</Xdmf>\n";
+  t += "    </Grid>\n  </Domain>\n</Xdmf>\n";
   return t;
 }
 

@@ -175,21 +175,35 @@ TEST(ResultsWriter, XdmfIsWellFormedAndNamesOnlyExistingDatasets) {
   const std::string xml = slurp(dir / "results.xdmf");
   EXPECT_EQ(xml_balance_problem(xml), "");
   EXPECT_FALSE(fs::exists(dir / "results.xdmf.tmp"));
-  EXPECT_EQ(count(xml, "CollectionType=\"Temporal\""), 1);
-  EXPECT_EQ(count(xml, "<Time Value="), 3);
+  // One spatial collection of one temporal collection per block, named after it, of 3 step grids.
+  EXPECT_EQ(count(xml, "CollectionType=\"Spatial\""), 1);
+  EXPECT_EQ(count(xml, "<Grid Name=\"substrate\" GridType=\"Collection\" CollectionType=\"Temporal\">"), 1);
+  EXPECT_EQ(count(xml, "<Grid Name=\"asperity\" GridType=\"Collection\" CollectionType=\"Temporal\">"), 1);
+  EXPECT_EQ(count(xml, "<Time Value="), 3 * 2);
+  EXPECT_EQ(count(xml, "<Grid Name=\"substrate\" GridType=\"Uniform\">"), 3);
+  EXPECT_EQ(count(xml, "<Grid Name=\"asperity\" GridType=\"Uniform\">"), 3);
   EXPECT_NE(xml.find("<Time Value=\"0.25\"/>"), std::string::npos);
   EXPECT_NE(xml.find("<Time Value=\"0.5\"/>"), std::string::npos);
-  // The mesh is named once; steps 1 and 2 include it by XPointer.
-  EXPECT_EQ(count(xml, "results.h5:/mesh/coordinates"), 1);
-  EXPECT_EQ(count(xml, "results.h5:/mesh/connectivity"), 1);
-  EXPECT_EQ(count(xml, "<xi:include"), 2);
-  EXPECT_NE(xml.find("AttributeType=\"Tensor\" Center=\"Cell\"><DataItem Dimensions=\"12 9\""), std::string::npos);
-  EXPECT_NE(xml.find("AttributeType=\"Vector\" Center=\"Node\"><DataItem Dimensions=\"36 3\""), std::string::npos);
-  EXPECT_NE(xml.find("AttributeType=\"Matrix\" Center=\"Cell\"><DataItem Dimensions=\"12 2\""), std::string::npos);
-  EXPECT_NE(xml.find("Value=\"0:substrate 1:asperity\""), std::string::npos);
+  // The mesh is named once per block; steps 1 and 2 include it by XPointer.
+  EXPECT_EQ(count(xml, "results.h5:/mesh/coordinates"), 2);
+  EXPECT_EQ(count(xml, "results.h5:/mesh/connectivity"), 2);
+  EXPECT_EQ(count(xml, "<xi:include"), 2 * 2);
+  // Cell data and topology: the block's rows of the whole array (6 elements each); nodal: whole.
+  EXPECT_NE(xml.find("<Attribute Name=\"stress [Pa]\" AttributeType=\"Tensor\" Center=\"Cell\"><DataItem "
+                     "ItemType=\"HyperSlab\" Dimensions=\"6 9\" Type=\"HyperSlab\" NumberType=\"Float\" Precision=\"8\">"
+                     "<DataItem Dimensions=\"3 2\" NumberType=\"Int\" Format=\"XML\">6 0 1 1 6 9</DataItem>"),
+            std::string::npos);
+  EXPECT_NE(xml.find("<Attribute Name=\"displacement [m]\" AttributeType=\"Vector\" Center=\"Node\"><DataItem "
+                     "Dimensions=\"36 3\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("<Attribute Name=\"slip [m]\" AttributeType=\"Matrix\" Center=\"Cell\"><DataItem "
+                     "ItemType=\"HyperSlab\" Dimensions=\"6 2\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("<Attribute Name=\"plastic_strain\" "), std::string::npos);  // unit "1": the bare name
+  EXPECT_NE(xml.find("<Information Name=\"length_unit\" Value=\"m\"/>"), std::string::npos);
 
   const auto refs = h5_references(xml);
-  EXPECT_EQ(refs.size(), 3u + 3u * 5u);  // mesh (3) + 5 fields x 3 steps
+  EXPECT_EQ(refs.size(), 2u * 3u + 2u * 3u * 5u);  // per block: mesh (3) + 5 fields x 3 steps
   const hid_t f = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
   for (const auto& r : refs) EXPECT_TRUE(h5_path_exists(f, r)) << r;
@@ -206,8 +220,8 @@ TEST(ResultsWriter, BeforeAnyStepTheXdmfShowsTheMesh) {
   }
   const std::string xml = slurp(dir / "results.xdmf");
   EXPECT_EQ(xml_balance_problem(xml), "");
-  EXPECT_EQ(count(xml, "<Grid "), 1);
-  EXPECT_NE(xml.find("NumberOfElements=\"8\""), std::string::npos);
+  EXPECT_EQ(count(xml, "<Grid "), 1 + 2);  // the mesh: one grid per block
+  EXPECT_EQ(count(xml, "NumberOfElements=\"4\""), 2);
   EXPECT_NE(xml.find("Dimensions=\"27 3\""), std::string::npos);
   fs::remove_all(dir);
 }
@@ -234,7 +248,7 @@ TEST(ResultsWriter, PairIsReadableAfterACrashMidRun) {
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   const std::string xml = slurp(dir / "results.xdmf");
   EXPECT_EQ(xml_balance_problem(xml), "");
-  EXPECT_EQ(count(xml, "<Time Value="), 2);
+  EXPECT_EQ(count(xml, "<Time Value="), 2);  // a 2 x 1 x 1 box is one block
   const hid_t f = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
   for (const auto& r : h5_references(xml)) EXPECT_TRUE(h5_path_exists(f, r)) << r;
@@ -369,4 +383,67 @@ TEST(ResultsWriter, ResumingIntoAnotherMeshsFileIsASetupErrorAndLeavesItAlone) {
   EXPECT_EQ(w.step_count(), 0);
   fs::remove_all(dir);
   fs::remove_all(fresh);
+}
+
+namespace {
+
+std::string read_units(hid_t file, const std::string& object, const char* name = "units") {
+  if (H5Aexists_by_name(file, object.c_str(), name, H5P_DEFAULT) <= 0) return "(none)";
+  const hid_t a = H5Aopen_by_name(file, object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t type = H5Aget_type(a);
+  std::string value(H5Tget_size(type), '\0');
+  H5Aread(a, type, value.data());
+  H5Tclose(type);
+  H5Aclose(a);
+  return value.c_str();
+}
+
+}  // namespace
+
+// A model 3 nm across (issue 27): auto writes the coordinates and the length fields in nm, every
+// other field in SI, each dataset with its `units`; datasets are chunked with shuffle + deflate.
+TEST(ResultsWriter, NanometreModelIsWrittenInNanometresWithUnitsOnEveryDataset) {
+  const fs::path dir = fresh_dir("nm");
+  auto mesh = make_hand_box(3, 2, 2);
+  for (double& x : mesh.coordinates) x *= 1e-9;
+  {
+    ResultsWriter w(dir.string(), mesh);
+    EXPECT_EQ(w.length_unit(), "nm");
+    write_sample_step(w, mesh, 0.5);
+  }
+  const hid_t f = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(read_units(f, "/", "length_unit"), "nm");
+  const Array xyz = read_dataset(f, "/mesh/coordinates");
+  for (std::size_t i = 0; i < xyz.values.size(); ++i)
+    EXPECT_NEAR(xyz.values[i], mesh.coordinates[i] * 1e9, 1e-14) << i;
+  SampleFields si;
+  si.fill(mesh, 0.5);
+  const Array u = read_dataset(f, "/steps/step_000000/nodal/displacement");
+  for (std::size_t i = 0; i < u.values.size(); ++i) EXPECT_NEAR(u.values[i], si.displacement[i] * 1e9, 1e-14) << i;
+  EXPECT_EQ(read_dataset(f, "/steps/step_000000/nodal/temperature").values, si.temperature);  // K: untouched
+  const std::pair<const char*, const char*> units[] = {
+      {"/mesh/coordinates", "nm"}, {"/mesh/connectivity", "1"}, {"/mesh/block_id", "1"},
+      {"/steps/step_000000/nodal/displacement", "nm"}, {"/steps/step_000000/nodal/temperature", "K"},
+      {"/steps/step_000000/element/stress", "Pa"}, {"/steps/step_000000/element/plastic_strain", "1"},
+      {"/steps/step_000000/element/slip", "nm"}};
+  for (const auto& [path, unit] : units) {
+    EXPECT_EQ(read_units(f, path), unit) << path;
+    const hid_t d = H5Dopen2(f, path, H5P_DEFAULT);
+    const hid_t dcpl = H5Dget_create_plist(d);
+    EXPECT_EQ(H5Pget_layout(dcpl), H5D_CHUNKED) << path;
+    EXPECT_EQ(H5Pget_nfilters(dcpl), 2) << path;  // shuffle, deflate
+    H5Pclose(dcpl);
+    H5Dclose(d);
+  }
+  H5Fclose(f);
+  const std::string xml = slurp(dir / "results.xdmf");
+  EXPECT_NE(xml.find("<Information Name=\"length_unit\" Value=\"nm\"/>"), std::string::npos);
+  EXPECT_NE(xml.find("Name=\"displacement [nm]\""), std::string::npos);
+  EXPECT_NE(xml.find("Name=\"stress [Pa]\""), std::string::npos);
+  // A resumed run keeps the file's unit whatever it is asked for.
+  ResultsWriter resumed(dir.string(), mesh, nullptr, 1.0, {"m"});
+  EXPECT_EQ(resumed.length_unit(), "nm");
+  EXPECT_EQ(resumed.step_count(), 1);
+  fs::remove_all(dir);
 }

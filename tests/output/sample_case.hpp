@@ -60,18 +60,21 @@ struct SampleFields {
     }
   }
   std::vector<solver::FieldView> nodal() const {
-    return {{"displacement", 3, displacement}, {"temperature", 1, temperature}};
+    return {{"displacement", 3, displacement, "m"}, {"temperature", 1, temperature, "K"}};
   }
   std::vector<solver::FieldView> element() const {
-    return {{"stress", 6, stress}, {"plastic_strain", 1, plastic_strain}, {"slip", 2, slip}};
+    return {{"stress", 6, stress, "Pa"}, {"plastic_strain", 1, plastic_strain, "1"}, {"slip", 2, slip, "m"}};
   }
 };
 
 inline const std::vector<double> sample_times = {0.0, 0.25, 0.5};
 
-/// Writes the sample case (3 x 2 x 2 box, three steps) into `directory`.
-inline void write_sample_case(const std::string& directory) {
-  const mesh::Mesh m = make_hand_box(3, 2, 2);
+/// Writes the sample case (3 x 2 x 2 box, three steps) into `directory`. scale: the box's size in
+/// metres per unit cube; 1e-9 makes a nanometre model, which the writer puts in nm (coordinates,
+/// displacement and slip read x 1e9; the fields are still filled from the SI coordinates).
+inline void write_sample_case(const std::string& directory, double scale = 1.0) {
+  mesh::Mesh m = make_hand_box(3, 2, 2);
+  for (double& x : m.coordinates) x *= scale;
   solver::ResultsWriter w(directory, m);
   SampleFields f;
   for (double t : sample_times) {

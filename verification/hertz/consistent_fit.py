@@ -26,6 +26,7 @@ import numpy as np
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from contact_theory import dmt_radius, effective_modulus  # noqa: E402
 from history_checks import read_history  # noqa: E402
+from results_h5 import si  # noqa: E402
 
 E, NU, R = 161e9, 0.23, 27e-9
 ESTAR = effective_modulus(E, NU)
@@ -50,7 +51,7 @@ def main():
     a = ap.parse_args()
     rows = read_history(a.output)
     with h5py.File(pathlib.Path(a.output) / "results.h5", "r") as f:
-        X = f["mesh/coordinates"][:]
+        X = si(f["mesh/coordinates"])  # m, whatever the file's length unit
         faces = tip_surface_faces(f)
         centres = X[faces].mean(axis=1)
         faces = faces[np.hypot(centres[:, 0], centres[:, 1]) < AXIS_RANGE]
@@ -73,7 +74,7 @@ def main():
         for key in sorted(f["steps"].keys()):
             step = f["steps"][key]
             t = float(step.attrs["time"])
-            x = X + step["nodal/displacement"][:]
+            x = X + si(step["nodal/displacement"])
             xy = x[faces][:, :, :2]
             jac = np.abs(np.einsum("aq,fa->fq", dN_dxi, xy[:, :, 0]) * np.einsum("aq,fa->fq", dN_deta, xy[:, :, 1])
                          - np.einsum("aq,fa->fq", dN_dxi, xy[:, :, 1]) * np.einsum("aq,fa->fq", dN_deta, xy[:, :, 0]))

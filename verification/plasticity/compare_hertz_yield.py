@@ -21,6 +21,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import finish_axes, history_parser, pyplot, read_history, report_failures, save_figure  # noqa: E402
+from results_h5 import si  # noqa: E402
 
 E, NU, Y, R = 161e9, 0.23, 4e9, 27e-9   # the deck's silicon and sphere
 E_STAR = E / (2 * (1 - NU * NU))        # two identical bodies
@@ -67,7 +68,7 @@ def main():
     import h5py
     import numpy as np
     with h5py.File(pathlib.Path(a.output) / "results.h5") as f:
-        x = f["mesh/coordinates"][()]
+        x = si(f["mesh/coordinates"])  # m, whatever the file's length unit
         conn = f["mesh/connectivity"][()]
         block = f["mesh/block_id"][()]
         step = next((s for s in sorted(f["steps"].keys())

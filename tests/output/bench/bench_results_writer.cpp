@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Benchmark: ResultsWriter write time per step on an N^3 hex box (default 60) with displacement
 // and velocity (nodal vectors) and stress (element, Voigt 6 -> stored 9). Not a test.
-//   tribex_bench_results_writer [N] [steps] [directory]
+//   tribex_bench_results_writer [N] [steps] [directory] [gzip level, default the writer's]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 60;
   const int steps = argc > 2 ? std::atoi(argv[2]) : 10;
   const std::string dir = argc > 3 ? argv[3] : "bench_results_output";
+  tribex::solver::ResultsOptions options;
+  if (argc > 4) options.gzip_level = std::atoi(argv[4]);
   if (n < 1 || steps < 1) {
     std::fprintf(stderr, "usage: %s [N>=1] [steps>=1] [directory]\n", argv[0]);
     return 2;
@@ -28,10 +30,10 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < sigma.size(); ++i) sigma[i] = 1e6 * double(i % 13);
 
   auto t0 = clock::now();
-  tribex::solver::ResultsWriter w(dir, mesh);
+  tribex::solver::ResultsWriter w(dir, mesh, nullptr, std::nullopt, options);
   const double setup = std::chrono::duration<double>(clock::now() - t0).count();
-  const std::vector<tribex::solver::FieldView> nodal = {{"displacement", 3, u}, {"velocity", 3, v}};
-  const std::vector<tribex::solver::FieldView> element = {{"stress", 6, sigma}};
+  const std::vector<tribex::solver::FieldView> nodal = {{"displacement", 3, u, "m"}, {"velocity", 3, v, "m/s"}};
+  const std::vector<tribex::solver::FieldView> element = {{"stress", 6, sigma, "Pa"}};
   std::vector<double> per_step;
   for (int s = 0; s < steps; ++s) {
     t0 = clock::now();
@@ -41,7 +43,8 @@ int main(int argc, char** argv) {
   double sum = 0, lo = 1e30, hi = 0;
   for (double t : per_step) sum += t, lo = std::min(lo, t), hi = std::max(hi, t);
   const double mb = double((6 * nodes + 9 * elements) * sizeof(double)) / 1e6;
-  std::printf("mesh %d^3: %zu nodes, %zu hexes; setup (mesh write) %.1f ms\n", n, nodes, elements, 1e3 * setup);
+  std::printf("mesh %d^3: %zu nodes, %zu hexes; gzip level %d; setup (mesh write) %.1f ms\n", n, nodes, elements,
+              options.gzip_level, 1e3 * setup);
   std::printf("%d steps: write_step mean %.1f ms, min %.1f ms, max %.1f ms, %.1f MB/step (%.0f MB/s mean)\n",
               steps, 1e3 * sum / steps, 1e3 * lo, 1e3 * hi, mb, mb * steps / sum);
   std::printf("results.h5: %.1f MB\n", double(std::filesystem::file_size(w.h5_path())) / 1e6);
