@@ -62,14 +62,17 @@ std::string XdmfDocument::step_name(int k) {
 
 std::string XdmfDocument::h5_item(const std::string& dataset, long long rows, int cols, bool integer,
                                   const XdmfBlock* block) const {
-  const auto dims = [&](long long r) { return std::to_string(r) + (cols > 1 ? " " + std::to_string(cols) : ""); };
+  // (appended piece by piece: GCC 12 warns -Wrestrict, wrongly, on `" " + std::to_string(cols)`)
+  std::string per_row;
+  if (cols > 1) per_row.append(" ").append(std::to_string(cols));
+  const auto dims = [&](long long r) { return std::to_string(r).append(per_row); };
   std::string item = std::string("<DataItem Dimensions=\"") + dims(rows) + "\" NumberType=\"" +
                      (integer ? "Int" : "Float") + "\" Precision=\"" + (integer ? "4" : "8") +
                      "\" Format=\"HDF\">" + h5_file_ + ":" + dataset + "</DataItem>";
   if (block == nullptr || (block->first == 0 && block->count == rows)) return item;
   // Rows [first, first + count) of the whole array: start, stride, count per dimension. Both of
   // ParaView 5.11's readers (Xdmf2 and Xdmf3) read HDF5 hyperslabs of only those rows.
-  const std::string c = cols > 1 ? " 0" : "", one = cols > 1 ? " 1" : "", w = cols > 1 ? " " + std::to_string(cols) : "";
+  const std::string c = cols > 1 ? " 0" : "", one = cols > 1 ? " 1" : "", &w = per_row;
   // Xdmf3 takes the array type from the outer item ("Skipping unrecognized array type" without it).
   return "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" + dims(block->count) + "\" Type=\"HyperSlab\" NumberType=\"" +
          (integer ? "Int" : "Float") + "\" Precision=\"" + (integer ? "4" : "8") + "\">"
