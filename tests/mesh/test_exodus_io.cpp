@@ -16,29 +16,14 @@
 #include "mesh/box.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/mesh_error.hpp"
+#include "tests/mesh/scratch_dir.hpp"
 
 namespace tribex::mesh {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ExodusIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("tribex_test_exodus_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string file(const std::string& name) const { return (dir_ / name).string(); }
-
- private:
-  fs::path dir_;
-};
+using ExodusIo = ScratchDirTest;
 
 std::string read_error(const std::string& path) {
   try {

@@ -17,30 +17,14 @@
 #include "mesh/gmsh_io.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_error.hpp"
+#include "tests/mesh/scratch_dir.hpp"
 
 namespace tribex::mesh {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh scratch folder per test, removed when the test ends.
-class GmshIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("tribex_test_mesh_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path scratch_dir() const { return dir_; }
-
- private:
-  fs::path dir_;
-};
+using GmshIo = ScratchDirTest;
 
 std::string read_error(const std::string& path) {
   try {

@@ -35,6 +35,43 @@ E, NU, R = 161e9, 0.23, 27e-9
 ESTAR = effective_modulus(E, NU)
 
 
+def branches(rows, column):
+    """(P, a) of the loading branch (to the deepest tip position) and of the withdrawal, in nN and nm,
+    where the contact has a radius."""
+    deepest = deepest_index(rows)
+    pick = lambda part: [(r["contact_normal_force"] * 1e9, r[column] * 1e9) for r in part if r[column] > 0]  # noqa: E731
+    return pick(rows[: deepest + 1]), pick(rows[deepest + 1:])
+
+
+def plot(a, rows, deepest, column, W, Pc, pull_off, h):
+    """a(P) of every recorded time, loading (filled) and withdrawal (open), for W and, with
+    --hertz-output, the W = 0 twin, against DMT and Hertz; radii under 5 element sizes shaded."""
+    fig, ax = pyplot().subplots(figsize=(7, 5))
+    load, unload = branches(rows, column)
+    top = max(p for p, _ in load)
+    grid = [Pc + (top * 1e-9 - Pc) * i / 400 for i in range(401)]
+    ax.plot([x * 1e9 for x in grid], [dmt_radius(x, R, W, ESTAR) * 1e9 for x in grid], "k-",
+            label="DMT, W = %.2f J/m$^2$" % W)
+    gh = [x for x in grid if x >= 0]
+    ax.plot([x * 1e9 for x in gh], [dmt_radius(x, R, 0.0, ESTAR) * 1e9 for x in gh], "k--", label="Hertz (W = 0)")
+    runs = [(f"W = {W:.2f} J/m$^2$", load, unload, "o", "C0")]
+    if a.hertz_output:
+        runs.append(("W = 0",) + branches(read_history(a.hertz_output), column) + ("s", "C1"))
+    for name, up, down, marker, colour in runs:
+        for pts, fill, what in ((up, colour, "loading"), (down, "none", "withdrawal")):
+            ax.plot([x for x, _ in pts], [y for _, y in pts], marker, ms=3.5, mfc=fill, mec=colour,
+                    label=f"FE {name}, {what}")
+    ax.axhspan(0, 5 * h * 1e9, color="0.9", zorder=0, label="a under 5 elements (mesh-limited)")
+    if W > 0:
+        ax.axvline(pull_off * 1e9, color="r", lw=0.9, label=f"FE pull-off {pull_off * 1e9:.2f} nN")
+        ax.axvline(Pc * 1e9, color="r", lw=0.9, ls=":", label=f"DMT pull-off -2$\\pi$WR = {Pc * 1e9:.2f} nN")
+    ax.set_xlim(Pc * 1e9 * 1.3, top * 1.02)
+    ax.set_ylim(0, None)
+    finish_axes(ax, "applied load P (nN)", "contact radius a (nm)",
+                f"silicon sphere R = {R * 1e9:.0f} nm on a silicon flat: contact radius against load")
+    save_figure(fig, a.plot)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("output")
@@ -82,21 +119,7 @@ def main():
           f"tolerance {a.energy_tolerance:.0%}")
     print("PASS" if ok else "FAIL")
     if a.plot:
-        fig, ax = pyplot().subplots(figsize=(6, 4.5))
-        grid = [Pc + (max(P) - Pc) * i / 300 for i in range(301)]
-        ax.plot([x * 1e9 for x in grid], [radius(x) * 1e9 for x in grid],
-                "k-", label="DMT, W = %.2f J/m$^2$" % W)
-        gh = [x for x in grid if x >= 0]
-        ax.plot([x * 1e9 for x in gh], [dmt_radius(x, R, 0.0, ESTAR) * 1e9 for x in gh], "k--", label="Hertz (W = 0)")
-        ax.plot([x * 1e9 for x in P], [x * 1e9 for x in aFE], "o", ms=3, label=f"FE, W = {W:.2f} J/m$^2$")
-        if a.hertz_output:
-            hr = read_history(a.hertz_output)
-            pts = [(r["contact_normal_force"], r[column]) for r in hr
-                   if 5 * h <= r[column] <= 0.25 * R and 0 < r["contact_normal_force"] <= max(P)]
-            ax.plot([x * 1e9 for x, _ in pts], [y * 1e9 for _, y in pts], "s", ms=3, mfc="none", label="FE, W = 0")
-        ax.axvline(pull_off * 1e9, color="r", lw=0.8, label=f"FE pull-off {pull_off * 1e9:.2f} nN")
-        finish_axes(ax, "applied load P (nN)", "contact radius a (nm)")
-        save_figure(fig, a.plot)
+        plot(a, rows, deepest, column, W, Pc, pull_off, h)
     return 0 if ok else 1
 
 
