@@ -243,6 +243,10 @@ Mesh read_exodus(const std::string& path) {
     if (identity) throw;
     throw MeshError(std::string(e.what()) + " (element numbers are positions in the file, not its element ids)");
   }
+  // As from gmsh (mesh/README.md): a side set's nodes are also a node set of its name unless the file
+  // has one, so that a Cubit mesh with side sets only can be held by `fixed displacement` there.
+  for (const auto& [name, sides] : m.side_sets)
+    if (!m.node_sets.count(name)) m.node_sets[name] = m.side_set_nodes(name);
   return m;
 }
 
