@@ -16,7 +16,7 @@
 #include "mesh/box.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/mesh_error.hpp"
-#include "tests/mesh/scratch_dir.hpp"
+#include "tests/mesh/support.hpp"
 
 namespace tribex::mesh {
 namespace {
@@ -34,21 +34,9 @@ std::string read_error(const std::string& path) {
   return "";
 }
 
-// Two blocks (a graded box and a second box above it), every set of both, plus a long-named set.
+// two_boxes() plus a long-named node set and side set.
 Mesh two_block_mesh() {
-  BoxSpec a;
-  a.name = "substrate";
-  a.size = {2e-9, 1e-9, 1e-9};
-  a.intervals = {4, 2, 3};
-  a.grade_toward = "zmax";
-  a.grading_ratio = 1.2;
-  BoxSpec b;
-  b.name = "tip";
-  b.origin = {0.25e-9, 0.1e-9, 1.1e-9};
-  b.size = {1e-9, 0.7e-9, 0.5e-9};
-  b.intervals = {2, 2, 1};
-  Mesh m = generate_box(a);
-  append(m, generate_box(b));
+  Mesh m = two_boxes();
   m.node_sets["a_node_set_with_a_name_longer_than_thirty_two_characters"] = {0, 3, 7};
   m.side_sets["a_side_set_with_a_name_longer_than_thirty_two_characters"] = {{1, 5}, {0, 4}};
   return m;

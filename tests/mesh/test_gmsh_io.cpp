@@ -17,7 +17,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_error.hpp"
-#include "tests/mesh/scratch_dir.hpp"
+#include "tests/mesh/support.hpp"
 
 namespace tribex::mesh {
 namespace {
@@ -70,19 +70,7 @@ Conn element(const Mesh& m, int e) {
 }
 
 Mesh two_block_mesh() {
-  BoxSpec a;
-  a.name = "substrate";
-  a.size = {1.0e-6, 1.0e-6, 0.5e-6};
-  a.intervals = {4, 3, 5};
-  a.grade_toward = "zmax";
-  a.grading_ratio = 1.25;
-  BoxSpec b;
-  b.name = "tip";
-  b.origin = {0.25e-6, 0.25e-6, 0.6e-6};
-  b.size = {0.3e-6, 0.3e-6, 0.2e-6};
-  b.intervals = {2, 2, 2};
-  Mesh m = generate_box(a);
-  append(m, generate_box(b));
+  Mesh m = two_boxes();
   m.node_sets["pin"] = {0, 7, 33};
   m.node_sets["tip_zmin"].pop_back();  // differs from its side set's nodes: must travel as its own group
   m.side_sets["interior"] = {{5, 5}, {6, 1}};  // faces inside the substrate
