@@ -64,7 +64,8 @@ class DeckRun {
   void distribute_and_resume();
   // ---- stage 3: the output folder, history.csv, results.h5, restart output ----
   void open_outputs();
-  void choose_history_columns();  // every rank: the row is built everywhere, written by rank 0
+  void choose_history_columns();
+  void note_mpiexec_signal_grace();  // the Open MPI kill delay that can cost a signalled run its restart file  // every rank: the row is built everywhere, written by rank 0
   void open_results();  // results.h5 + results.xdmf and/or results.exo (`format`)
   // ---- stage 4: the loop and what it writes at time n ----
   void loop();

@@ -2,6 +2,7 @@
 // run_deck, stages 1-3 (deck_run.hpp): pre-flight, the rank's part and the restart state, the outputs.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 
 #include "mesh/mesh_error.hpp"
@@ -217,7 +218,19 @@ void DeckRun::open_outputs() {
     earlier_loop_seconds_ = resume_->has("run_loop_seconds") ? resume_->scalar("run_loop_seconds") : NAN;
   }
   if (region_.restart) restart_output_.emplace(*region_.restart, out_.string());
+  if (region_.restart && ranks_ > 1) note_mpiexec_signal_grace();
   if (root_) reserve_summary_json((out_ / "summary.json").string());
+}
+
+// Open MPI's mpiexec forwards a SIGTERM to the ranks and kills them odls_base_sigkill_timeout
+// seconds later (1 by default): a rank still writing its restart file then loses it. The setting
+// travels to the ranks in the environment, so a run that is short of it says so once.
+void DeckRun::note_mpiexec_signal_grace() {
+  const char* grace = std::getenv("OMPI_MCA_odls_base_sigkill_timeout");
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr || (grace != nullptr && std::atoi(grace) >= 30)) return;
+  log_.say("note: a SIGTERM to mpiexec reaches the ranks, and Open MPI kills them " + std::string(grace ? grace : "1") +
+           " s later, maybe while they write the restart file; start mpiexec with "
+           "OMPI_MCA_odls_base_sigkill_timeout=120 in the environment (or signal the ranks)");
 }
 
 void DeckRun::choose_history_columns() {
