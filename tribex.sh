@@ -40,9 +40,6 @@ ensure_packages() {
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 export OMPI_MCA_hwloc_base_binding_policy=none
-# A SIGTERM to mpiexec reaches the ranks; Open MPI kills them this many seconds later (default 1),
-# long enough here for them to finish the step and write the restart file (solver/README.md).
-export OMPI_MCA_odls_base_sigkill_timeout=120
 
 build() {  # build DIR [cmake args...]
   local dir=$1; shift

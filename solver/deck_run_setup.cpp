@@ -229,8 +229,8 @@ void DeckRun::note_mpiexec_signal_grace() {
   const char* grace = std::getenv("OMPI_MCA_odls_base_sigkill_timeout");
   if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr || (grace != nullptr && std::atoi(grace) >= 30)) return;
   log_.say("note: a SIGTERM to mpiexec reaches the ranks, and Open MPI kills them " + std::string(grace ? grace : "1") +
-           " s later, maybe while they write the restart file; start mpiexec with "
-           "OMPI_MCA_odls_base_sigkill_timeout=120 in the environment (or signal the ranks)");
+           " s later, maybe while they write the restart file; for a run that may be signalled, start mpiexec "
+           "with OMPI_MCA_odls_base_sigkill_timeout=30 in the environment (or signal the ranks)");
 }
 
 void DeckRun::choose_history_columns() {
