@@ -14,10 +14,10 @@
       with bitwise the same times and datasets, and results.xdmf must be byte-identical. The resumed
       summary.json reports its own steps (first_step = STEP, ns/element/step over its steps) and the
       segments' total wall and loop time; log.txt holds both segments.
-  parallel_check.py sigterm TRIBEX DECK OUT --ranks N --termination T --after ROWS
+  parallel_check.py sigterm TRIBEX DECK OUT --ranks N --termination T
       DECK with its termination time set to T (written to OUT/deck.i) runs uninterrupted, then again
-      with SIGTERM sent to mpiexec alone (as a batch scheduler does at its time limit) once history.csv
-      has ROWS rows: Open MPI forwards it to the ranks, which finish the step and write their outputs
+      with SIGTERM sent to mpiexec alone (as a batch scheduler does at its time limit) once rank 0
+      prints "running ..." (the loop has begun): Open MPI forwards it to the ranks, which finish the step and write their outputs
       and a restart file (summary.json status "interrupted", exit_code 130); resumed from restart.h5,
       the history must equal the uninterrupted one byte for byte.
   parallel_check.py failure TRIBEX DECK OUT --ranks N --expect-code C --expect TEXT
@@ -181,7 +181,6 @@ def sigterm(a):
     import json
     import re
     import signal
-    import time
     os.makedirs(a.out, exist_ok=True)
     with open(a.deck) as f:
         text = f.read()
@@ -193,21 +192,21 @@ def sigterm(a):
         shutil.rmtree(d, ignore_errors=True)
     run(a.tribex, deck, full, a.ranks)
     env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
-    job = subprocess.Popen(launcher(a.ranks) + [a.tribex, "run", deck, "-o", cut, "--quiet"], env=env,
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    history, rows, deadline = os.path.join(cut, "history.csv"), 0, time.time() + 120
-    while job.poll() is None and rows < a.after and time.time() < deadline:
-        time.sleep(0.02)
-        if os.path.exists(history):
-            with open(history, "rb") as f:
-                rows = f.read().count(b"\n") - 1
+    job = subprocess.Popen(launcher(a.ranks) + [a.tribex, "run", deck, "-o", cut], env=env,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1)
+    # Signal once the ranks are in the time-step loop: rank 0 prints "running ..." as it enters it.
+    before = []
+    for line in job.stdout:
+        before.append(line)
+        if line.startswith("running ..."):
+            break
     if job.poll() is not None:
-        sys.exit(f"FAIL: the run ended (exit {job.returncode}) before history.csv had {a.after} rows: lengthen --termination")
+        sys.exit(f"FAIL: the run ended (exit {job.returncode}) before its loop began\n{''.join(before)}")
     job.send_signal(signal.SIGTERM)  # to mpiexec only
     output, _ = job.communicate(timeout=120)
     with open(os.path.join(cut, "summary.json")) as f:
         summary = json.load(f)
-    print(f"SIGTERM to mpiexec at history row {rows}: mpiexec exit {job.returncode}; summary.json status "
+    print(f"SIGTERM to mpiexec in the loop: mpiexec exit {job.returncode}; summary.json status "
           f"{summary['status']!r}, exit_code {summary['exit_code']}, step {summary['steps']}; restart.h5 "
           f"{'present' if os.path.exists(os.path.join(cut, 'restart.h5')) else 'MISSING'}")
     if summary["status"] != "interrupted" or summary["exit_code"] != 130 or not os.path.exists(os.path.join(cut, "restart.h5")):
@@ -255,7 +254,6 @@ def main():
     ap.add_argument("--expect", default="")
     ap.add_argument("--serial-restart-at", type=int, default=-1)
     ap.add_argument("--termination", default="")
-    ap.add_argument("--after", type=int, default=100)
     a = ap.parse_args()
     {"agree": agree, "restart": restart, "sigterm": sigterm, "failure": failure}[a.mode](a)
 
