@@ -11,6 +11,7 @@
 #include <fstream>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh_error.hpp"
@@ -80,6 +81,18 @@ int put_names(int exo, ex_entity_type type, const std::vector<std::string>& name
   std::vector<char*> p;
   for (const auto& n : names) p.push_back(const_cast<char*>(n.c_str()));  // the API takes char**; it only reads
   return ex_put_names(exo, type, p.data());
+}
+
+/// The entries of set `id` of a node or side set (`what` names it in errors): the node or element
+/// numbers, and for a side set the side numbers (empty for a node set). 1-based, as in the file.
+std::pair<std::vector<int>, std::vector<int>> set_entries(int exo, ex_entity_type type, int id, const std::string& path,
+                                                          const std::string& what) {
+  int count = 0, factors = 0;
+  if (ex_get_set_param(exo, type, id, &count, &factors) < 0) fail(path, "cannot read " + what + reason());
+  std::vector<int> entries(static_cast<std::size_t>(count)), sides(type == EX_SIDE_SET ? entries.size() : 0);
+  if (count > 0 && ex_get_set(exo, type, id, entries.data(), type == EX_SIDE_SET ? sides.data() : nullptr) < 0)
+    fail(path, "cannot read " + what + reason());
+  return {std::move(entries), std::move(sides)};
 }
 
 }  // namespace
@@ -189,12 +202,7 @@ Mesh read_exodus(const std::string& path) {
   const auto nset_names = entity_names(exo, EX_NODE_SET, nset_ids.size(), name_length);
   for (std::size_t s = 0; s < nset_ids.size(); ++s) {
     const std::string name = nset_names[s].empty() ? "nodelist_" + std::to_string(nset_ids[s]) : nset_names[s];
-    int count = 0, factors = 0;
-    if (ex_get_set_param(exo, EX_NODE_SET, nset_ids[s], &count, &factors) < 0)
-      fail(path, "cannot read node set '" + name + "'" + reason());
-    std::vector<int> list(static_cast<std::size_t>(count));
-    if (count > 0 && ex_get_set(exo, EX_NODE_SET, nset_ids[s], list.data(), nullptr) < 0)
-      fail(path, "cannot read node set '" + name + "'" + reason());
+    const std::vector<int> list = set_entries(exo, EX_NODE_SET, nset_ids[s], path, "node set '" + name + "'").first;
     std::vector<int> set;
     for (int n : list) {
       if (n < 1 || n > nodes)
@@ -211,12 +219,7 @@ Mesh read_exodus(const std::string& path) {
   const auto sset_names = entity_names(exo, EX_SIDE_SET, sset_ids.size(), name_length);
   for (std::size_t s = 0; s < sset_ids.size(); ++s) {
     const std::string name = sset_names[s].empty() ? "surface_" + std::to_string(sset_ids[s]) : sset_names[s];
-    int count = 0, factors = 0;
-    if (ex_get_set_param(exo, EX_SIDE_SET, sset_ids[s], &count, &factors) < 0)
-      fail(path, "cannot read side set '" + name + "'" + reason());
-    std::vector<int> elems(static_cast<std::size_t>(count)), sides(elems.size());
-    if (count > 0 && ex_get_set(exo, EX_SIDE_SET, sset_ids[s], elems.data(), sides.data()) < 0)
-      fail(path, "cannot read side set '" + name + "'" + reason());
+    const auto [elems, sides] = set_entries(exo, EX_SIDE_SET, sset_ids[s], path, "side set '" + name + "'");
     std::vector<Side> set;
     for (std::size_t k = 0; k < elems.size(); ++k) {
       if (elems[k] < 1 || elems[k] > elements || sides[k] < 1 || sides[k] > 6)

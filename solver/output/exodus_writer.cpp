@@ -407,22 +407,19 @@ void ExodusWriter::write_step(double time, std::span<const FieldView> nodal, std
       for (std::size_t r = 0; r < m.rank_node_rows.size(); ++r) {
         const double* seg = m.receive.data() + m.displs[r];
         std::size_t field_base = 0;  // into `whole`
-        for (const auto& f : ns) {
-          const int c = f.components;
-          for (int i = 0; i < m.rank_node_rows[r]; ++i)
-            std::copy_n(seg + static_cast<std::size_t>(c) * i, c,
-                        m.whole.data() + field_base + static_cast<std::size_t>(c) * m.gathered_node_row[node_pos + i]);
-          seg += static_cast<std::size_t>(c) * m.rank_node_rows[r];
-          field_base += static_cast<std::size_t>(c) * m.nodes;
-        }
-        for (const auto& f : es) {
-          const int c = f.components;
-          for (int i = 0; i < m.rank_element_rows[r]; ++i)
-            std::copy_n(seg + static_cast<std::size_t>(c) * i, c,
-                        m.whole.data() + field_base + static_cast<std::size_t>(c) * m.gathered_element_row[element_pos + i]);
-          seg += static_cast<std::size_t>(c) * m.rank_element_rows[r];
-          field_base += static_cast<std::size_t>(c) * m.elements;
-        }
+        // The segment's rows of each field (rows x components) to their global rows in `whole`.
+        const auto unpack = [&](const auto& fields, int rows, const std::vector<int>& global_row, std::size_t first,
+                                int entities) {
+          for (const auto& f : fields) {
+            const auto c = static_cast<std::size_t>(f.components);
+            for (int i = 0; i < rows; ++i)
+              std::copy_n(seg + c * i, c, m.whole.data() + field_base + c * global_row[first + i]);
+            seg += c * rows;
+            field_base += c * entities;
+          }
+        };
+        unpack(ns, m.rank_node_rows[r], m.gathered_node_row, node_pos, m.nodes);
+        unpack(es, m.rank_element_rows[r], m.gathered_element_row, element_pos, m.elements);
         node_pos += m.rank_node_rows[r];
         element_pos += m.rank_element_rows[r];
       }

@@ -43,7 +43,7 @@ def branches(rows, column):
     return pick(rows[: deepest + 1]), pick(rows[deepest + 1:])
 
 
-def plot(a, rows, deepest, column, W, Pc, pull_off, h):
+def plot(a, rows, column, W, Pc, pull_off, h):
     """a(P) of every recorded time, loading (filled) and withdrawal (open), for W and, with
     --hertz-output, the W = 0 twin, against DMT and Hertz; radii under 5 element sizes shaded."""
     fig, ax = pyplot().subplots(figsize=(7, 5))
@@ -119,7 +119,7 @@ def main():
           f"tolerance {a.energy_tolerance:.0%}")
     print("PASS" if ok else "FAIL")
     if a.plot:
-        plot(a, rows, deepest, column, W, Pc, pull_off, h)
+        plot(a, rows, column, W, Pc, pull_off, h)
     return 0 if ok else 1
 
 
