@@ -19,7 +19,8 @@ StableStep compute_stable_time_step(const Model& model, const double* u) {
     const double damping_factor = std::sqrt(1.0 + xi * xi) - xi;
     for (int e = 0; e < blk.count; ++e) {
       const int global = blk.first_element + e;
-      const double* B0 = &blk.B0[24 * e];
+      double B0[24];
+      reference_gradient(blk, e, B0);
       double L = blk.length0[e];
       double H[9] = {};
       double J = 1.0;
