@@ -179,10 +179,11 @@ void DeckRun::loop() {
   bool stopped_at_step = false;
   try {
     if (!resume_) integrator_->init();
-    // The added-mass guard (solver/mass_scaling.hpp): stop before the first step, outputs valid.
-    if (model_->mass_scaling.exceeds_limit()) throw NumericalFailure(model_->mass_scaling.limit_message());
     while (!integrator_->finished()) {
       integrator_->step(on_time_n);
+      // The added-mass guard (solver/mass_scaling.hpp): stop after the first step, whose step writes
+      // the t = 0 outputs (history row, fields), so the files are valid.
+      if (model_->mass_scaling.exceeds_limit()) throw NumericalFailure(model_->mass_scaling.limit_message());
       stopped_at_step = options_.stop_at_step >= 0 && integrator_->step_index() >= options_.stop_at_step;
       bool stop = stop_signal() || stopped_at_step;
       if (ranks_ > 1) stop = parallel::max(static_cast<long long>(stop)) > 0;  // every rank stops at the same step
