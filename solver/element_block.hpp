@@ -33,6 +33,10 @@ struct ElementBlock {
   std::vector<double> B0;        // [3][8] per element, interleaved: reference gradient operator (m^2)
   std::vector<double> volume0;   // [e] (m^3)
   std::vector<double> length0;   // [e] reference characteristic length (m)
+  // selective mass scaling (solver/mass_scaling.hpp): density factor s_e >= 1 of the lumped mass and
+  // the stable-step estimate; empty when the block is not scaled (every s_e = 1). The kernels keep
+  // the physical density (bulk and hourglass viscosity, docs/theory.md 1.4.1).
+  std::vector<double> mass_scale;  // [e]
   // mean quadrature only
   // hourglass vectors in factored form, gamma_aI = Gamma_aI - c_aj B0_jI (hex8/geometry.hpp):
   std::vector<double> hg_coefficients;  // c_aj = (X_jJ Gamma_aJ)/V0, [4][3] per element, interleaved (1/m^2... m/m^3)
