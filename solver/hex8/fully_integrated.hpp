@@ -12,6 +12,7 @@
 
 #include "materials/lanes.hpp"
 #include "solver/element_block.hpp"
+#include "solver/hex8/element_stable_step.hpp"
 #include "solver/hex8/internal_forces.hpp"
 #include "solver/hex8/node_lanes.hpp"
 #include "solver/hex8/sum_factorized.hpp"
@@ -21,7 +22,8 @@ namespace tribex::solver::hex8 {
 /// Elements e .. e + lane_count<T> - 1 of the block (e a multiple of the lane count).
 template <class T, class Material>
 void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
-                            const double* v, double* force, double dt, bool want_stress, ElementPassTotals& totals) {
+                            const double* v, double* force, double dt, bool want_stress, bool want_stable_step,
+                            ElementPassTotals& totals) {
   constexpr int ns = Material::state_size;
   using materials::lane;
   constexpr int n = materials::lane_count<T>;
@@ -41,8 +43,10 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   // through the point stresses (S - q I at each point), since B0 = sum_p wdetJ_p dN/dX(p).
   const T V = materials::load_lanes<T>(&blk.volume0[e]);
   const T L = materials::load_lanes<T>(&blk.length0[e]);
+  T B0[24];
+  for (int k = 0; k < 24; ++k) B0[k] = materials::load_lanes<T>(&blk.B0[lane_index(e, k, 24)]);
   T edot{};
-  for (int k = 0; k < 24; ++k) edot += ve[k] * materials::load_lanes<T>(&blk.B0[lane_index(e, k, 24)]);
+  for (int k = 0; k < 24; ++k) edot += ve[k] * B0[k];
   edot /= V;
   const T compression = materials::negative_part(edot);
   const T q = -blk.linear_bulk_viscosity * blk.rho_c * L * edot +
@@ -80,6 +84,19 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   T fe[24] = {};
   add_point_forces(Sw, Q, fe);
 
+  if (want_stable_step) {
+    // the element's mean gradient, as the mean-quadrature kernel forms it (element_stable_step.hpp)
+    const T inv_v0 = 1.0 / V;
+    T H_mean[9];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        T sum{};
+        for (int I = 0; I < 8; ++I) sum += ue[8 * i + I] * B0[8 * j + I];
+        H_mean[3 * i + j] = sum * inv_v0;
+      }
+    add_stable_steps(mat, blk, e, H_mean, B0, totals.stable);
+  }
+
   unsigned finite_lanes = 0;
   for (int l = 0; l < n; ++l)
     if (lane(not_finite, l) == 0.0)  // not NaN
@@ -101,15 +118,15 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
 template <class T, class Material>
 ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk, const int* conn,
                                           const double* u, const double* v, double* force, double dt,
-                                          bool want_stress) {
+                                          bool want_stress, bool want_stable_step) {
   ElementPassTotals totals;
   constexpr int n = materials::lane_count<T>;
   int e = 0;
-  for (; e + n <= blk.count; e += n) fully_integrated_lanes<T>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
+  for (; e + n <= blk.count; e += n) fully_integrated_lanes<T>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
   if constexpr (n > 2)
     for (; e + 2 <= blk.count; e += 2)
-      fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
-  for (; e < blk.count; ++e) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
+      fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
+  for (; e < blk.count; ++e) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
   return totals;
 }
 

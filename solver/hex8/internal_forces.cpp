@@ -10,7 +10,7 @@ namespace tribex::solver {
 namespace hex8::avx2 {
 // avx2_kernels.cpp
 ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* u, const double* v,
-                                  double* force, double dt, bool want_stress);
+                                  double* force, double dt, bool want_stress, bool want_stable_step);
 }  // namespace hex8::avx2
 #endif
 
@@ -36,17 +36,20 @@ int element_lane_width() {
 void set_element_lane_width(int lanes) { forced_lane_width = lanes; }
 
 ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
-                                      const double* v, double* force, double dt, bool want_stress) {
+                                      const double* v, double* force, double dt, bool want_stress,
+                                      bool want_stable_step) {
 #ifdef TRIBEX_AVX2_KERNELS
   if (element_lane_width() == 4)
-    return hex8::avx2::internal_forces(block, connectivity, u, v, force, dt, want_stress);
+    return hex8::avx2::internal_forces(block, connectivity, u, v, force, dt, want_stress, want_stable_step);
 #endif
   return std::visit(
       [&](const auto& mat) {
         using materials::double2;
         if (block.formulation == inputs::ElementFormulation::mean_quadrature)
-          return hex8::mean_quadrature_forces<double2>(mat, block, connectivity, u, v, force, dt, want_stress);
-        return hex8::fully_integrated_forces<double2>(mat, block, connectivity, u, v, force, dt, want_stress);
+          return hex8::mean_quadrature_forces<double2>(mat, block, connectivity, u, v, force, dt, want_stress,
+                                                              want_stable_step);
+        return hex8::fully_integrated_forces<double2>(mat, block, connectivity, u, v, force, dt, want_stress,
+                                                              want_stable_step);
       },
       block.material);
 }

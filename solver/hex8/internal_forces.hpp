@@ -5,6 +5,7 @@
 #pragma once
 
 #include "solver/element_block.hpp"
+#include "solver/hex8/element_stable_step.hpp"
 
 namespace tribex::solver {
 
@@ -15,15 +16,9 @@ struct ElementPassTotals {
   double viscous_power = 0.0;     // hourglass viscosity + bulk viscosity dissipation rate (W)
   double plastic_work = 0.0;      // work the material updates of this pass dissipated (J)
   int first_inverted = -1;        // global element index of the first inverted element, or -1
+  hex8::StableStepMin stable;     // when asked for: the block's stable step at this u (stable_time_step.hpp)
 };
 
-/// Internal forces of one block, subtracted from `force` [node][3]:
-///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dN_I/dX_j(g) (fully integrated),
-/// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (docs/theory.md 1.5),
-/// plus Flanagan-Belytschko hourglass forces (mean quadrature, docs/theory.md 2.2).
-/// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
-/// The material state goes from t^n to t^{n+1} (dt = t^{n+1} - t^n). When `want_stress` the block's
-/// stress buffer is filled (Cauchy stress, element mean).
 /// Elements per kernel call: 4 (AVX2) where the CPU has AVX2, else 2 (SSE2, every x86-64). The
 /// results are bitwise the same at either width (mean_quadrature.hpp).
 int element_lane_width();
@@ -31,7 +26,17 @@ int element_lane_width();
 /// `tribex bench block --lanes`.
 void set_element_lane_width(int lanes);
 
+/// Internal forces of one block, subtracted from `force` [node][3]:
+///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dN_I/dX_j(g) (fully integrated),
+/// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (docs/theory.md 1.5),
+/// plus Flanagan-Belytschko hourglass forces (mean quadrature, docs/theory.md 2.2).
+/// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
+/// The material state goes from t^n to t^{n+1} (dt = t^{n+1} - t^n). When `want_stress` the block's
+/// stress buffer is filled (Cauchy stress, element mean). When `want_stable_step` the pass also
+/// returns the block's stable step at u in `stable`, bitwise what compute_stable_time_step gives
+/// (the estimate folded into a pass that already has the element's gradient).
 ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
-                                      const double* v, double* force, double dt, bool want_stress);
+                                      const double* v, double* force, double dt, bool want_stress,
+                                      bool want_stable_step = false);
 
 }  // namespace tribex::solver

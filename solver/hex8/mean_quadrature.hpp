@@ -25,6 +25,7 @@
 
 #include "materials/lanes.hpp"
 #include "solver/element_block.hpp"
+#include "solver/hex8/element_stable_step.hpp"
 #include "solver/hex8/geometry.hpp"
 #include "solver/hex8/internal_forces.hpp"
 #include "solver/hex8/node_lanes.hpp"
@@ -64,7 +65,7 @@ inline void hourglass_base_combinations(const T r0, const T r1, const T r2, cons
 template <class T, class Material, bool HourglassViscosity>
 inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
                                   const double* v, double* force, double dt, bool want_stress,
-                                  ElementPassTotals& totals) {
+                                  bool want_stable_step, ElementPassTotals& totals) {
   using materials::from_lanes;
   using materials::lane;
   using materials::load_lanes;
@@ -171,36 +172,39 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
       materials::point_cauchy_stress(mat, Hl, state_l, &blk.stress[6 * (e + l)]);
     }
   }
+  if (want_stable_step) add_stable_steps(mat, blk, e, H, B, totals.stable);
 }
 
 /// Elements [begin, count) of the block, `T` lanes at a time from `begin` (a multiple of the lane
 /// count), the tail two and one at a time.
 template <class T, class Material, bool HourglassViscosity>
 void mean_quadrature_range(const Material& mat, ElementBlock& blk, int begin, const int* conn, const double* u,
-                           const double* v, double* force, double dt, bool want_stress, ElementPassTotals& totals) {
+                           const double* v, double* force, double dt, bool want_stress, bool want_stable_step,
+                           ElementPassTotals& totals) {
   constexpr int n = materials::lane_count<T>;
   int e = begin;
   for (; e + n <= blk.count; e += n)
-    mean_quadrature_lanes<T, Material, HourglassViscosity>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
+    mean_quadrature_lanes<T, Material, HourglassViscosity>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
   if constexpr (n > 2)
     for (; e + 2 <= blk.count; e += 2)
       mean_quadrature_lanes<materials::double2, Material, HourglassViscosity>(mat, blk, e, conn, u, v, force, dt,
-                                                                             want_stress, totals);
+                                                                             want_stress, want_stable_step, totals);
   if constexpr (n > 1)
     for (; e < blk.count; ++e)
       mean_quadrature_lanes<double, Material, HourglassViscosity>(mat, blk, e, conn, u, v, force, dt, want_stress,
-                                                                  totals);
+                                                                  want_stable_step, totals);
 }
 
 /// The block at lane width T.
 template <class T, class Material>
 ElementPassTotals mean_quadrature_forces(const Material& mat, ElementBlock& blk, const int* conn, const double* u,
-                                         const double* v, double* force, double dt, bool want_stress) {
+                                         const double* v, double* force, double dt, bool want_stress,
+                                         bool want_stable_step) {
   ElementPassTotals totals;
   if (blk.hourglass_viscosity > 0.0)
-    mean_quadrature_range<T, Material, true>(mat, blk, 0, conn, u, v, force, dt, want_stress, totals);
+    mean_quadrature_range<T, Material, true>(mat, blk, 0, conn, u, v, force, dt, want_stress, want_stable_step, totals);
   else
-    mean_quadrature_range<T, Material, false>(mat, blk, 0, conn, u, v, force, dt, want_stress, totals);
+    mean_quadrature_range<T, Material, false>(mat, blk, 0, conn, u, v, force, dt, want_stress, want_stable_step, totals);
   return totals;
 }
 

@@ -92,8 +92,10 @@ void CentralDifference::raise_pending_failure() {
 }
 
 double CentralDifference::choose_dt() {
-  if (step_ % dt_update_interval_ == 0 || stable_.dt <= 0.0) {
-    stable_ = compute_stable_time_step(model_, u_.data());
+  if (stable_step_due()) {
+    // The force pass at this u has usually computed it already (bitwise the same numbers).
+    stable_ = folded_stable_valid_ ? folded_stable_ : compute_stable_time_step(model_, u_.data());
+    folded_stable_valid_ = false;
     stable_.controlling_element = global_element(stable_.controlling_element);
     if (stable_.inverted_element >= 0 && pending_failure_.empty())
       pending_failure_ = "element " + std::to_string(global_element(stable_.inverted_element) + 1) +
@@ -129,15 +131,15 @@ void CentralDifference::init() {
   parallel::sum(&ke, 1);
   const bool stress0 = wants_stress_ && wants_stress_(time_, 0);
   force_time_ = time_;
-  compute_forces(time_, stress0);
-  energies_.kinetic = ke;
   stable_ = {};
+  compute_forces(time_, stress0, true);
+  energies_.kinetic = ke;
   dt_half_ = choose_dt();
   if (!(dt_half_ > 0.0))
     throw SetupError("the stable time step is not positive (" + std::to_string(dt_half_) + " s); check the mesh and materials");
 }
 
-void CentralDifference::compute_forces(double t, bool want_stress) {
+void CentralDifference::compute_forces(double t, bool want_stress, bool want_stable_step) {
   std::fill(f_.begin(), f_.end(), 0.0);
   // Applied pressures (follower loads on the current configuration) and prescribed nodal forces;
   // f_ext is zero off the loaded dofs, so only those are cleared and copied.
@@ -168,9 +170,17 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
   }
   double strain = 0.0, hourglass = 0.0;
   viscous_power_ = 0.0;
+  hex8::StableStepMin stable;
   for (auto& blk : model_.blocks) {
     const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), u_.data(), v_.data(), f_.data(),
-                                            t - force_time_, want_stress);
+                                            t - force_time_, want_stress, want_stable_step);
+    if (want_stable_step) {  // blocks in order, as compute_stable_time_step visits them
+      if (totals.stable.dt < stable.dt) {
+        stable.dt = totals.stable.dt;
+        stable.controlling_element = totals.stable.controlling_element;
+      }
+      if (stable.inverted_element < 0) stable.inverted_element = totals.stable.inverted_element;
+    }
     if (totals.first_inverted >= 0 && pending_failure_.empty())
       pending_failure_ = "element " + std::to_string(global_element(totals.first_inverted) + 1) + " of block '" +
                          blk.name + "' inverted (det F <= 0)" + where_and_when(step_ + 1, t);
@@ -178,6 +188,10 @@ void CentralDifference::compute_forces(double t, bool want_stress) {
     hourglass += totals.hourglass_energy;
     viscous_power_ += totals.viscous_power;
     plastic_work_ += totals.plastic_work;
+  }
+  if (want_stable_step) {
+    folded_stable_ = {stable.dt, stable.controlling_element, stable.inverted_element};
+    folded_stable_valid_ = true;
   }
   force_time_ = t;
   // This rank's parts; account_time_n sums them over the ranks.
@@ -435,7 +449,7 @@ void CentralDifference::step(const std::function<void()>& on_time_n) {
   time_ += h;
   ++step_;
   const bool want_stress = wants_stress_ && wants_stress_(time_, step_);
-  compute_forces(time_, want_stress);
+  compute_forces(time_, want_stress, !finished() && stable_step_due());
   dt_prev_half_ = dt_half_;
   dt_half_ = finished() ? dt_prev_half_ : choose_dt();
   if (!finished() && dt_half_ < 1e-6 * dt_prev_half_)

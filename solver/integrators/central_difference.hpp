@@ -79,7 +79,9 @@ class CentralDifference {
   void set_stress_request(std::function<bool(double, long)> wants) { wants_stress_ = std::move(wants); }
 
  private:
-  void compute_forces(double t, bool want_stress);
+  /// want_stable_step: the element pass also gives the stable step at this u (folded_stable_).
+  void compute_forces(double t, bool want_stress, bool want_stable_step);
+  bool stable_step_due() const { return step_ % dt_update_interval_ == 0 || stable_.dt <= 0.0; }
   void update_velocity();
   void apply_constraints();
   void account_time_n();
@@ -111,6 +113,8 @@ class CentralDifference {
   std::vector<int> silent_index_;  // [node] index into model.silent, -1 if none (empty: no silent nodes)
   Energies energies_;
   StableStep stable_;
+  StableStep folded_stable_;           // from the last force pass that was asked for it (local numbering)
+  bool folded_stable_valid_ = false;   // consumed by choose_dt
   double external_power_right_ = 0.0;  // F_ext^{n-1} . v^{n-1/2}, for the trapezoidal work rule
   double viscous_power_ = 0.0;        // element viscous dissipation rate of the last force pass
   double plastic_work_ = 0.0;         // this rank's material dissipation so far (J), summed in account_time_n

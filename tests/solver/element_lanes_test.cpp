@@ -13,6 +13,7 @@
 
 #include "mesh/box.hpp"
 #include "solver/model.hpp"
+#include "solver/stable_time_step.hpp"
 #include "support.hpp"
 #include "solver/hex8/internal_forces.hpp"
 
@@ -116,8 +117,32 @@ TEST_P(LanesTest, ElementsGiveBitwiseTheSameResultsAtEveryLaneWidthAndAlone) {
   EXPECT_EQ(hourglass, four.totals.hourglass_energy);
   EXPECT_EQ(power, four.totals.viscous_power);
   EXPECT_GT(four.totals.strain_energy, 0.0);
-  if (formulation == inputs::ElementFormulation::mean_quadrature) EXPECT_GT(four.totals.hourglass_energy, 0.0);
+  if (formulation == inputs::ElementFormulation::mean_quadrature) {
+    EXPECT_GT(four.totals.hourglass_energy, 0.0);
+  }
   EXPECT_EQ(four.totals.first_inverted, -1);
+}
+
+// The stable step folded into the force pass is bitwise compute_stable_time_step's, at both widths.
+TEST_P(LanesTest, FoldedStableStepIsTheSeparatePassBitwise) {
+  const auto [material, formulation] = GetParam();
+  Box box = distorted_box(material, formulation);
+  const int nodes = box.mesh.node_count();
+  std::vector<double> u(3 * nodes), v(3 * nodes, 0.0);
+  for (int k = 0; k < 3 * nodes; ++k) u[k] = 4e-11 * std::sin(0.7 * k) + 1e-11 * std::cos(0.3 * k * k);
+  const solver::StableStep separate = solver::compute_stable_time_step(box.model, u.data());
+  ASSERT_GT(separate.dt, 0.0);
+  ASSERT_EQ(separate.inverted_element, -1);
+  for (int lanes : {2, 4}) {
+    solver::set_element_lane_width(lanes);
+    std::vector<double> f(3 * nodes, 0.0);
+    const auto totals = solver::add_internal_forces(box.model.blocks[0], box.mesh.connectivity.data(), u.data(),
+                                                    v.data(), f.data(), 0.0, false, true);
+    EXPECT_EQ(totals.stable.dt, separate.dt) << lanes << " lanes";
+    EXPECT_EQ(totals.stable.controlling_element, separate.controlling_element) << lanes << " lanes";
+    EXPECT_EQ(totals.stable.inverted_element, -1);
+  }
+  solver::set_element_lane_width(0);
 }
 
 INSTANTIATE_TEST_SUITE_P(
