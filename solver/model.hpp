@@ -68,6 +68,9 @@ struct Model {
   double mass_damping = 0.0;           // 1/s
   double total_mass = 0.0;
   std::vector<int> element_block;      // [element] index into blocks
+  /// [block] the block whose body it belongs to: itself, or for a `surface layer block` the block it was
+  /// split from (so the guards see a tip and its skin as one body, solver/guards/block_translation.hpp).
+  std::vector<int> block_body;
   /// Contact, when the region has a contact definition (set up by build_model).
   std::unique_ptr<contact::ContactManager> contact;
   std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)

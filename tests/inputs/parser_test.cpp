@@ -269,6 +269,19 @@ TEST(Parser, PrescribedForce) {
   EXPECT_TRUE(has_error(ds, 38, "needs a force (N)")) << all(ds);  // the scale factor line
 }
 
+TEST(Parser, SurfaceLayerBlock) {
+  const Deck d = parse_deck_file(good_dir + "full.i");
+  const auto& layers = d.models.at(0).surface_layers;
+  ASSERT_EQ(layers.size(), 1u);
+  EXPECT_EQ(layers[0].name, "substrate_skin");
+  EXPECT_EQ(layers[0].from_block, "substrate");
+  EXPECT_EQ(layers[0].surface, "substrate_zmax");
+  EXPECT_EQ(layers[0].layers, 2);
+  EXPECT_EQ(layers[0].where.line, 52);
+  EXPECT_EQ(layers[0].from_block_where.line, 53);
+  EXPECT_EQ(layers[0].surface_where.line, 54);
+}
+
 TEST(Parser, ResolvedTextRoundTrips) {
   for (const char* name : {"full.i", "minimal.i", "gmsh_included.i"}) {
     const Deck first = parse_deck_file(good_dir + name);
