@@ -98,11 +98,13 @@ TEST(Parser, FullDeckValues) {
   EXPECT_EQ(m.boxes[0].intervals, (std::array<int, 3>{10, 10, 4}));
   EXPECT_EQ(m.boxes[0].grade_toward, "zmax");
   EXPECT_EQ(m.boxes[0].grading_ratio, 1.1);
-  ASSERT_EQ(m.blocks.size(), 1u);
+  ASSERT_EQ(m.blocks.size(), 2u);  // substrate and its surface layer block substrate_skin
   EXPECT_EQ(m.blocks[0].block, "substrate");
   EXPECT_EQ(m.blocks[0].material, "silicon");
   EXPECT_EQ(m.blocks[0].model, "neo_hookean");
   EXPECT_EQ(m.blocks[0].section, "hex8");
+  EXPECT_EQ(m.blocks[1].block, "substrate_skin");
+  EXPECT_EQ(m.blocks[1].model, "elastic");
 
   const TimeControlSpec& t = d.procedure.time_control;
   EXPECT_EQ(t.start_time, 0.0);
@@ -143,7 +145,7 @@ TEST(Parser, FullDeckValues) {
   EXPECT_EQ(r.history->reaction_force_node_sets, (std::vector<std::string>{"substrate_zmin", "substrate_zmax"}));
   EXPECT_EQ(r.history->displacement_node_sets, std::vector<std::string>{"substrate_zmax"});
   // Mesh references keep their location for the mesh layer's messages.
-  EXPECT_EQ(r.fixed_displacements[0].where.line, 68);
+  EXPECT_EQ(r.fixed_displacements[0].where.line, 77);  // 68 before the surface layer block (9 lines)
 }
 
 TEST(Parser, DefaultsOfTheMinimalDeck) {
