@@ -314,6 +314,22 @@ struct GuardSpec {
   double kinetic_energy_warning = 0.05;      // kinetic / internal energy bound of a quasi-static run
   double contact_motion_warning = 0.5;       // one-step surface motion / contact capture distance
   double contact_motion_limit = 1.0;         // the same, stop (tunnelling)
+  // Mass-scaled quasi-static runs (`begin mass scaling`, `maximum kinetic energy ratio`): kinetic less
+  // the blocks' mean translation over internal energy, while loaded, that stops the run (exit 3).
+  std::optional<double> kinetic_energy_limit;
+};
+
+/// `begin mass scaling` (solver/mass_scaling.hpp, docs/theory.md 1.4.1): selective mass scaling. Every
+/// element of the listed blocks whose stable step is below the element target gets its density raised
+/// by (dt_target / dt_e)^2 so that its step equals the target. Exactly one of `target time step`
+/// (the run's time step, s) and `largest factor` (target = factor x the run's unscaled step) is set.
+struct MassScalingSpec {
+  std::optional<double> target_time_step;  // s, the run's step (after the time step scale factor)
+  std::optional<double> largest_factor;    // >= 1
+  std::vector<std::string> blocks;         // empty: every block
+  double maximum_added_mass_fraction = 0.05;  // added / unscaled total mass; exit 3 above it
+  std::optional<double> maximum_kinetic_energy_ratio;  // quasi static: KE / IE limit (exit 3); 0.1 by default there
+  SourceLocation target_where, blocks_where, where;
 };
 
 /// `begin presto region NAME`.
@@ -328,6 +344,7 @@ struct RegionSpec {
   std::vector<SilentBoundarySpec> silent_boundaries;
   double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
   GuardSpec guards;
+  std::optional<MassScalingSpec> mass_scaling;
   std::optional<ContactSpec> contact;
   std::optional<ResultsOutputSpec> results;
   std::optional<HistoryOutputSpec> history;

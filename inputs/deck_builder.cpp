@@ -492,9 +492,36 @@ class Builder {
         if (!o.step_increment && !o.wall_time_increment)
           error(c.where, c, "'begin restart output' needs 'step increment = N' and/or 'wall time increment = T'");
         r.restart = o;
+      } else if (t == "mass scaling") {
+        r.mass_scaling = mass_scaling(c, r.guards);
       }
     }
     return r;
+  }
+
+  // `begin mass scaling`: one target (a time step or a factor); the kinetic-energy limit belongs to
+  // quasi-static runs (a dynamic run has kinetic energy by nature) and is 0.1 there unless given.
+  MassScalingSpec mass_scaling(const Scope& c, GuardSpec& guards) {
+    MassScalingSpec m;
+    m.where = c.where;
+    m.target_time_step = optional_real(c, "target time step");
+    m.largest_factor = optional_real(c, "largest factor");
+    m.target_where = where(c, m.target_time_step ? "target time step" : "largest factor");
+    if (m.target_time_step && m.largest_factor)
+      error(where(c, "largest factor"), c,
+            "'begin mass scaling' takes 'target time step' or 'largest factor', not both; remove one");
+    else if (!m.target_time_step && !m.largest_factor)
+      error(c.where, c, "'begin mass scaling' needs 'target time step = DT' or 'largest factor = F'");
+    m.blocks = words(c, "blocks");
+    m.blocks_where = where(c, "blocks");
+    m.maximum_added_mass_fraction = real(c, "maximum added mass fraction", 0.05);
+    m.maximum_kinetic_energy_ratio = optional_real(c, "maximum kinetic energy ratio");
+    if (m.maximum_kinetic_energy_ratio && !guards.quasi_static)
+      error(where(c, "maximum kinetic energy ratio"), c,
+            "'maximum kinetic energy ratio' applies to quasi-static runs: add 'quasi static = on' to the region or "
+            "remove the key");
+    if (guards.quasi_static) guards.kinetic_energy_limit = m.maximum_kinetic_energy_ratio.value_or(0.1);
+    return m;
   }
 
   // `begin contact definition`: surfaces from `contact surface NAME contains SIDESET...` lines,

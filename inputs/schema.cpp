@@ -312,8 +312,24 @@ std::vector<BlockSchema> build_table() {
                 {"contact definition", 0, 1},
                 {"results output", 0, 1},
                 {"history output", 0, 1},
-                {"restart output", 0, 1}},
+                {"restart output", 0, 1},
+                {"mass scaling", 0, 1}},
                false, "boundary conditions and output"});
+
+  t.push_back({"mass scaling", NameRule::none, {}, {}, true,
+               {real("target time step", dim::time, positive(), false, "",
+                     "the run's time step (after 'time step scale factor'); elements whose step is below it get "
+                     "density x (target / dt_e)^2. One of this and 'largest factor'"),
+                real("largest factor", dim::none, at_least(1.0), false, "",
+                     "target time step = factor x the unscaled run's time step. One of this and 'target time step'"),
+                text("blocks", ValueKind::strings, false, "element blocks scaled (default: every block)"),
+                real("maximum added mass fraction", dim::none, positive(), false, "0.05",
+                     "stop (exit 3) when the added mass exceeds this fraction of the unscaled mass of the model"),
+                real("maximum kinetic energy ratio", dim::none, positive(), false, "",
+                     "quasi static runs: exit 3 when kinetic (less the blocks' mean translation) over internal energy "
+                     "exceeds it while loaded (judged at the end; default 0.1 with 'quasi static = on')")},
+               {},
+               false, "selective mass scaling to a target time step, with its guards (docs/theory.md 1.4.1)"});
 
   {
     KeySchema surface = text("contact surface", ValueKind::strings, true,

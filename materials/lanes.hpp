@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// One element or two per SSE register. The fully integrated kernel runs the same code for a lone
+// One element, two per SSE register, or four per AVX2 register (double4 below). The fully integrated kernel runs the same code for a lone
 // element (T = double) and for a pair (T = double2, GCC's vector extension: + - * / act lane by
 // lane and a double operand is broadcast). The arithmetic is IEEE lane by lane and x86-64-v2 has
 // no fused multiply-add, so an element's forces are bitwise the same alone or in a pair (tested:
@@ -36,8 +36,10 @@ template <class T, class F>
 inline T from_lanes(F&& f) {
   if constexpr (lane_count<T> == 1)
     return f(0);
-  else
+  else if constexpr (lane_count<T> == 2)
     return T{f(0), f(1)};
+  else
+    return T{f(0), f(1), f(2), f(3)};
 }
 
 /// lane_count<T> consecutive doubles from p (a pair-interleaved array's two lanes).
@@ -84,5 +86,28 @@ inline double lane_log(double x) {
   return std::log(x);
 #endif
 }
+
+// Four elements per AVX2 register: defined only where the translation unit is compiled for AVX2
+// (solver/hex8/avx2_kernels.cpp), so no other object file holds AVX code. The same IEEE operations
+// lane by lane as double and double2, no fused multiply-add (the file is built with -mavx2, not
+// -mfma), and the logarithm taken by the two-lane routine twice, so an element's result does not
+// depend on the lane width it ran at.
+#ifdef __AVX2__
+using double4 = double __attribute__((vector_size(32)));
+template <>
+inline constexpr int lane_count<double4> = 4;
+inline double lane(double4 x, int l) { return x[l]; }
+inline double4 negative_part(double4 x) { return x < double4{} ? x : double4{}; }
+inline double4 positive_part(double4 x) { return x > double4{} ? x : double4{}; }
+inline double4 lane_max(double4 x, double y) {
+  const double4 yy{y, y, y, y};
+  return x > yy ? x : yy;
+}
+inline double4 lane_sqrt(double4 x) { return double4{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])}; }
+inline double4 lane_log(double4 x) {
+  const double2 lo = lane_log(double2{x[0], x[1]}), hi = lane_log(double2{x[2], x[3]});
+  return double4{lo[0], lo[1], hi[0], hi[1]};
+}
+#endif
 
 }  // namespace tribex::materials

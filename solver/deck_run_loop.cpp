@@ -48,11 +48,15 @@ std::string DeckRun::progress_text(long n, double t, double error) const {
 }
 
 void DeckRun::fill_history_row(double t) {
-  const HistoryState state{t, integrator_->dt(), integrator_->energies(), integrator_->contact_totals(),
-                           integrator_->momentum()};
+  const HistoryState state{t,
+                           integrator_->dt(),
+                           integrator_->energies(),
+                           integrator_->contact_totals(),
+                           integrator_->momentum(),
+                           model_->mass_scaling.added_mass};
   row_.clear();
   for (const HistoryColumn& c : history_columns())
-    if (!c.material_dissipation_only || material_dissipation_) row_.push_back(c.value(state));
+    if (c.present(material_dissipation_, model_->mass_scaling.active)) row_.push_back(c.value(state));
   std::fill(set_sums_.begin(), set_sums_.end(), 0.0);
   std::size_t c = 0;
   for (const auto& set : reaction_sets_) {
@@ -177,6 +181,9 @@ void DeckRun::loop() {
     if (!resume_) integrator_->init();
     while (!integrator_->finished()) {
       integrator_->step(on_time_n);
+      // The added-mass guard (solver/mass_scaling.hpp): stop after the first step, whose step writes
+      // the t = 0 outputs (history row, fields), so the files are valid.
+      if (model_->mass_scaling.exceeds_limit()) throw NumericalFailure(model_->mass_scaling.limit_message());
       stopped_at_step = options_.stop_at_step >= 0 && integrator_->step_index() >= options_.stop_at_step;
       bool stop = stop_signal() || stopped_at_step;
       if (ranks_ > 1) stop = parallel::max(static_cast<long long>(stop)) > 0;  // every rank stops at the same step
@@ -201,7 +208,11 @@ void DeckRun::loop() {
 
 void DeckRun::close() {
   RunSummary& summary = summary_;
-  guards_->finish();
+  const std::string guard_failure = guards_->finish();
+  if (!guard_failure.empty() && (summary.exit_code == 0 || summary.exit_code == 130)) {
+    summary.exit_code = 3;
+    summary.status = "numerical failure: " + guard_failure;
+  }
   summary.warnings = guards_->warnings();
   try {
     if (results_) results_->flush();  // collective in a parallel run: every rank gets here
@@ -224,6 +235,7 @@ void DeckRun::close() {
   summary.energies = integrator_->energies();
   summary.initial_stable_time_step = stable0_.dt;
   summary.controlling_element = stable0_.controlling_element;
+  summary.mass_scaling = model_->mass_scaling;
   const long steps_run = summary.steps - summary.first_step;  // by this process
   summary.ns_per_element_step =
       steps_run > 0 && elements_ > 0 ? 1e9 * summary.loop_seconds / (double(elements_) * double(steps_run)) : 0.0;

@@ -65,6 +65,7 @@ void DeckRun::preflight() {
   log_.say(format("stable time step %.6g s (element %d controls it); scale factor %.3g => dt = %.6g s", stable0_.dt,
                   stable0_.controlling_element + 1, tc_.time_step_scale_factor,
                   std::min(stable0_.dt * tc_.time_step_scale_factor, tc_.maximum_time_step.value_or(INFINITY))));
+  for (const auto& line : global.mass_scaling.lines()) log_.say(line);
   est_steps_ = (tc_.termination_time - tc_.start_time) /
                std::min(stable0_.dt * tc_.time_step_scale_factor, tc_.maximum_time_step.value_or(INFINITY));
   log_.say(format("termination time %.6g s: about %.0f steps", tc_.termination_time, std::ceil(est_steps_)));
@@ -74,6 +75,10 @@ void DeckRun::preflight() {
   for (const auto& w : global.setup.warnings) announce(w);
   summary_.elements = elements_;
   summary_.nodes = global.mesh.node_count();
+  // `tribex check` stops where the run would (exit 3, the same message); a run stops after its outputs
+  // are open (DeckRun::loop), so that they are valid.
+  if (options_.check_only && global.mass_scaling.exceeds_limit())
+    throw NumericalFailure(global.mass_scaling.limit_message());
 }
 
 void DeckRun::report_mesh(const Model& global) {
@@ -240,7 +245,8 @@ void DeckRun::choose_history_columns() {
                                       [](const ElementBlock& b) { return materials::dissipates(b.material); });
   history_columns_ = describe_history_columns(
       material_dissipation_, region_.history ? region_.history->reaction_force_node_sets : std::vector<std::string>{},
-      region_.history ? region_.history->displacement_node_sets : std::vector<std::string>{});
+      region_.history ? region_.history->displacement_node_sets : std::vector<std::string>{},
+      model_->mass_scaling.active);
 }
 
 void DeckRun::open_results() {

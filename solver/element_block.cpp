@@ -28,13 +28,13 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
   b.rho_c = rho * c;
 
   const std::size_t n = static_cast<std::size_t>(b.count);
-  b.B0.resize(24 * n);
+  b.B0.assign(interleaved_size(b.count, 24), 0.0);
   b.volume0.resize(n);
   b.length0.resize(n);
   b.stress.assign(6 * n, 0.0);
   const bool mq = b.formulation == inputs::ElementFormulation::mean_quadrature;
   if (mq) {
-    b.gamma.resize(32 * n);
+    b.hg_coefficients.assign(interleaved_size(b.count, 12), 0.0);
     b.hg_k.resize(n);
     b.hg_c.resize(n);
   } else {
@@ -48,16 +48,19 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
     double X[24];
     for (int I = 0; I < 8; ++I)
       for (int i = 0; i < 3; ++i) X[3 * I + i] = mesh.coordinates[3 * mesh.connectivity[8 * global + I] + i];
-    double* B = &b.B0[24 * e];
+    double B[24];
     const double V = hex8::gradient_operator(X, B);
     if (!(V > 0.0) || hex8::min_corner_jacobian(X) <= 0.0)
       throw SetupError("element " + std::to_string(global + 1) + " of block '" + b.name +
                        "' is inverted or degenerate (volume " + std::to_string(V) +
                        " m^3); fix the mesh (node order or geometry)");
+    for (int k = 0; k < 24; ++k) b.B0[lane_index(e, k, 24)] = B[k];
     b.volume0[e] = V;
     b.length0[e] = hex8::characteristic_length(B, V);
     if (mq) {
-      hex8::hourglass_vectors(X, B, V, &b.gamma[32 * e]);
+      double coefficients[12];
+      hex8::hourglass_coefficients(X, V, coefficients);
+      for (int k = 0; k < 12; ++k) b.hg_coefficients[lane_index(e, k, 12)] = coefficients[k];
       double bb = 0.0;
       for (int k = 0; k < 24; ++k) bb += B[k] * B[k];
       // docs/theory.md 2.2: Q^s = kappa M (B.B)/(3V) q, q = gamma.u/sqrt(8), f = Q gamma/sqrt(8)

@@ -27,16 +27,22 @@ struct ElementBlock {
   double hourglass_viscosity = 0.0;        // nu_hg
   double rho_c = 0.0;                      // rho c_d at the reference state, kg/(m^2 s)
 
-  std::vector<double> B0;        // [e][3][8] reference gradient operator (m^2)
+  // Records of several values per element are interleaved by element in groups of
+  // `interleave_width` (below): value k of element e at lane_index(e, k, per_element), so that the
+  // kernels load 1, 2 or 4 consecutive elements' value k with one load. [e] arrays are plain.
+  std::vector<double> B0;        // [3][8] per element, interleaved: reference gradient operator (m^2)
   std::vector<double> volume0;   // [e] (m^3)
   std::vector<double> length0;   // [e] reference characteristic length (m)
+  // selective mass scaling (solver/mass_scaling.hpp): density factor s_e >= 1 of the lumped mass and
+  // the stable-step estimate; empty when the block is not scaled (every s_e = 1). The kernels keep
+  // the physical density (bulk and hourglass viscosity, docs/theory.md 1.4.1).
+  std::vector<double> mass_scale;  // [e]
   // mean quadrature only
-  std::vector<double> gamma;     // [e][4][8] hourglass vectors
+  // hourglass vectors in factored form, gamma_aI = Gamma_aI - c_aj B0_jI (hex8/geometry.hpp):
+  std::vector<double> hg_coefficients;  // c_aj = (X_jJ Gamma_aJ)/V0, [4][3] per element, interleaved (1/m^2... m/m^3)
   std::vector<double> hg_k;      // [e] kappa M (B.B)/(24 V): f = hg_k gamma gamma^T u   (N/m)
   std::vector<double> hg_c;      // [e] nu rho c sqrt(B.B/3)/8: f = hg_c gamma gamma^T v  (N s/m)
-  // fully integrated only
-  // fully integrated only, stored for two elements per SSE register (hex8/fully_integrated.hpp):
-  // the pairs' values interleaved, element e's value k at lane_index(e, k, per_element)
+  // fully integrated only, interleaved:
   std::vector<double> inv_jacobian;  // J^{-1}/8 at the 8 points, [3][3][8] per element (1/m), geometry.hpp
   std::vector<double> wdetJ;         // Gauss weight x det J, [8] per element (m^3)
   // material state, state_size_of(material) doubles per material point, n -> n+1 in the force pass:
@@ -46,16 +52,26 @@ struct ElementBlock {
   std::vector<double> stress;    // [e][6] Cauchy, Voigt xx yy zz xy yz zx (Pa)
 };
 
-/// Pair-interleaved storage: value k of element e, for arrays of `per_element` values per element
-/// and an even number of records (an odd count's last element has an unused partner lane).
+/// Elements per interleaved group: the widest lane count a kernel uses (4 doubles per AVX2
+/// register); narrower kernels read the group's lanes in pairs or one by one.
+inline constexpr int interleave_width = 4;
+
+/// Interleaved storage: value k of element e, for arrays of `per_element` values per element; the
+/// record count is rounded up to whole groups (the last group's unused lanes are zero).
 inline std::size_t lane_index(int e, int k, int per_element) {
-  return 2 * static_cast<std::size_t>(per_element) * static_cast<std::size_t>(e / 2) + 2 * static_cast<std::size_t>(k) +
-         static_cast<std::size_t>(e % 2);
+  constexpr std::size_t w = interleave_width;
+  return w * static_cast<std::size_t>(per_element) * static_cast<std::size_t>(e / interleave_width) +
+         w * static_cast<std::size_t>(k) + static_cast<std::size_t>(e % interleave_width);
 }
 inline std::size_t interleaved_size(int count, int per_element) {
-  return 2 * static_cast<std::size_t>(per_element) * static_cast<std::size_t>((count + 1) / 2);
+  constexpr int w = interleave_width;
+  return static_cast<std::size_t>(w) * static_cast<std::size_t>(per_element) * static_cast<std::size_t>((count + w - 1) / w);
 }
-/// The pair-interleaved records of `elements` (indices into `from`), paired anew in that order:
+/// Element e's reference gradient operator B0 [3][8] (m^2) out of the interleaved record.
+inline void reference_gradient(const ElementBlock& block, int e, double B[24]) {
+  for (int k = 0; k < 24; ++k) B[k] = block.B0[lane_index(e, k, 24)];
+}
+/// The interleaved records of `elements` (indices into `from`), grouped anew in that order:
 /// a rank's share of a block, or one element on its own. Empty stays empty (no such data).
 std::vector<double> select_interleaved(const std::vector<double>& from, std::span<const int> elements, int per_element);
 

@@ -322,6 +322,13 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     for (const auto& name : region.history->displacement_node_sets) node_set(m, name, region.history->displacement_where);
   }
 
+  // Mass scaling before the contact: the penalty k_p = s m_eff / dt^2 then reads the scaled masses and
+  // the scaled step (docs/theory.md 1.4.1).
+  if (region.mass_scaling) {
+    const auto& tc = deck.procedure.time_control;
+    model.mass_scaling = apply_mass_scaling(*region.mass_scaling, tc.time_step_scale_factor,
+                                            tc.maximum_time_step.value_or(INFINITY), model);
+  }
   if (region.contact) {
     const auto& tc = deck.procedure.time_control;
     const double dt = std::min(tc.time_step_scale_factor * compute_stable_time_step(model, nullptr).dt,

@@ -14,6 +14,7 @@
 #include "mesh/mesh.hpp"
 #include "solver/element_block.hpp"
 #include "solver/guards/run_warning.hpp"
+#include "solver/mass_scaling.hpp"
 #include "solver/parallel/domain.hpp"
 #include "solver/time_function.hpp"
 
@@ -66,7 +67,8 @@ struct Model {
   std::vector<NodalForceLoad> nodal_forces;
   SilentBoundaryNodes silent;
   double mass_damping = 0.0;           // 1/s
-  double total_mass = 0.0;
+  double total_mass = 0.0;             // kg, unscaled (rho V0 summed); Model::mass includes mass scaling
+  MassScalingReport mass_scaling;      // `begin mass scaling`: what set-up added (inactive without the block)
   std::vector<int> element_block;      // [element] index into blocks
   /// [block] the block whose body it belongs to: itself, or for a `surface layer block` the block it was
   /// split from (so the guards see a tip and its skin as one body, solver/guards/block_translation.hpp).

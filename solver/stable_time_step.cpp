@@ -9,7 +9,7 @@
 
 namespace tribex::solver {
 
-StableStep compute_stable_time_step(const Model& model, const double* u) {
+StableStep compute_stable_time_step(const Model& model, const double* u, double* per_element) {
   StableStep out;
   out.dt = std::numeric_limits<double>::infinity();
   const auto& m = model.mesh;
@@ -19,7 +19,8 @@ StableStep compute_stable_time_step(const Model& model, const double* u) {
     const double damping_factor = std::sqrt(1.0 + xi * xi) - xi;
     for (int e = 0; e < blk.count; ++e) {
       const int global = blk.first_element + e;
-      const double* B0 = &blk.B0[24 * e];
+      double B0[24];
+      reference_gradient(blk, e, B0);
       double L = blk.length0[e];
       double H[9] = {};
       double J = 1.0;
@@ -48,8 +49,10 @@ StableStep compute_stable_time_step(const Model& model, const double* u) {
         L = J * blk.volume0[e] / std::sqrt(2.0 * bb);
       }
       const double M = std::visit([&](const auto& mat) { return mat.wave_modulus(H); }, blk.material);
-      const double rho = rho0 / J;
+      // Mass scaling (docs/theory.md 1.4.1): the element's density is s_e rho0, so dt_e grows by sqrt(s_e).
+      const double rho = (blk.mass_scale.empty() ? rho0 : rho0 * blk.mass_scale[e]) / J;
       const double dt = L / std::sqrt(M / rho) * damping_factor;
+      if (per_element) per_element[global] = dt;
       if (dt < out.dt) {
         out.dt = dt;
         out.controlling_element = global;

@@ -19,7 +19,9 @@ struct StableStep {
   int inverted_element = -1;     // first element with non-positive volume, or -1
 };
 
-/// `u` is the displacement [node][3] (nullptr: reference configuration).
-StableStep compute_stable_time_step(const Model& model, const double* u);
+/// `u` is the displacement [node][3] (nullptr: reference configuration). `per_element` (optional,
+/// [element], global numbering) receives every element's dt_e (mass scaling's set-up); the density is
+/// the block's times the element's mass-scaling factor (ElementBlock::mass_scale).
+StableStep compute_stable_time_step(const Model& model, const double* u, double* per_element = nullptr);
 
 }  // namespace tribex::solver

@@ -161,18 +161,19 @@ void RunGuards::observe(long step, double t, const Energies& energies, const con
   }
 }
 
-void RunGuards::finish() {
-  scan_quasi_static();
+std::string RunGuards::finish() {
+  const std::string failure = scan_quasi_static();
   // The messages of summary.json carry each warning's largest value.
   for (const Watch* w : {&energy_, &penetration_, &motion_, &one_point_})
     if (w->entry >= 0) entry(*w).message = text(entry(*w));
+  return failure;
 }
 
-void RunGuards::scan_quasi_static() {
-  if (!spec_.quasi_static || samples_.empty()) return;
+std::string RunGuards::scan_quasi_static() {
+  if (!spec_.quasi_static || samples_.empty()) return {};
   double peak = 0.0;
   for (std::size_t i = 0; i < samples_.size(); i += sample_width) peak = std::max(peak, samples_[i + 3]);
-  if (!(peak > 0.0)) return;
+  if (!(peak > 0.0)) return {};
   Watch kinetic{WarningKind::kinetic_energy, spec_.kinetic_energy_warning};
   const auto quiet = std::move(say_);  // print once, with its maximum, after the scan
   say_ = [](const RunWarning&) {};
@@ -182,7 +183,17 @@ void RunGuards::scan_quasi_static() {
     watch(kinetic, static_cast<long>(samples_[i]), samples_[i + 1], samples_[i + 2] / internal, -1);
   }
   say_ = quiet;
-  if (kinetic.entry >= 0) say_(entry(kinetic));
+  if (kinetic.entry < 0) return {};
+  const RunWarning& w = entry(kinetic);
+  say_(w);
+  // Mass-scaled runs (`maximum kinetic energy ratio`): over the same loaded window, a limit that fails the
+  // run (exit 3). The window needs the whole run's peak, so the run is judged when it ends.
+  if (!spec_.kinetic_energy_limit || !(w.max_value > *spec_.kinetic_energy_limit)) return {};
+  return format("kinetic energy (less the blocks' mean translation) reached %.3g %% of internal energy at step %ld, "
+                "t = %.6g s, above 'maximum kinetic energy ratio' %.3g %% of 'begin mass scaling' (checked where the "
+                "internal energy is at least %.0f %% of its peak): the added mass made the run dynamic; lower the "
+                "target time step, drive slower or damp",
+                100 * w.max_value, w.max_step, w.max_time, 100 * *spec_.kinetic_energy_limit, 100 * loaded_fraction);
 }
 
 void RunGuards::save(StateArchive& archive) const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "contact/contact_manager.hpp"
@@ -40,8 +41,10 @@ class RunGuards {
   /// Whether this step's observe takes a quasi-static sample (and so needs translational_kinetic).
   bool wants_sample(long step) const { return spec_.quasi_static && step % stride_ == 0; }
 
-  /// At the end of the run (any exit): the quasi-static check over the loaded part of the run.
-  void finish();
+  /// At the end of the run (any exit): the quasi-static check over the loaded part of the run. Returns
+  /// the failure message when a mass-scaled run passed `maximum kinetic energy ratio` there (the run
+  /// then ends with exit 3), else empty.
+  std::string finish();
 
   const std::vector<RunWarning>& warnings() const { return warnings_; }
 
@@ -57,7 +60,7 @@ class RunGuards {
     int entry = -1;  // index in warnings_ once raised
   };
   void watch(Watch& w, long step, double t, double value, int node);
-  void scan_quasi_static();
+  std::string scan_quasi_static();
   RunWarning& entry(const Watch& w) { return warnings_[static_cast<std::size_t>(w.entry)]; }
   std::string text(const RunWarning& w) const { return describe(w, one_point_contact_); }
 

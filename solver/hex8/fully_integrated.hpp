@@ -2,9 +2,10 @@
 // Fully integrated hex8: 2x2x2 Gauss quadrature in total-Lagrangian form (docs/theory.md 2.3), no
 // hourglass control needed. At each point g: H = u_iI dN_I/dX_j, S = material.force_stress(H),
 // f_iI -= wdetJ_g S_ij dN_I/dX_j, the gradients and forces sum-factorised over the element's
-// edges (sum_factorized.hpp). A material with state keeps it per point, pair-interleaved like the
-// operators: value k of point p of element e at lane_index(e, p state_size + k, 8 state_size). Elements run two at a time, one per SSE lane (lanes.hpp; an odd
-// last element alone, bitwise as it would in a pair). Bulk viscosity uses the element-mean
+// edges (sum_factorized.hpp). A material with state keeps it per point, interleaved like the
+// operators: value k of point p of element e at lane_index(e, p state_size + k, 8 state_size).
+// Elements run four at a time per AVX2 register or two per SSE register (lanes.hpp), the tail two
+// and one at a time, bitwise as they would in a full register. Bulk viscosity uses the element-mean
 // volumetric rate (B0, as in the mean-quadrature element), which is adequate for the damping role
 // it has here. Locks volumetrically as nu -> 0.5 (use mean quadrature there).
 #pragma once
@@ -12,27 +13,24 @@
 #include "materials/lanes.hpp"
 #include "solver/element_block.hpp"
 #include "solver/hex8/internal_forces.hpp"
+#include "solver/hex8/node_lanes.hpp"
 #include "solver/hex8/sum_factorized.hpp"
 
 namespace tribex::solver::hex8 {
 
-/// Elements e .. e + lane_count<T> - 1 of the block (e even).
+/// Elements e .. e + lane_count<T> - 1 of the block (e a multiple of the lane count).
 template <class T, class Material>
 void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
                             const double* v, double* force, double dt, bool want_stress, ElementPassTotals& totals) {
   constexpr int ns = Material::state_size;
-  using materials::from_lanes;
   using materials::lane;
   constexpr int n = materials::lane_count<T>;
   const int* nodes[n];
   for (int l = 0; l < n; ++l) nodes[l] = conn + 8 * (blk.first_element + e + l);
   T ue[24], ve[24];
-  for (int I = 0; I < 8; ++I)
-    for (int i = 0; i < 3; ++i) {
-      ue[8 * i + I] = from_lanes<T>([&](int l) { return u[3 * nodes[l][I] + i]; });
-      ve[8 * i + I] = from_lanes<T>([&](int l) { return v[3 * nodes[l][I] + i]; });
-    }
-  // e is even: lane l of a pair-interleaved record is element e + l (element_block.hpp)
+  gather_nodal(u, nodes, ue);
+  gather_nodal(v, nodes, ve);
+  // e is a multiple of the lane count: lane l of an interleaved record is element e + l (element_block.hpp)
   T Q[9][8], w[8];
   for (int k = 0; k < 9; ++k)
     for (int p = 0; p < 8; ++p) Q[k][p] = materials::load_lanes<T>(&blk.inv_jacobian[lane_index(e, 8 * k + p, 72)]);
@@ -41,10 +39,10 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   // Bulk viscosity (docs/theory.md 1.5): a pressure q = -b1 rho c L edot + rho (b2 L)^2 min(edot, 0)^2
   // from the element's mean volumetric rate edot = B0_iI v_iI / V. Its force -q B0_iI is added
   // through the point stresses (S - q I at each point), since B0 = sum_p wdetJ_p dN/dX(p).
-  const T V = from_lanes<T>([&](int l) { return blk.volume0[e + l]; });
-  const T L = from_lanes<T>([&](int l) { return blk.length0[e + l]; });
+  const T V = materials::load_lanes<T>(&blk.volume0[e]);
+  const T L = materials::load_lanes<T>(&blk.length0[e]);
   T edot{};
-  for (int k = 0; k < 24; ++k) edot += ve[k] * from_lanes<T>([&](int l) { return blk.B0[24 * (e + l) + k]; });
+  for (int k = 0; k < 24; ++k) edot += ve[k] * materials::load_lanes<T>(&blk.B0[lane_index(e, k, 24)]);
   edot /= V;
   const T compression = materials::negative_part(edot);
   const T q = -blk.linear_bulk_viscosity * blk.rho_c * L * edot +
@@ -82,13 +80,15 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   T fe[24] = {};
   add_point_forces(Sw, Q, fe);
 
+  unsigned finite_lanes = 0;
+  for (int l = 0; l < n; ++l)
+    if (lane(not_finite, l) == 0.0)  // not NaN
+      finite_lanes |= 1u << l;
+    else if (totals.first_inverted < 0)
+      totals.first_inverted = blk.first_element + e + l;
+  subtract_nodal(force, nodes, fe, finite_lanes);
   for (int l = 0; l < n; ++l) {
-    if (lane(not_finite, l) != 0.0) {  // NaN
-      if (totals.first_inverted < 0) totals.first_inverted = blk.first_element + e + l;
-      continue;
-    }
-    for (int I = 0; I < 8; ++I)
-      for (int i = 0; i < 3; ++i) force[3 * nodes[l][I] + i] -= lane(fe[8 * i + I], l);
+    if (!(finite_lanes >> l & 1u)) continue;
     totals.strain_energy += lane(energy, l);
     totals.viscous_power += lane(viscous_power, l);
     if constexpr (Material::dissipates) totals.plastic_work += lane(plastic_work, l);
@@ -97,15 +97,19 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   }
 }
 
-template <class Material>
+/// The block at lane width T (double2 or double4), the tail two and one at a time.
+template <class T, class Material>
 ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk, const int* conn,
                                           const double* u, const double* v, double* force, double dt,
                                           bool want_stress) {
   ElementPassTotals totals;
+  constexpr int n = materials::lane_count<T>;
   int e = 0;
-  for (; e + 1 < blk.count; e += 2)
-    fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
-  if (e < blk.count) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
+  for (; e + n <= blk.count; e += n) fully_integrated_lanes<T>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
+  if constexpr (n > 2)
+    for (; e + 2 <= blk.count; e += 2)
+      fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
+  for (; e < blk.count; ++e) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, dt, want_stress, totals);
   return totals;
 }
 

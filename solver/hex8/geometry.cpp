@@ -13,12 +13,6 @@ constexpr double xi_n[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
 constexpr double eta_n[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
 constexpr double zeta_n[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
 
-// Hourglass base vectors Gamma_a (docs/theory.md 2.2): ~ eta*zeta, zeta*xi, xi*eta, xi*eta*zeta.
-constexpr double Gamma[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
-                                {1, -1, -1, 1, -1, 1, 1, -1},
-                                {1, -1, 1, -1, 1, -1, 1, -1},
-                                {-1, 1, -1, 1, 1, -1, 1, -1}};
-
 // dN_I/d(xi,eta,zeta) at (x, y, z): out[3][8].
 void reference_gradients(double x, double y, double z, double out[24]) {
   for (int I = 0; I < 8; ++I) {
@@ -61,14 +55,21 @@ double gradient_operator(const double X[24], double B[24]) {
   return volume;
 }
 
+void hourglass_coefficients(const double X[24], double volume, double c[12]) {
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i) {
+      double xg = 0.0;  // x_iJ Gamma_aJ
+      for (int J = 0; J < 8; ++J) xg += X[3 * J + i] * hourglass_base[a][J];
+      c[3 * a + i] = xg / volume;
+    }
+}
+
 void hourglass_vectors(const double X[24], const double B[24], double volume, double gamma[32]) {
-  for (int a = 0; a < 4; ++a) {
-    double xg[3] = {0, 0, 0};  // x_iJ Gamma_aJ
-    for (int J = 0; J < 8; ++J)
-      for (int i = 0; i < 3; ++i) xg[i] += X[3 * J + i] * Gamma[a][J];
+  double c[12];
+  hourglass_coefficients(X, volume, c);
+  for (int a = 0; a < 4; ++a)
     for (int I = 0; I < 8; ++I)
-      gamma[8 * a + I] = Gamma[a][I] - (B[I] * xg[0] + B[8 + I] * xg[1] + B[16 + I] * xg[2]) / volume;
-  }
+      gamma[8 * a + I] = hourglass_base[a][I] - (B[I] * c[3 * a] + B[8 + I] * c[3 * a + 1] + B[16 + I] * c[3 * a + 2]);
 }
 
 double characteristic_length(const double B[24], double volume) {

@@ -24,6 +24,17 @@ double gradient_operator(const double X[24], double B[24]);
 /// force (docs/theory.md 2.2).
 void hourglass_vectors(const double X[24], const double B[24], double volume, double gamma[32]);
 
+/// Hourglass base vectors Gamma_aI (docs/theory.md 2.2): ~ eta*zeta, zeta*xi, xi*eta, xi*eta*zeta.
+inline constexpr double hourglass_base[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                                {1, -1, -1, 1, -1, 1, 1, -1},
+                                                {1, -1, 1, -1, 1, -1, 1, -1},
+                                                {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+/// The hourglass vectors in factored form, gamma_aI = Gamma_aI - c_aj B_jI with
+/// c_aj = (1/V) x_jJ Gamma_aJ (m^-2), c [4][3]: 12 numbers per element instead of 32, and the
+/// products with u and f reuse the element's B0 sums (mean_quadrature.hpp).
+void hourglass_coefficients(const double X[24], double volume, double c[12]);
+
 /// Characteristic length of Flanagan & Belytschko, L_e = V / sqrt(2 B_iI B_iI) (= h/sqrt(3) for
 /// a cube of side h); the element's stable step is L_e / c_d (docs/theory.md 1.4).
 double characteristic_length(const double B[24], double volume);

@@ -24,6 +24,13 @@ struct ElementPassTotals {
 /// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
 /// The material state goes from t^n to t^{n+1} (dt = t^{n+1} - t^n). When `want_stress` the block's
 /// stress buffer is filled (Cauchy stress, element mean).
+/// Elements per kernel call: 4 (AVX2) where the CPU has AVX2, else 2 (SSE2, every x86-64). The
+/// results are bitwise the same at either width (mean_quadrature.hpp).
+int element_lane_width();
+/// Force the width (2 or 4; 4 only where the CPU has AVX2; 0: the CPU's best): tests and
+/// `tribex bench block --lanes`.
+void set_element_lane_width(int lanes);
+
 ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
                                       const double* v, double* force, double dt, bool want_stress);
 

@@ -34,6 +34,15 @@ double area_radius(const contact::ContactTotals& c) { return std::sqrt(c.area / 
 // area estimate is what there is without them.
 double best_radius(const contact::ContactTotals& c) { return c.radius_edge > 0.0 ? c.radius_edge : area_radius(c); }
 
+// Present only in runs with `begin mass scaling` (solver/mass_scaling.hpp), after plastic_dissipation.
+HistoryColumn mass_scaling_column() {
+  HistoryColumn c = derived("added_mass", "kg",
+                            "mass added by mass scaling (begin mass scaling), whole model; set once at set-up",
+                            [](const S& s) { return s.added_mass; });
+  c.mass_scaling_only = true;
+  return c;
+}
+
 // The table. File order is the order here; existing scripts read columns by name, so a new column
 // goes at the end (or behind a condition, like plastic_dissipation). Built on first use, after the
 // field tables it points into.
@@ -82,6 +91,7 @@ std::vector<HistoryColumn> make_columns() {
               "rings enter and reads high (3-10 % on the Hertz decks)",
               [](const S& s) { return area_radius(s.contact); }),
       energy("plastic_dissipation", "plastic_dissipation", true),
+      mass_scaling_column(),
   };
 }
 
@@ -93,10 +103,11 @@ std::span<const HistoryColumn> history_columns() {
 }
 
 std::vector<ColumnInfo> describe_history_columns(bool material_dissipation, const std::vector<std::string>& reaction_sets,
-                                                 const std::vector<std::string>& displacement_sets) {
+                                                 const std::vector<std::string>& displacement_sets,
+                                                 bool mass_scaling) {
   std::vector<ColumnInfo> out{{"step", "count", "step index n"}};
   for (const HistoryColumn& c : history_columns())
-    if (!c.material_dissipation_only || material_dissipation)
+    if (c.present(material_dissipation, mass_scaling))
       out.push_back({std::string(c.name), std::string(c.unit), std::string(c.definition)});
   for (const auto& set : reaction_sets)
     for (const char* i : {"x", "y", "z"})

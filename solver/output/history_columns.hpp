@@ -26,6 +26,7 @@ struct HistoryState {
   const Energies& energies;
   const contact::ContactTotals& contact;
   const double* momentum = nullptr;       // [3], kg m/s
+  double added_mass = 0.0;                // kg, mass scaling (constant over the run)
 };
 
 /// A column's description, as history_columns.csv lists it.
@@ -43,6 +44,11 @@ struct HistoryColumn {
   const Field<Energies>* energy = nullptr;
   const Field<contact::ContactTotals>* contact = nullptr;
   bool material_dissipation_only = false;  // present only when a block's material dissipates
+  bool mass_scaling_only = false;          // present only in a run with `begin mass scaling`
+
+  bool present(bool material_dissipation, bool mass_scaling) const {
+    return (!material_dissipation_only || material_dissipation) && (!mass_scaling_only || mass_scaling);
+  }
 
   double value(const HistoryState& s) const {
     return energy ? energy->get(s.energies) : contact ? contact->get(s.contact) : derived(s);
@@ -54,6 +60,7 @@ std::span<const HistoryColumn> history_columns();
 
 /// The descriptions of the standard columns present in a run, then of its node-set columns.
 std::vector<ColumnInfo> describe_history_columns(bool material_dissipation, const std::vector<std::string>& reaction_sets,
-                                                 const std::vector<std::string>& displacement_sets);
+                                                 const std::vector<std::string>& displacement_sets,
+                                                 bool mass_scaling = false);
 
 }  // namespace tribex::solver

@@ -158,6 +158,29 @@ std::span<const Field<RunSummary>> summary_fields() {
           out += (out.size() > 1 ? ", \"" : "\"") + std::string(f.name) + "\": " + number(f.get(s.energies));
         return out + "}";
       }),
+      text("mass_scaling",
+           "begin mass scaling (null without): target and unscaled time step (s), unscaled and added mass (kg), the "
+           "added fraction, and per block the scaled elements, mass, added mass and largest density factor",
+           [](const R& s) {
+             const MassScalingReport& m = s.mass_scaling;
+             if (!m.active) return std::string("null");
+             std::string out = "{\"target_time_step\": " + number(m.target_time_step) +
+                               ", \"unscaled_time_step\": " + number(m.unscaled_time_step) +
+                               ", \"unscaled_mass\": " + number(m.unscaled_mass) + ", \"added_mass\": " +
+                               number(m.added_mass) + ", \"added_mass_fraction\": " + number(m.added_fraction()) +
+                               ", \"maximum_added_mass_fraction\": " + number(m.maximum_added_mass_fraction) +
+                               ", \"blocks\": [";
+             for (std::size_t i = 0; i < m.blocks.size(); ++i) {
+               const BlockMassScaling& b = m.blocks[i];
+               out += std::string(i ? ",\n    " : "\n    ") + "{\"name\": " + json_string(b.name) +
+                      ", \"scaled\": " + (b.listed ? "true" : "false") +
+                      ", \"elements\": " + std::to_string(b.elements) +
+                      ", \"scaled_elements\": " + std::to_string(b.scaled_elements) + ", \"mass\": " + number(b.mass) +
+                      ", \"added_mass\": " + number(b.added_mass) + ", \"added_mass_fraction\": " +
+                      number(b.fraction()) + ", \"largest_density_factor\": " + number(b.largest_scale) + "}";
+             }
+             return out + "\n  ]}";
+           }),
   };
   return table;
 }

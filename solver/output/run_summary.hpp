@@ -8,6 +8,7 @@
 
 #include "solver/energy.hpp"
 #include "solver/guards/run_warning.hpp"
+#include "solver/mass_scaling.hpp"
 #include "solver/output/run_identity.hpp"
 
 namespace tribex::solver {
@@ -34,6 +35,7 @@ struct RunSummary {
   int controlling_element = -1;            // the element that set it (0-based; summary.json: 1-based)
   Energies energies;                       // the energy ledger at the end
   std::vector<RunWarning> warnings;  // set-up and run guards (solver/guards/README.md), in the order raised
+  MassScalingReport mass_scaling;    // `begin mass scaling` (inactive: summary.json null)
 };
 
 }  // namespace tribex::solver

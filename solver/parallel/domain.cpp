@@ -254,10 +254,11 @@ Model localize(Model&& global, const std::vector<int>& part) {
       to.reserve(stride * members.size());
       for (int e : members) to.insert(to.end(), from.begin() + stride * e, from.begin() + stride * (e + 1));
     };
-    take(g.B0, blk.B0);
+    blk.B0 = select_interleaved(g.B0, members, 24);
     take(g.volume0, blk.volume0);
     take(g.length0, blk.length0);
-    take(g.gamma, blk.gamma);
+    take(g.mass_scale, blk.mass_scale);
+    blk.hg_coefficients = select_interleaved(g.hg_coefficients, members, 12);
     take(g.hg_k, blk.hg_k);
     take(g.hg_c, blk.hg_c);
     blk.inv_jacobian = select_interleaved(g.inv_jacobian, members, 72);
@@ -326,6 +327,7 @@ Model localize(Model&& global, const std::vector<int>& part) {
   local.function_names = std::move(global.function_names);
   local.mass_damping = global.mass_damping;
   local.total_mass = global.total_mass;
+  local.mass_scaling = global.mass_scaling;
   local.block_body = global.block_body;
   local.contact = std::move(global.contact);
   local.preflight = std::move(global.preflight);

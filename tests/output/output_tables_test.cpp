@@ -165,7 +165,7 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
                                             "loop_time_s", "ns_per_element_step", "first_step", "total_wall_time_s",
                                             "total_loop_time_s", "contact_time_s", "ranks", "communication_time_s",
                                             "initial_stable_time_step", "controlling_element", "energy_error",
-                                            "energy_unit", "warnings", "energies", "units"}));
+                                            "energy_unit", "warnings", "energies", "mass_scaling", "units"}));
   for (const char* expected :
        {"\"status\": \"numerical failure: element 8 \\\"inverted\\\"\",\n", "\"exit_code\": 3,\n", "\"steps\": 1234,\n",
         "\"final_time\": 0.125,\n", "\"deck_sha256\": null,\n", "\"total_wall_time_s\": null,\n",
@@ -173,7 +173,7 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
         "{\"kind\": \"penetration\", \"step\": 10, \"time\": 0, ", "\"node\": null, \"message\": \"deep\"}",
         "\"energies\": {\"kinetic\": 1.5, \"internal\": 0, ", "\"plastic_dissipation\": 0.25},\n",
         "\"units\": {\"steps\": \"count\", \"final_time\": \"s\", ", "\"energy_error\": \"-\", \"energies\": {\"kinetic\": \"J\", ",
-        "\"warnings\": {\"step\": \"count\", \"time\": \"s\", "})
+        "\"warnings\": {\"step\": \"count\", \"time\": \"s\", ", "\"mass_scaling\": null,\n"})
     EXPECT_NE(text.find(expected), std::string::npos) << "summary.json lacks " << expected << "\n" << text;
   EXPECT_EQ(text.substr(text.size() - 5), "}}\n}\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json.tmp"));
@@ -191,7 +191,7 @@ double column(std::string_view name, const solver::HistoryState& s) {
 }  // namespace
 
 // Scripts read history.csv by name, some by position: the columns keep their order and new ones go
-// at the end (plastic_dissipation, present only where a material dissipates, stays last).
+// at the end (plastic_dissipation, present only where a material dissipates, then added_mass, present only with mass scaling).
 TEST(HistoryColumns, OrderIsKeptAndNewColumnsComeLast) {
   std::vector<std::string_view> names;
   for (const auto& c : solver::history_columns()) names.push_back(c.name);
@@ -203,7 +203,7 @@ TEST(HistoryColumns, OrderIsKeptAndNewColumnsComeLast) {
                        "momentum_x", "momentum_y", "momentum_z", "contact_radius_edge", "adhesive_force",
                        "compressive_force", "friction_force", "tau_star_times_area", "adhesion_energy",
                        "friction_power", "contact_radius_pressure_fit", "real_contact_area", "asperity_contacts",
-                       "apparent_pressure", "contact_radius_area", "plastic_dissipation"}));
+                       "apparent_pressure", "contact_radius_area", "plastic_dissipation", "added_mass"}));
 }
 
 // contact_radius is the edge estimate where there is one (a contact axis, a contact boundary on the

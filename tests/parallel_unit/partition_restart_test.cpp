@@ -138,7 +138,7 @@ TEST(HistoryWriter, RowsMustFillEveryColumnAndUnitsGoBeside) {
 }
 
 TEST(HistoryColumns, EveryStandardColumnHasAUnitAndADefinition) {
-  const auto described = solver::describe_history_columns(true, {"top"}, {"tip"});
+  const auto described = solver::describe_history_columns(true, {"top"}, {"tip"}, true);
   ASSERT_EQ(described.size(), 1 + solver::history_columns().size() + 6);
   std::set<std::string> names;
   for (const auto& c : described) {
@@ -148,6 +148,8 @@ TEST(HistoryColumns, EveryStandardColumnHasAUnitAndADefinition) {
   }
   EXPECT_EQ(described.back().name, "tip_displacement_z");
   EXPECT_EQ(described[described.size() - 4].unit, "N");  // top_reaction_z
-  // plastic_dissipation only where a material dissipates
-  EXPECT_EQ(solver::describe_history_columns(false, {}, {}).size(), solver::history_columns().size());
+  // plastic_dissipation only where a material dissipates, added_mass only with mass scaling
+  EXPECT_EQ(solver::describe_history_columns(false, {}, {}).size(), solver::history_columns().size() - 1);
+  EXPECT_EQ(solver::describe_history_columns(false, {}, {}, true).back().name, "added_mass");
+  EXPECT_EQ(solver::describe_history_columns(true, {}, {}).back().name, "plastic_dissipation");
 }

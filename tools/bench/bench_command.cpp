@@ -9,6 +9,7 @@
 
 #include "inputs/cube_deck.hpp"
 #include "solver/integrators/central_difference.hpp"
+#include "solver/hex8/internal_forces.hpp"
 #include "solver/model.hpp"
 #include "tools/bench/allocation_counter.hpp"
 #include "tools/cli/commands.hpp"
@@ -26,10 +27,11 @@ const char* usage =
     "tribex bench contact [--faces N] [--steps S]   (search + enforcement cost, see --help)\n"
     "tribex bench broad-phase [--faces N]           (bucket grid against CGAL box_intersection_d)\n"
     "tribex bench block [--n N] [--element mean_quadrature|fully_integrated]\n"
-    "                   [--material elastic|neohookean] [--steps S]\n"
+    "                   [--material elastic|neohookean] [--steps S] [--lanes 2|4]\n"
     "  Times the explicit loop on a unit cube of N^3 hex8 elements (default N 20, 200 steps).\n"
     "  Prints loop-only and whole-command ns per element per step, heap allocations inside the\n"
-    "  loop and the peak resident memory; the last line is ns_per_element_step=VALUE (loop only).\n";
+    "  loop and the peak resident memory; the last line is ns_per_element_step=VALUE (loop only).\n"
+    "  --lanes: elements per kernel call (default: 4 where the CPU has AVX2, else 2).\n";
 
 inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::MaterialModel model) {
   const double K = 160e9, G = 80e9;
@@ -72,10 +74,13 @@ int bench_command(const std::vector<std::string>& argv) {
   const long steps = args.integer("--steps", 200);
   const std::string element = args.text("--element", "mean_quadrature");
   const std::string material = args.text("--material", "elastic");
+  const long lanes = args.integer("--lanes", 0);
   args.finish();
   if (what != "block") throw tools::BadInput("tribex bench: unknown benchmark '" + what + "' (known: block, contact, broad-phase)");
   if (n < 1 || n > 400) throw tools::BadInput("tribex bench: --n must be in 1..400");
   if (steps < 1) throw tools::BadInput("tribex bench: --steps must be >= 1");
+  if (lanes != 0 && lanes != 2 && lanes != 4) throw tools::BadInput("tribex bench: --lanes must be 2 or 4");
+  solver::set_element_lane_width(static_cast<int>(lanes));
   inputs::ElementFormulation formulation;
   if (element == "mean_quadrature") formulation = inputs::ElementFormulation::mean_quadrature;
   else if (element == "fully_integrated") formulation = inputs::ElementFormulation::fully_integrated;
@@ -100,8 +105,8 @@ int bench_command(const std::vector<std::string>& argv) {
   getrusage(RUSAGE_SELF, &usage_info);
   const double elements = double(m.mesh.element_count());
   const double per = 1e9 * loop / (elements * double(steps));
-  std::printf("block %ld^3 = %.0f elements, %s, %s, %ld steps of %.4g s\n", n, elements, element.c_str(),
-              material.c_str(), steps, integrator.next_dt());
+  std::printf("block %ld^3 = %.0f elements, %s, %s, %d lanes, %ld steps of %.4g s\n", n, elements, element.c_str(),
+              material.c_str(), solver::element_lane_width(), steps, integrator.next_dt());
   std::printf("loop %.4f s, whole command %.4f s\n", loop, total);
   std::printf("whole_command_ns_per_element_step=%.2f\n", 1e9 * total / (elements * double(steps)));
   std::printf("heap_allocations_in_loop=%llu\n", static_cast<unsigned long long>(allocations));

@@ -68,7 +68,7 @@ int run_command(const std::vector<std::string>& argv) {
   if (args.answered_help()) return tools::exit_ok;
   if (args.flag("--list-columns")) {
     args.finish();
-    for (const auto& c : solver::describe_history_columns(true, {"SET"}, {"SET"}))
+    for (const auto& c : solver::describe_history_columns(true, {"SET"}, {"SET"}, true))
       std::printf("%-28s %-7s %s\n", c.name.c_str(), c.unit.c_str(), c.definition.c_str());
     return 0;
   }

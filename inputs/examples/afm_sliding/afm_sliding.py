@@ -99,12 +99,14 @@ def main():
     ap.add_argument("--plot", help="PNG: friction force and contact radius versus sliding position (Fig. 3.9)")
     ap.add_argument("--no-run", action="store_true", help="only check the outputs already in --out")
     ap.add_argument("--case", choices=[c[0] for c in CASES], help="only this case (a full case runs for hours)")
+    ap.add_argument("--mass-scaled", action="store_true",
+                    help="run the *_mass_scaled.i decks (make_decks.py --mass-scaling F writes them)")
     a = ap.parse_args()
     cases = [c for c in CASES if a.case in (None, c[0])]
     os.makedirs(a.out, exist_ok=True)
     results, failures = {}, []
     for case, label, tau in cases:
-        name = f"afm_sliding_{a.variant}_{case}"
+        name = f"afm_sliding_{a.variant}_{case}" + ("_mass_scaled" if a.mass_scaled else "")
         folder = os.path.join(a.out, name + "_output")
         if not a.no_run:
             subprocess.run([a.tribex, "run", os.path.join(HERE, name + ".i"), "-o", folder, "--quiet"], check=True)

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+#include "solver/mass_scaling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "inputs/did_you_mean.hpp"
+#include "solver/errors.hpp"
+#include "solver/model.hpp"
+#include "solver/output/run_log.hpp"
+#include "solver/stable_time_step.hpp"
+
+namespace tribex::solver {
+
+double mass_scale_factor(double element_dt, double element_target) {
+  if (!(element_dt < element_target)) return 1.0;
+  const double r = element_target / element_dt;
+  return r * r;
+}
+
+MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double time_step_scale_factor,
+                                     double maximum_time_step, Model& model) {
+  MassScalingReport report;
+  report.active = true;
+  report.maximum_added_mass_fraction = spec.maximum_added_mass_fraction;
+  const mesh::Mesh& m = model.mesh;
+
+  // Which blocks: the deck's list (each must be a block of the mesh) or every block.
+  std::vector<std::string> names;
+  for (const auto& b : model.blocks) names.push_back(b.name);
+  for (const auto& name : spec.blocks)
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      const std::string hint = inputs::closest_match(name, names);
+      std::string known;
+      for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+      throw SetupError(spec.blocks_where.str() + ": error: 'blocks' of 'begin mass scaling' names block '" + name +
+                       "', which is not in the mesh" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+                       "; the mesh has: " + known);
+    }
+
+  // The reference estimate of every element (the same one the run starts from).
+  std::vector<double> dt_e(static_cast<std::size_t>(m.element_count()));
+  const StableStep unscaled = compute_stable_time_step(model, nullptr, dt_e.data());
+  report.unscaled_time_step = std::min(time_step_scale_factor * unscaled.dt, maximum_time_step);
+  report.target_time_step =
+      spec.target_time_step ? *spec.target_time_step : *spec.largest_factor * report.unscaled_time_step;
+  const std::string key = spec.target_time_step ? "target time step" : "largest factor";
+  if (spec.target_time_step && !(report.target_time_step > report.unscaled_time_step))
+    throw SetupError(spec.target_where.str() +
+                     format(": error: 'target time step' %.6g s is not above the run's time step without mass scaling, "
+                            "%.6g s (time step scale factor %.3g x stable step %.6g s of element %d): nothing to scale; "
+                            "raise the target (e.g. %.3g s, twice the unscaled step) or remove 'begin mass scaling'",
+                            report.target_time_step, report.unscaled_time_step, time_step_scale_factor, unscaled.dt,
+                            unscaled.controlling_element + 1, 2 * report.unscaled_time_step));
+  if (report.target_time_step > maximum_time_step)
+    throw SetupError(spec.target_where.str() +
+                     format(": error: the mass-scaling target %.6g s ('%s') is above 'maximum time step' %.6g s, so the "
+                            "run cannot reach it; lower the target or raise 'maximum time step'",
+                            report.target_time_step, key.c_str(), maximum_time_step));
+
+  // Per element: s_e = (T_e / dt_e)^2 where dt_e < T_e; dm_e = (s_e - 1) rho V0 to the nodes (1/8 each).
+  const double element_target = report.target_time_step / time_step_scale_factor;
+  for (auto& blk : model.blocks) {
+    BlockMassScaling b;
+    b.name = blk.name;
+    b.elements = blk.count;
+    b.listed = spec.blocks.empty() || std::find(spec.blocks.begin(), spec.blocks.end(), blk.name) != spec.blocks.end();
+    const double rho = materials::density_of(blk.material);
+    for (int e = 0; e < blk.count; ++e) b.mass += rho * blk.volume0[e];
+    report.unscaled_mass += b.mass;
+    if (b.listed) {
+      blk.mass_scale.assign(static_cast<std::size_t>(blk.count), 1.0);
+      for (int e = 0; e < blk.count; ++e) {
+        const int global = blk.first_element + e;
+        const double s = mass_scale_factor(dt_e[global], element_target);
+        if (s == 1.0) continue;
+        blk.mass_scale[e] = s;
+        const double added = (s - 1.0) * rho * blk.volume0[e];
+        for (int I = 0; I < 8; ++I) model.mass[m.connectivity[8 * global + I]] += added / 8.0;
+        b.added_mass += added;
+        ++b.scaled_elements;
+        b.largest_scale = std::max(b.largest_scale, s);
+      }
+      if (b.scaled_elements == 0) blk.mass_scale.clear();
+    }
+    report.added_mass += b.added_mass;
+    report.blocks.push_back(b);
+  }
+  return report;
+}
+
+std::vector<std::string> MassScalingReport::lines() const {
+  std::vector<std::string> out;
+  if (!active) return out;
+  out.push_back(format("mass scaling: target time step %.6g s (%.3g x the unscaled step %.6g s); added mass %.6g kg = "
+                       "%.3g %% of %.6g kg (limit %.3g %%)",
+                       target_time_step, target_time_step / unscaled_time_step, unscaled_time_step, added_mass,
+                       100 * added_fraction(), unscaled_mass, 100 * maximum_added_mass_fraction));
+  for (const auto& b : blocks)
+    out.push_back(b.listed ? format("  block %-16s %8d of %d elements scaled, added %.6g kg = %.3g %% of the block's "
+                                    "%.6g kg, largest density factor %.3g",
+                                    b.name.c_str(), b.scaled_elements, b.elements, b.added_mass, 100 * b.fraction(),
+                                    b.mass, b.largest_scale)
+                           : format("  block %-16s not scaled (not in 'blocks')", b.name.c_str()));
+  return out;
+}
+
+std::string MassScalingReport::limit_message() const {
+  return format("mass scaling adds %.6g kg, %.3g %% of the model's %.6g kg, above 'maximum added mass fraction' %.3g %% "
+                "(target time step %.6g s): the added inertia would change the response; lower the target, restrict "
+                "'blocks', or raise the limit knowingly",
+                added_mass, 100 * added_fraction(), unscaled_mass, 100 * maximum_added_mass_fraction,
+                target_time_step);
+}
+
+}  // namespace tribex::solver

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Selective (element-wise) mass scaling, `begin mass scaling` (docs/theory.md 1.4.1; LS-DYNA DT2MS < 0,
+// Sierra/SM "begin mass scaling"). At set-up, from the reference stable-step estimate dt_e of every
+// element (solver/stable_time_step.hpp, before the time step scale factor f):
+//   element target   T_e = dt_target / f                  (dt_target: the run's step, s)
+//   density factor   s_e = max(1, (T_e / dt_e)^2)         (dimensionless; dt_e ~ sqrt(rho) => dt_e' = T_e)
+//   added mass       dm_e = (s_e - 1) rho V0_e             (kg, lumped as dm_e / 8 to each node)
+// for the elements of the listed blocks; every other element keeps its mass. The factor is kept per
+// element (ElementBlock::mass_scale) so that the stable step recomputed on the current configuration
+// uses the scaled density, and the scaled lumped mass is in Model::mass before the contact is set up,
+// so the penalty k_p = s m_eff / dt^2 uses the scaled masses and the scaled step.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "inputs/deck.hpp"
+
+namespace tribex::solver {
+
+struct Model;
+
+/// s_e = max(1, (element_target / element_dt)^2): the density factor that brings an element's stable
+/// step up to the target (elements at or above it keep 1).
+double mass_scale_factor(double element_dt, double element_target);
+
+struct BlockMassScaling {
+  std::string name;
+  bool listed = false;       // in the deck's `blocks` (or every block)
+  int elements = 0;
+  int scaled_elements = 0;   // elements with s_e > 1
+  double mass = 0.0;         // unscaled, kg
+  double added_mass = 0.0;   // kg
+  double largest_scale = 1.0;  // max s_e
+  double fraction() const { return mass > 0.0 ? added_mass / mass : 0.0; }
+};
+
+/// What the set-up did (the log, `tribex check`, summary.json "mass_scaling", the history column
+/// added_mass).
+struct MassScalingReport {
+  bool active = false;
+  double target_time_step = 0.0;    // the run's step, s
+  double unscaled_time_step = 0.0;  // the run's step without mass scaling, s
+  double unscaled_mass = 0.0;       // kg, the whole model
+  double added_mass = 0.0;          // kg, the whole model
+  double maximum_added_mass_fraction = 0.05;
+  std::vector<BlockMassScaling> blocks;
+  double added_fraction() const { return unscaled_mass > 0.0 ? added_mass / unscaled_mass : 0.0; }
+  bool exceeds_limit() const { return active && added_fraction() > maximum_added_mass_fraction; }
+  /// The set-up report, one line each.
+  std::vector<std::string> lines() const;
+  /// The numerical-failure message when exceeds_limit().
+  std::string limit_message() const;
+};
+
+/// Scale the model's element densities and lumped masses as `spec` asks. `time_step_scale_factor`
+/// and `maximum_time_step` are the time control's. Throws SetupError (deck line, what to change) for
+/// an unknown block, a target below the unscaled step or above `maximum time step`. Call before the
+/// contact is built (its penalty reads the masses and the step).
+MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double time_step_scale_factor,
+                                     double maximum_time_step, Model& model);
+
+}  // namespace tribex::solver

@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: MIT
+// Selective mass scaling (solver/mass_scaling.hpp, docs/theory.md 1.4.1): the density factor per element,
+// the lumped masses, the blocks filter, the stable step it gives, the added-mass guard, the set-up
+// errors, and the kinetic-energy limit of the run guards.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "solver/errors.hpp"
+#include "solver/guards/run_guards.hpp"
+#include "solver/mass_scaling.hpp"
+#include "solver/model.hpp"
+#include "solver/stable_time_step.hpp"
+#include "tests/solver/support.hpp"
+
+namespace tribex::solver {
+namespace {
+
+// Two separate unit cubes of steel: block "b" in 2 x 2 x 2 elements (edge 0.5 m), block "c" one element
+// (edge 1 m), so c's stable step is twice b's. Time step scale factor 0.9 (the default).
+inputs::Deck two_blocks(inputs::MassScalingSpec scaling) {
+  inputs::Deck deck = test::box_deck(2, 1.0, "elastic", inputs::ElementFormulation::mean_quadrature);
+  auto& fem = deck.models[0];
+  inputs::GeneratedBoxSpec c = fem.boxes[0];
+  c.block_name = "c";
+  c.origin = {2.0, 0.0, 0.0};
+  c.intervals = {1, 1, 1};
+  fem.boxes.push_back(c);
+  auto params = fem.blocks[0];
+  params.block = "c";
+  fem.blocks.push_back(params);
+  deck.procedure.time_control.time_step_scale_factor = 0.9;
+  deck.procedure.region.mass_scaling = scaling;
+  return deck;
+}
+
+inputs::MassScalingSpec factor(double f, std::vector<std::string> blocks = {}) {
+  inputs::MassScalingSpec s;
+  s.largest_factor = f;
+  s.blocks = std::move(blocks);
+  return s;
+}
+
+double sum(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+
+TEST(MassScaling, FactorIsTheSquaredStepRatioBelowTheTargetOnly) {
+  EXPECT_DOUBLE_EQ(mass_scale_factor(0.5e-9, 1e-9), 4.0);   // half the target: 4x the mass
+  EXPECT_DOUBLE_EQ(mass_scale_factor(0.8e-9, 1e-9), 1.5625);
+  EXPECT_EQ(mass_scale_factor(1e-9, 1e-9), 1.0);            // at the target: untouched
+  EXPECT_EQ(mass_scale_factor(3e-9, 1e-9), 1.0);            // above: untouched
+}
+
+TEST(MassScaling, ElementsAtHalfTheTargetGetFourTimesTheirMassOthersKeepIt) {
+  inputs::Deck unscaled_deck = two_blocks(factor(2.0));
+  unscaled_deck.procedure.region.mass_scaling.reset();
+  const Model unscaled = build_model(unscaled_deck);
+  const StableStep dt0 = compute_stable_time_step(unscaled, nullptr);
+
+  const Model m = build_model(two_blocks(factor(2.0)));
+  const MassScalingReport& r = m.mass_scaling;
+  ASSERT_TRUE(r.active);
+  ASSERT_EQ(r.blocks.size(), 2u);
+  EXPECT_NEAR(r.unscaled_time_step, 0.9 * dt0.dt, 1e-15 * dt0.dt);
+  EXPECT_NEAR(r.target_time_step, 2 * 0.9 * dt0.dt, 1e-15 * dt0.dt);
+  // Block b (8 elements at the smallest step, half the target): density x 4, 3 x its 7800 kg added.
+  EXPECT_EQ(r.blocks[0].scaled_elements, 8);
+  for (double s : m.blocks[0].mass_scale) EXPECT_NEAR(s, 4.0, 1e-12);
+  EXPECT_NEAR(r.blocks[0].mass, 7800.0, 1e-9);
+  EXPECT_NEAR(r.blocks[0].added_mass, 3 * 7800.0, 1e-8);
+  // Block c (edge 1 m: its step is twice b's, at the target): untouched to round-off.
+  EXPECT_NEAR(r.blocks[1].added_mass, 0.0, 1e-9 * 7800.0);
+  EXPECT_NEAR(r.added_fraction(), 3 * 7800.0 / 15600.0, 1e-12);
+  // Lumped: the nodal masses hold the scaled element masses, 8 rho V0 s_e / 8 per element.
+  EXPECT_NEAR(sum(m.mass), 4 * 7800.0 + 7800.0, 1e-8);
+  EXPECT_NEAR(sum(unscaled.mass), 15600.0, 1e-8);
+  EXPECT_DOUBLE_EQ(m.total_mass, unscaled.total_mass);  // total_mass stays the physical mass
+  // The stable step on the scaled densities is the target (before the scale factor): the run's step.
+  const StableStep dt1 = compute_stable_time_step(m, nullptr);
+  EXPECT_NEAR(0.9 * dt1.dt, r.target_time_step, 1e-12 * r.target_time_step);
+  // The same on a deformed configuration uses the scaled density too: block b stretched 5 % along x,
+  // element by element the scaled estimate is sqrt(4) = 2 x the unscaled one in b, equal in c.
+  std::vector<double> u(3 * static_cast<std::size_t>(m.mesh.node_count()), 0.0);
+  for (int n = 0; n < m.mesh.node_count(); ++n)
+    if (m.mesh.coordinates[3 * n] < 1.5) u[3 * n] = 0.05 * m.mesh.coordinates[3 * n];
+  std::vector<double> dt_unscaled(m.mesh.element_count()), dt_scaled(m.mesh.element_count());
+  compute_stable_time_step(unscaled, u.data(), dt_unscaled.data());
+  compute_stable_time_step(m, u.data(), dt_scaled.data());
+  for (int e = 0; e < m.mesh.element_count(); ++e) {
+    const double ratio = m.element_block[e] == 0 ? 2.0 : 1.0;
+    EXPECT_NEAR(dt_scaled[e], ratio * dt_unscaled[e], 1e-12 * dt_scaled[e]) << "element " << e;
+  }
+  EXPECT_GT(std::abs(dt_unscaled[0] - dt0.dt), 0.005 * dt0.dt);  // the stretch did change the estimate
+  // The added-mass guard: 150 % is far above the default 5 %.
+  EXPECT_TRUE(r.exceeds_limit());
+  EXPECT_NE(r.limit_message().find("above 'maximum added mass fraction' 5 %"), std::string::npos) << r.limit_message();
+}
+
+TEST(MassScaling, BlocksFilterScalesOnlyTheListedBlocks) {
+  // Target 3 x the unscaled step, block c only: c (at 2/3 of the target) gets (3/2)^2, b keeps its
+  // mass although it is below the target (it then still sets the step).
+  const Model m = build_model(two_blocks(factor(3.0, {"c"})));
+  const MassScalingReport& r = m.mass_scaling;
+  EXPECT_FALSE(r.blocks[0].listed);
+  EXPECT_TRUE(m.blocks[0].mass_scale.empty());
+  EXPECT_EQ(r.blocks[0].added_mass, 0.0);
+  EXPECT_TRUE(r.blocks[1].listed);
+  EXPECT_EQ(r.blocks[1].scaled_elements, 1);
+  ASSERT_EQ(m.blocks[1].mass_scale.size(), 1u);
+  EXPECT_NEAR(m.blocks[1].mass_scale[0], 2.25, 1e-12);
+  EXPECT_NEAR(r.added_mass, 1.25 * 7800.0, 1e-8);
+  EXPECT_NEAR(r.added_fraction(), 1.25 * 7800.0 / 15600.0, 1e-12);
+  EXPECT_NEAR(0.9 * compute_stable_time_step(m, nullptr).dt, r.unscaled_time_step, 1e-12 * r.unscaled_time_step);
+}
+
+TEST(MassScaling, AddedMassGuardHonoursTheDeckLimit) {
+  inputs::MassScalingSpec s = factor(3.0, {"c"});
+  s.maximum_added_mass_fraction = 0.7;  // 62.5 % added: below
+  EXPECT_FALSE(build_model(two_blocks(s)).mass_scaling.exceeds_limit());
+  s.maximum_added_mass_fraction = 0.6;
+  EXPECT_TRUE(build_model(two_blocks(s)).mass_scaling.exceeds_limit());
+}
+
+TEST(MassScaling, SetUpErrorsNameTheKeyAndTheFix) {
+  inputs::MassScalingSpec unknown = factor(2.0, {"cc"});
+  unknown.blocks_where = {"deck.i", 40, 9};
+  try {
+    build_model(two_blocks(unknown));
+    FAIL() << "an unknown block was accepted";
+  } catch (const SetupError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.i:40:9: error: 'blocks' of 'begin mass scaling' names block 'cc'"),
+              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("did you mean 'c'"), std::string::npos) << e.what();
+  }
+  inputs::MassScalingSpec low;
+  low.target_time_step = 1e-9;  // far below the unscaled step of a 0.5 m steel element (~ 5e-5 s)
+  low.target_where = {"deck.i", 41, 9};
+  try {
+    build_model(two_blocks(low));
+    FAIL() << "a target below the unscaled step was accepted";
+  } catch (const SetupError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.i:41:9: error: 'target time step' 1e-09 s is not above the run's time "
+                                         "step without mass scaling"),
+              std::string::npos) << e.what();
+  }
+  inputs::Deck capped = two_blocks(factor(2.0));
+  capped.procedure.time_control.maximum_time_step = 1e-6;
+  EXPECT_THROW(build_model(capped), SetupError);  // the target is above 'maximum time step'
+}
+
+TEST(MassScaling, KineticEnergyLimitFailsALoadedQuasiStaticRun) {
+  inputs::GuardSpec spec;
+  spec.quasi_static = true;
+  spec.kinetic_energy_limit = 0.1;
+  const auto quiet = [](const RunWarning&) {};
+  // Load to 0.5 J and unload; kinetic energy `ratio` x internal while loaded from step 600, a start
+  // transient (kinetic 100 x internal for 20 steps) and kinetic far above internal after the unload.
+  const auto run = [&](double ratio) {
+    RunGuards g(spec, SetupFindings{}, 1000, quiet);
+    for (long n = 0; n < 1000; ++n) {
+      Energies e;
+      e.internal = n < 500 ? 1e-3 * n : 1e-3 * (1000 - n);
+      e.kinetic = n < 20 ? 100 * e.internal : n < 600 ? 0.01 * e.internal : n < 960 ? ratio * e.internal : 1.0;
+      e.external_work = e.kinetic + e.internal;
+      g.observe(n, 1e-12 * n, e, nullptr);
+    }
+    return std::make_pair(g.finish(), g.warnings());
+  };
+  const auto [fails, warned] = run(0.3);  // 30 % while loaded: the warning (5 %) and the limit (10 %)
+  EXPECT_NE(fails.find("reached 30 % of internal energy at step 600"), std::string::npos) << fails;
+  EXPECT_NE(fails.find("above 'maximum kinetic energy ratio' 10 %"), std::string::npos) << fails;
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_STREQ(kind_name(warned[0].kind), "kinetic_energy");
+  const auto [passes, warned8] = run(0.08);  // 8 %: warned (above 5 %), within the limit
+  EXPECT_TRUE(passes.empty()) << passes;
+  EXPECT_EQ(warned8.size(), 1u);
+  const auto [quiet2, none] = run(0.02);  // 2 %: neither (the transients are outside the loaded window)
+  EXPECT_TRUE(quiet2.empty()) << quiet2;
+  EXPECT_TRUE(none.empty());
+}
+
+}  // namespace
+}  // namespace tribex::solver
