@@ -112,12 +112,12 @@ begin sierra afm_sliding_full_b_sam
     begin surface layer block tip_skin
       from block = tip
       surface = tip_surface
-      layers = 1
+      layers = 2
     end surface layer block tip_skin
     begin surface layer block coating_skin
       from block = coating
       surface = substrate_top
-      layers = 1
+      layers = 2
     end surface layer block coating_skin
     begin parameters for block tip
       material = silicon

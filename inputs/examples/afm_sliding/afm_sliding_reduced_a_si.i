@@ -100,12 +100,12 @@ begin sierra afm_sliding_reduced_a_si
     begin surface layer block tip_skin
       from block = tip
       surface = tip_surface
-      layers = 1
+      layers = 2
     end surface layer block tip_skin
     begin surface layer block substrate_skin
       from block = substrate
       surface = substrate_top
-      layers = 1
+      layers = 2
     end surface layer block substrate_skin
     begin parameters for block tip
       material = silicon
