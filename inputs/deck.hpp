@@ -126,6 +126,17 @@ struct AfmSurfaceSpec {
   SourceLocation where;
 };
 
+/// `begin surface layer block NAME` inside a finite element model: the elements of `from_block`
+/// within `layers` element layers of `surface` become block NAME (mesh/surface_layers.hpp); applied
+/// in deck order after the mesh is built or read.
+struct SurfaceLayerBlockSpec {
+  std::string name;
+  std::string from_block;
+  std::string surface;  // a side set, or a node set when there is no side set of that name
+  int layers = 1;       // >= 1
+  SourceLocation where, from_block_where, surface_where;  // the begin line, the two key lines
+};
+
 /// `begin parameters for block NAME` inside a finite element model.
 struct BlockParameters {
   std::string block;     // must exist in the mesh (checked when the mesh is built)
@@ -143,6 +154,7 @@ struct FiniteElementModelSpec {
   std::vector<GeneratedBoxSpec> boxes;  // generated: boxes (appended in deck order)
   std::optional<GeneratedAsperitySpec> asperity;  // generated: the asperity problem
   std::optional<AfmSurfaceSpec> afm_surface;       // generated: a block from an AFM height map
+  std::vector<SurfaceLayerBlockSpec> surface_layers;  // any source: blocks split off after meshing
   std::vector<BlockParameters> blocks;
   SourceLocation where;
 };

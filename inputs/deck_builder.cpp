@@ -280,6 +280,17 @@ class Builder {
       m.boxes.push_back(box);
     }
     for (const Scope* a : afm) m.afm_surface = afm_surface(*a);
+    for (const Scope* b : s.children_of("surface layer block")) {
+      SurfaceLayerBlockSpec sl;
+      sl.name = b->name;
+      sl.where = b->where;
+      sl.from_block = word(*b, "from block");
+      sl.surface = word(*b, "surface");
+      sl.from_block_where = where(*b, "from block");
+      sl.surface_where = where(*b, "surface");
+      sl.layers = static_cast<int>(real(*b, "layers", 1));
+      m.surface_layers.push_back(sl);
+    }
     for (const Scope* b : s.children_of("parameters for block")) {
       BlockParameters bp;
       bp.block = b->name;

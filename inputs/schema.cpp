@@ -199,7 +199,8 @@ std::vector<BlockSchema> build_table() {
                      "mesh file, relative to the deck: gmsh .msh, or Exodus II .exo/.e/.g/.gen"),
                 choice("database type", ValueKind::enumeration, {"gmsh", "exodus", "generated"}, false, "",
                        "inferred: exodus for a database name ending .exo .e .g .gen, gmsh for any other, generated without one")},
-               {{"generated box"}, {"generated asperity", 0, 1}, {"afm surface", 0, 1}, {"parameters for block", 1}},
+               {{"generated box"}, {"generated asperity", 0, 1}, {"afm surface", 0, 1}, {"surface layer block"},
+                {"parameters for block", 1}},
                false, "the mesh and its element blocks"});
 
   t.push_back({"generated asperity", NameRule::none, {}, {}, true,
@@ -254,6 +255,16 @@ std::vector<BlockSchema> build_table() {
                 real("grading ratio", dim::none, at_least(1.0), false, "1", "size ratio of neighbours")},
                {},
                false, "a structured hex8 box that becomes one element block"});
+
+  // Mixed blocks (mesh/surface_layers.hpp): the element layers under a surface become a block of
+  // their own, so that only they need the (slower) fully integrated section.
+  t.push_back({"surface layer block", NameRule::required, {}, {}, true,
+               {text("from block", ValueKind::string, true, "the block whose surface layers are split off"),
+                text("surface", ValueKind::string, true, "a side set (its faces on that block) or node set"),
+                integer("layers", at_least(1), true, "",
+                        "element layers: 1 = elements with a node on the surface, k = those sharing a node with layer k-1")},
+               {},
+               false, "the element layers of a block under a surface, as a block of their own (own material and section)"});
 
   t.push_back({"parameters for block", NameRule::required, {}, {}, true,
                {text("material", ValueKind::string, true, "a material name"),

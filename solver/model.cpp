@@ -16,6 +16,7 @@
 #include "solver/contact_setup.hpp"
 #include "solver/errors.hpp"
 #include "solver/stable_time_step.hpp"
+#include "solver/surface_layer_blocks.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -146,6 +147,7 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
     }
     mesh::validate(m, "generated mesh of finite element model '" + spec.name + "'");
   }
+  apply_surface_layer_blocks(m, spec);  // mixed blocks: a skin split off a block, any mesh source
   return m;
 }
 
@@ -192,6 +194,17 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     const auto* section = deck.find_section(p->section);
     model.blocks.push_back(make_element_block(m, b, make_material(*material, p->model), *section));
     for (int e = 0; e < b.element_count; ++e) model.element_block[b.first_element + e] = static_cast<int>(model.blocks.size() - 1);
+  }
+
+  // Bodies: a surface layer block belongs to the block it was split from (followed back to a block
+  // of the mesh as built or read, which the split never empties).
+  for (const auto& b : model.blocks) {
+    std::string root = b.name;
+    for (auto sl = fem->surface_layers.rbegin(); sl != fem->surface_layers.rend(); ++sl)
+      if (sl->name == root) root = sl->from_block;
+    auto body = std::find_if(model.blocks.begin(), model.blocks.end(), [&](const auto& q) { return q.name == root; });
+    model.block_body.push_back(body != model.blocks.end() ? static_cast<int>(body - model.blocks.begin())
+                                                          : static_cast<int>(model.block_body.size()));
   }
 
   // Lumped mass: rho V0 / 8 to each node of each element (docs/theory.md 1.2).

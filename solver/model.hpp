@@ -70,6 +70,9 @@ struct Model {
   double total_mass = 0.0;             // kg, unscaled (rho V0 summed); Model::mass includes mass scaling
   MassScalingReport mass_scaling;      // `begin mass scaling`: what set-up added (inactive without the block)
   std::vector<int> element_block;      // [element] index into blocks
+  /// [block] the block whose body it belongs to: itself, or for a `surface layer block` the block it was
+  /// split from (so the guards see a tip and its skin as one body, solver/guards/block_translation.hpp).
+  std::vector<int> block_body;
   /// Contact, when the region has a contact definition (set up by build_model).
   std::unique_ptr<contact::ContactManager> contact;
   std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)

@@ -9,12 +9,21 @@
 namespace tribex::solver {
 
 BlockTranslation::BlockTranslation(const Model& model) : model_(model) {
+  // One body per block, except that a surface layer block joins the block it was split from
+  // (Model::block_body): a tip and its fully integrated skin translate together, and counting the
+  // nodes between them twice would overstate the translation.
   const auto& c = model.mesh.connectivity;
-  for (const auto& b : model.blocks) {
-    std::vector<int> nodes(c.begin() + 8L * b.first_element, c.begin() + 8L * (b.first_element + b.count));
+  const std::size_t nb = model.blocks.size();
+  nodes_.resize(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const auto& blk = model.blocks[b];
+    const std::size_t body = b < model.block_body.size() ? static_cast<std::size_t>(model.block_body[b]) : b;
+    nodes_[body].insert(nodes_[body].end(), c.begin() + 8L * blk.first_element,
+                        c.begin() + 8L * (blk.first_element + blk.count));
+  }
+  for (auto& nodes : nodes_) {
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    nodes_.push_back(std::move(nodes));
   }
   sums_.assign(4 * nodes_.size(), 0.0);
 }

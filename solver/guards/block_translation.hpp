@@ -12,10 +12,11 @@ struct Model;
 
 class BlockTranslation {
  public:
-  /// The nodes of each block of `model` (local numbering, each once per block).
+  /// The nodes of each body of `model` (local numbering, each once per body): a block, with any
+  /// surface layer blocks split from it (Model::block_body); an empty entry for such a split block.
   explicit BlockTranslation(const Model& model);
 
-  /// sum over blocks b of |sum_I m_I v_I|^2 / (2 sum_I m_I), J, for nodal velocities `v` [node][3],
+  /// sum over bodies b of |sum_I m_I v_I|^2 / (2 sum_I m_I), J, for nodal velocities `v` [node][3],
   /// over all ranks (owned nodes; collective). A node shared by two blocks counts in both.
   double kinetic_energy(const std::vector<double>& v);
 

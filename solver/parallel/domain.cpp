@@ -328,6 +328,7 @@ Model localize(Model&& global, const std::vector<int>& part) {
   local.mass_damping = global.mass_damping;
   local.total_mass = global.total_mass;
   local.mass_scaling = global.mass_scaling;
+  local.block_body = global.block_body;
   local.contact = std::move(global.contact);
   local.preflight = std::move(global.preflight);
   local.setup = std::move(global.setup);

@@ -98,11 +98,13 @@ TEST(Parser, FullDeckValues) {
   EXPECT_EQ(m.boxes[0].intervals, (std::array<int, 3>{10, 10, 4}));
   EXPECT_EQ(m.boxes[0].grade_toward, "zmax");
   EXPECT_EQ(m.boxes[0].grading_ratio, 1.1);
-  ASSERT_EQ(m.blocks.size(), 1u);
+  ASSERT_EQ(m.blocks.size(), 2u);  // substrate and its surface layer block substrate_skin
   EXPECT_EQ(m.blocks[0].block, "substrate");
   EXPECT_EQ(m.blocks[0].material, "silicon");
   EXPECT_EQ(m.blocks[0].model, "neo_hookean");
   EXPECT_EQ(m.blocks[0].section, "hex8");
+  EXPECT_EQ(m.blocks[1].block, "substrate_skin");
+  EXPECT_EQ(m.blocks[1].model, "elastic");
 
   const TimeControlSpec& t = d.procedure.time_control;
   EXPECT_EQ(t.start_time, 0.0);
@@ -143,7 +145,7 @@ TEST(Parser, FullDeckValues) {
   EXPECT_EQ(r.history->reaction_force_node_sets, (std::vector<std::string>{"substrate_zmin", "substrate_zmax"}));
   EXPECT_EQ(r.history->displacement_node_sets, std::vector<std::string>{"substrate_zmax"});
   // Mesh references keep their location for the mesh layer's messages.
-  EXPECT_EQ(r.fixed_displacements[0].where.line, 68);
+  EXPECT_EQ(r.fixed_displacements[0].where.line, 77);  // 68 before the surface layer block (9 lines)
 }
 
 TEST(Parser, DefaultsOfTheMinimalDeck) {
@@ -267,6 +269,19 @@ TEST(Parser, PrescribedForce) {
                                        "        component = z\n        function = f\n"
                                        "        scale factor = 2 nm\n      end\n"));
   EXPECT_TRUE(has_error(ds, 38, "needs a force (N)")) << all(ds);  // the scale factor line
+}
+
+TEST(Parser, SurfaceLayerBlock) {
+  const Deck d = parse_deck_file(good_dir + "full.i");
+  const auto& layers = d.models.at(0).surface_layers;
+  ASSERT_EQ(layers.size(), 1u);
+  EXPECT_EQ(layers[0].name, "substrate_skin");
+  EXPECT_EQ(layers[0].from_block, "substrate");
+  EXPECT_EQ(layers[0].surface, "substrate_zmax");
+  EXPECT_EQ(layers[0].layers, 2);
+  EXPECT_EQ(layers[0].where.line, 52);
+  EXPECT_EQ(layers[0].from_block_where.line, 53);
+  EXPECT_EQ(layers[0].surface_where.line, 54);
 }
 
 TEST(Parser, ResolvedTextRoundTrips) {

@@ -17,7 +17,8 @@
   check_exodus.py mesh TRIBEX DECK OUT
       runs DECK (generated boxes), then the same deck on its results.exo as `database name = mesh.g`,
       on a netCDF-4 copy of it (mesh4.g) and on `tribex mesh convert mesh.g mesh.msh`: history.csv
-      byte-identical in all four.
+      byte-identical in all four. A deck with `begin surface layer block`s reads the unsplit mesh (the
+      results.exo of the deck without them) and splits it at set-up, as it split the generated mesh.
 """
 import argparse
 import csv
@@ -106,14 +107,19 @@ def fields(a):
     if block_names != h5_blocks:
         sys.exit(f"FAIL: block names {block_names} != results.h5's {h5_blocks}")
     node_sets, side_sets = names(exo, "ns_names"), names(exo, "ss_names")
+    # A surface layer block (mixed blocks) has no sets of its own: its parent's box sets span both.
+    parent = dict(re.findall(r"begin surface layer block (\w+)\s+from block = (\w+)", open(a.deck).read()))
     for b in block_names:
+        if b in parent:
+            continue
+        members = {b} | {k for k, v in parent.items() if v == b}
         for face, side in (("xmin", 4), ("xmax", 2), ("ymin", 1), ("ymax", 3), ("zmin", 5), ("zmax", 6)):
             name = f"{b}_{face}"
             if name not in node_sets or name not in side_sets:
                 sys.exit(f"FAIL: set {name} missing (node sets {node_sets}, side sets {side_sets})")
             nodes = exo.variables[f"node_ns{node_sets.index(name) + 1}"][:].data - 1
             axis, end = "xyz".index(face[0]), (np.min if face[1:] == "min" else np.max)
-            block_nodes = np.unique(conn[[i for i, n in enumerate(h5["/mesh/block_id"][()]) if block_names[n] == b]])
+            block_nodes = np.unique(conn[[i for i, n in enumerate(h5["/mesh/block_id"][()]) if block_names[n] in members]])
             if not np.all(xyz[nodes, axis] == end(xyz[block_nodes, axis])):
                 sys.exit(f"FAIL: node set {name} is not on its face")
             sides = exo.variables[f"side_ss{side_sets.index(name) + 1}"][:].data
@@ -212,7 +218,21 @@ def mesh(a):
     gen = os.path.join(a.out, "generated")
     shutil.rmtree(a.out, ignore_errors=True)
     run(a.tribex, a.deck, gen)
-    shutil.copy(os.path.join(gen, "results.exo"), os.path.join(a.out, "mesh.g"))
+    text = open(a.deck).read()
+    # Mixed blocks: the mesh file is the unsplit mesh (a run without the surface layer blocks), which
+    # the deck then splits at set-up, as it splits the generated one.
+    skins = re.findall(r"begin surface layer block (\w+)", text)
+    source = gen
+    if skins:
+        source = os.path.join(a.out, "unsplit")
+        unsplit = text
+        for name in skins:
+            for block in ("surface layer block", "parameters for block"):
+                unsplit = re.sub(rf"\n\s*begin {block} {name}\b.*?end {block} {name}", "", unsplit, flags=re.S)
+        with open(os.path.join(a.out, "unsplit.i"), "w") as f:
+            f.write(unsplit)
+        run(a.tribex, os.path.join(a.out, "unsplit.i"), source)
+    shutil.copy(os.path.join(source, "results.exo"), os.path.join(a.out, "mesh.g"))
     p = subprocess.run([a.tribex, "mesh", "convert", os.path.join(a.out, "mesh.g"), os.path.join(a.out, "mesh.msh")],
                        capture_output=True, text=True)
     if p.returncode != 0:
@@ -220,7 +240,6 @@ def mesh(a):
     # The same mesh as netCDF-4 (HDF5 inside, as Cubit may write it): read by tribex through the Open
     # MPI HDF5 of libnetcdf_mpi, in the process that then writes results.h5 with the same HDF5.
     to_netcdf4(os.path.join(a.out, "mesh.g"), os.path.join(a.out, "mesh4.g"))
-    text = open(a.deck).read()
     # The generated boxes give way to the mesh file (the deck's block and set names are its names).
     text = re.sub(r"\n\s*begin generated box (\w+).*?end generated box \1", "", text, flags=re.S)
     reference = open(os.path.join(gen, "history.csv"), "rb").read()

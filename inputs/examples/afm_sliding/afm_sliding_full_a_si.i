@@ -66,10 +66,14 @@ begin sierra afm_sliding_full_a_si
     end parameters for model elastic
   end property specification for material silicon
 
-  # Fully integrated at GPa contact pressures (verification/hertz/README.md).
+  # Fully integrated at GPa contact pressures (verification/hertz/README.md): the skin blocks under
+  # the contact surfaces (tip_skin, and substrate_skin or coating_skin); mean quadrature elsewhere.
   begin solid section hex8
     formulation = fully_integrated
   end solid section hex8
+  begin solid section hex8_mq
+    formulation = mean_quadrature
+  end solid section hex8_mq
 
   begin finite element model afm_track
     begin afm surface
@@ -93,14 +97,32 @@ begin sierra afm_sliding_full_a_si
       grading ratio = 1.3
       apex position = 120 115 34.6498 nm
     end generated asperity
+    begin surface layer block tip_skin
+      from block = tip
+      surface = tip_surface
+      layers = 2
+    end surface layer block tip_skin
+    begin surface layer block substrate_skin
+      from block = substrate
+      surface = substrate_top
+      layers = 2
+    end surface layer block substrate_skin
     begin parameters for block tip
       material = silicon
-      section = hex8
+      section = hex8_mq
     end parameters for block tip
-    begin parameters for block substrate
+    begin parameters for block tip_skin
       material = silicon
       section = hex8
+    end parameters for block tip_skin
+    begin parameters for block substrate
+      material = silicon
+      section = hex8_mq
     end parameters for block substrate
+    begin parameters for block substrate_skin
+      material = silicon
+      section = hex8
+    end parameters for block substrate_skin
   end finite element model afm_track
 
   begin presto procedure press_and_slide

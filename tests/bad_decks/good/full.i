@@ -49,11 +49,20 @@ begin sierra tip_on_flat
       grade toward = zmax
       grading ratio = 1.1
     end generated box substrate
+    begin surface layer block substrate_skin
+      from block = substrate
+      surface = substrate_zmax
+      layers = 2
+    end surface layer block substrate_skin
     begin parameters for block substrate
       material = silicon
       model = neo_hookean
       section = hex8
     end parameters for block substrate
+    begin parameters for block substrate_skin
+      material = silicon
+      section = hex8
+    end parameters for block substrate_skin
   end finite element model tip_model
 
   begin presto procedure explicit

@@ -1,0 +1,178 @@
+# dmt_fine_mixed.i -- mixed blocks (issue 24): dmt_fine.i with the tip and substrate in one-point
+# (mean-quadrature) elements except a fully integrated skin of 1 element layer(s) under the
+# contact surfaces (tip_surface, substrate_top; `begin surface layer block`). Same mesh, loading
+# and check (same tolerance) as dmt_fine.i; figures in README.md.
+#
+# dmt_fine.i: the fine variant (label slow) of verification/dmt/dmt_coarse.i: DMT adhesive contact
+# of a silicon sphere (R = 27 nm) on a silicon flat, Lennard-Jones adhesion (W = 0.05 J/m^2,
+# z0 = 0.3 nm, Tabor parameter mu_T = 0.070: the DMT limit), loaded to 1.1 nm, then withdrawn past
+# pull-off. The mesh of verification/hertz/hertz_fine.i (0.5 nm at the contact, 200 x 200 x 120 nm
+# block); the driving of dmt_coarse.i, but the withdrawal stops with the apex 0.3 nm above contact
+# (the pull-off is passed at about +0.03 nm in the coarse run).
+#
+# Run:    build/bin/tribex run verification/dmt/dmt_fine_mixed.i -o dmt_fine_mixed_output
+# Check:  /usr/bin/python3 verification/dmt/compare.py dmt_fine_mixed_output --element-size 0.5 --tolerance 0.03
+begin sierra dmt_fine_mixed
+  begin function push
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+          0.0  0.00000
+          6.0  0.00135
+         12.0  0.00540
+         18.0  0.01214
+         24.0  0.02159
+         30.0  0.03374
+         36.0  0.04859
+         42.0  0.06599
+         48.0  0.08399
+         54.0  0.10199
+         60.0  0.11999
+         66.0  0.13799
+         72.0  0.15599
+         78.0  0.17399
+         84.0  0.19199
+         90.0  0.20999
+         96.0  0.22799
+        102.0  0.24599
+        108.0  0.26399
+        114.0  0.28198
+        120.0  0.29998
+        126.0  0.31798
+        132.0  0.33598
+        138.0  0.35398
+        144.0  0.37198
+        150.0  0.38998
+        156.0  0.40809
+        162.0  0.42707
+        168.0  0.44718
+        174.0  0.46848
+        180.0  0.49107
+        186.0  0.51504
+        192.0  0.54048
+        198.0  0.56752
+        204.0  0.59626
+        210.0  0.62686
+        216.0  0.65943
+        222.0  0.69416
+        228.0  0.73119
+        234.0  0.77074
+        240.0  0.81299
+        246.0  0.85817
+        252.0  0.90654
+        258.0  0.95837
+        264.0  1.01395
+        270.0  1.07363
+        272.5  1.10000
+        282.5  1.10000
+        632.5  -0.30000
+    end values
+  end function push
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+
+  # The concentrated penalty forces of node-to-face contact excite the hourglass modes of one-point
+  # elements at the surface (README.md):
+  # mixed blocks, hex8 (fully integrated) for the skins tip_skin and substrate_skin, where the
+  # penalty point forces act; hex8_mq (one point) for the rest of tip and substrate.
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+  begin solid section hex8_mq
+    formulation = mean_quadrature
+  end solid section hex8_mq
+
+  begin finite element model asperity
+    begin generated asperity
+      radius = 27 nm
+      tip width = 32 nm
+      tip height = 26 nm
+      substrate width = 200 nm
+      substrate depth = 120 nm
+      element size = 0.5 nm
+      fine half width = 7.2 nm
+      fine depth = 2.5 nm
+      grading ratio = 1.35
+    end generated asperity
+    begin surface layer block tip_skin
+      from block = tip
+      surface = tip_surface
+      layers = 1
+    end surface layer block tip_skin
+    begin surface layer block substrate_skin
+      from block = substrate
+      surface = substrate_top
+      layers = 1
+    end surface layer block substrate_skin
+    begin parameters for block tip
+      material = silicon
+      section = hex8_mq
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8_mq
+    end parameters for block substrate
+    begin parameters for block tip_skin
+      material = silicon
+      section = hex8
+    end parameters for block tip_skin
+    begin parameters for block substrate_skin
+      material = silicon
+      section = hex8
+    end parameters for block substrate_skin
+  end finite element model asperity
+
+  begin presto procedure indent
+    begin time control
+      termination time = 632 ps
+    end time control
+    begin presto region main
+      use finite element model asperity
+      mass damping coefficient = 5e11 1/s
+      quasi static = on             # run guards: kinetic energy below 5 % of internal energy while loaded
+      begin fixed displacement
+        node set = substrate_bottom
+        components = x y z
+      end fixed displacement
+      begin fixed displacement
+        node set = tip_top
+        components = x y
+      end fixed displacement
+      begin prescribed displacement
+        node set = tip_top
+        component = z
+        function = push
+        scale factor = -1
+      end prescribed displacement
+      begin contact definition tip_on_flat
+        contact surface tip contains tip_surface
+        contact surface flat contains substrate_top
+        contact axis = 0 0 0 0 0 1 nm
+        begin interaction sphere_flat
+          surfaces = tip flat
+          model = adhesion
+          work of adhesion = 0.05 J/m^2
+          equilibrium separation = 0.3 nm
+          adhesion cutoff = 6 nm      # 20 z0: the law keeps 99 % of W (docs/theory.md 6.3)
+        end interaction sphere_flat
+      end contact definition tip_on_flat
+      begin history output hist
+        time increment = 3 ps
+        reaction force = tip_top substrate_bottom
+        mean displacement = tip_top tip_apex substrate_axis_top
+      end history output hist
+      begin results output fields
+        time increment = 15 ps
+        nodal variables = displacement contact_traction contact_status
+        element variables = stress
+      end results output fields
+    end presto region main
+  end presto procedure indent
+end sierra dmt_fine_mixed

@@ -1,0 +1,169 @@
+# hertz_coarse_mixed.i -- mixed blocks (issue 24): hertz_coarse.i with the tip and substrate in one-point
+# (mean-quadrature) elements except a fully integrated skin of 1 element layer(s) under the
+# contact surfaces (tip_surface, substrate_top; `begin surface layer block`). Same mesh, loading
+# and check (same tolerance) as hertz_coarse.i; figures in README.md.
+#
+# hertz_coarse.i: Hertz contact of a silicon sphere (R = 27 nm) on a silicon flat, frictionless,
+# no adhesion: the coarse variant that CI runs (verification/hertz/README.md).
+#
+# Run:    build/bin/tribex run verification/hertz/hertz_coarse_mixed.i -o hertz_coarse_mixed_output
+# Check:  /usr/bin/python3 verification/hertz/compare.py hertz_coarse_mixed_output --element-size 0.8 --tolerance 0.03
+#
+#             tip_top: pushed down 1.7 nm; speed 3 m/s at first, then growing as (depth/0.4 nm)^1.25
+#             so kinetic energy stays below 2 % of internal energy; x and y held
+#          +-----------+
+#          |    tip    |   32 nm square column, spherical bottom face tip_surface (R = 27 nm)
+#           \_________/
+#   +---------------------------+ substrate_top (master surface)
+#   |         substrate         |  120 nm wide, 60 nm deep, graded from 0.8 nm at the contact
+#   +---------------------------+ substrate_bottom: fixed
+#
+# What it shows: penalty contact between two deformable bodies (tip_surface -> substrate_top),
+# the generated asperity mesh, contact area/radius/force histories and the gap field used to
+# measure the contact radius between nodes (compare.py), quasi-static driving (KE << IE is
+# checked by compare.py).
+begin sierra hertz_coarse_mixed
+  begin function push
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+          0.0  0.00000
+         10.0  0.00375
+         20.0  0.01499
+         30.0  0.03374
+         40.0  0.05999
+         50.0  0.08999
+         60.0  0.11999
+         70.0  0.14999
+         80.0  0.17999
+         90.0  0.20999
+        100.0  0.23999
+        110.0  0.26998
+        120.0  0.29998
+        130.0  0.32998
+        140.0  0.35998
+        150.0  0.38998
+        160.0  0.42062
+        170.0  0.45414
+        180.0  0.49107
+        190.0  0.53183
+        200.0  0.57690
+        210.0  0.62686
+        220.0  0.68233
+        230.0  0.74409
+        240.0  0.81299
+        250.0  0.89005
+        260.0  0.97647
+        270.0  1.07363
+        280.0  1.18318
+        290.0  1.30707
+        300.0  1.44760
+        310.0  1.60754
+        315.2  1.70000
+        335.2  1.70000
+    end values
+  end function push
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+
+  # The concentrated penalty forces of node-to-face contact excite the hourglass modes of one-point
+  # elements at the surface (README.md):
+  # mixed blocks, hex8 (fully integrated) for the skins tip_skin and substrate_skin, where the
+  # penalty point forces act; hex8_mq (one point) for the rest of tip and substrate.
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+  begin solid section hex8_mq
+    formulation = mean_quadrature
+  end solid section hex8_mq
+
+  begin finite element model asperity
+    begin generated asperity
+      radius = 27 nm
+      tip width = 32 nm
+      tip height = 26 nm
+      substrate width = 120 nm
+      substrate depth = 60 nm
+      element size = 0.8 nm
+      fine half width = 7.2 nm
+      fine depth = 3.2 nm
+      grading ratio = 1.35
+    end generated asperity
+    begin surface layer block tip_skin
+      from block = tip
+      surface = tip_surface
+      layers = 1
+    end surface layer block tip_skin
+    begin surface layer block substrate_skin
+      from block = substrate
+      surface = substrate_top
+      layers = 1
+    end surface layer block substrate_skin
+    begin parameters for block tip
+      material = silicon
+      section = hex8_mq
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8_mq
+    end parameters for block substrate
+    begin parameters for block tip_skin
+      material = silicon
+      section = hex8
+    end parameters for block tip_skin
+    begin parameters for block substrate_skin
+      material = silicon
+      section = hex8
+    end parameters for block substrate_skin
+  end finite element model asperity
+
+  begin presto procedure indent
+    begin time control
+      termination time = 345 ps
+    end time control
+    begin presto region main
+      use finite element model asperity
+      mass damping coefficient = 5e11 1/s
+      quasi static = on             # run guards: kinetic energy below 5 % of internal energy while loaded
+      begin fixed displacement
+        node set = substrate_bottom
+        components = x y z
+      end fixed displacement
+      begin fixed displacement
+        node set = tip_top
+        components = x y
+      end fixed displacement
+      begin prescribed displacement
+        node set = tip_top
+        component = z
+        function = push
+        scale factor = -1
+      end prescribed displacement
+      begin contact definition tip_on_flat
+        contact surface tip contains tip_surface
+        contact surface flat contains substrate_top
+        contact axis = 0 0 0 0 0 1 nm
+        begin interaction sphere_flat
+          surfaces = tip flat
+        end interaction sphere_flat
+      end contact definition tip_on_flat
+      begin history output hist
+        time increment = 3 ps
+        reaction force = tip_top substrate_bottom
+        mean displacement = tip_top tip_apex substrate_axis_top
+      end history output hist
+      begin results output fields
+        time increment = 15 ps
+        nodal variables = displacement contact_traction contact_status
+        element variables = stress
+      end results output fields
+    end presto region main
+  end presto procedure indent
+end sierra hertz_coarse_mixed
