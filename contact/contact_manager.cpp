@@ -122,6 +122,7 @@ void ContactManager::search(Pass& p, const double* x) {
     }
   p.searched = true;
   ++total_searches_;
+  ++work_.searches;
 }
 
 double ContactManager::stable_time_step() const {
@@ -134,6 +135,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
                                              double dt) {
   if (!(dt > 0.0)) dt = dt_ref_;
   ContactTotals totals;
+  ++work_.calls;
   double friction[3] = {0.0, 0.0, 0.0};  // vector sum of shear forces on the (first) slave surfaces, N
   fit_r2_.clear();
   fit_p2_.clear();
@@ -145,7 +147,10 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
     if (needs_search(p, x)) {
       search(p, x);
       ++totals.searches;
+    } else {
+      ++work_.reuses;
     }
+    if (!p.candidate_offset.empty()) work_.pairs += p.candidate_offset.back();
     p.gap.assign(surfaces_[p.slave].nodes.size(), NAN);
     p.stable_dt = INFINITY;
     if (v) track_motion(p, v, dt, totals);

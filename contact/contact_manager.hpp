@@ -82,6 +82,19 @@ class ContactManager {
   const std::vector<int>& surface_nodes() const { return all_nodes_; }
   const std::vector<ContactSurface>& surfaces() const { return surfaces_; }
   long total_searches() const { return total_searches_; }
+  /// Contact work of this process (not kept in restart files; plain increments, so counting costs
+  /// nothing in the loop). Per interaction pass and compute_forces either a full broad-phase search
+  /// (BucketSearch) or a reuse of the candidate faces kept since the last one (the cheap update:
+  /// only the motion check); `searches` also counts the set-up search of initial_overlaps; `pairs` the candidate (slave node, master face) pairs handed to
+  /// the narrow phase (node_to_face: closest_face, which may stop at the node's face of the previous
+  /// step; mortar: the segment integration), summed over passes and steps.
+  struct Work {
+    long long calls = 0;           // compute_forces calls (one per force evaluation)
+    long long searches = 0;        // full broad-phase searches (the set-up one of initial_overlaps included)
+    long long reuses = 0;          // pass-steps that kept the candidates of an earlier search
+    long long pairs = 0;           // candidate node-face pairs evaluated
+  };
+  const Work& work() const { return work_; }
   /// Critical time step of the rough-surface contact at the last compute_forces: min over nodes of
   /// 2 sqrt(m_eff / k_I) (normal spring A_I dp/dd) and 2 m_eff / c_I (shear damper); INFINITY without one.
   double stable_time_step() const;
@@ -164,6 +177,7 @@ class ContactManager {
   std::vector<int> all_nodes_;
   Axis axis_;
   long total_searches_ = 0;
+  Work work_;
   // (r^2, p^2) of the primary passes' penalty nodes this step, for radius_pressure_fit; reserved for
   // every slave node at construction, so the hot loop does not allocate.
   std::vector<double> fit_r2_, fit_p2_;

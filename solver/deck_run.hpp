@@ -23,6 +23,7 @@
 #include "solver/output/run_log.hpp"
 #include "solver/output/schedule.hpp"
 #include "solver/parallel/communicator.hpp"
+#include "solver/parallel/rank_counts.hpp"
 #include "solver/restart/restart_output.hpp"
 #include "solver/restart/state_archive.hpp"
 #include "solver/run.hpp"
@@ -51,6 +52,7 @@ class DeckRun {
     distribute_and_resume();
     stop_before_outputs("before the output files were opened");
     open_outputs();
+    peak_rss_setup_ = parallel::peak_rss_bytes();  // set-up's high-water mark, before the loop adds to it
     loop();
     close();
     return summary_;
@@ -143,6 +145,7 @@ class DeckRun {
   bool terminal_ = false, heartbeat_ = false;
   Clock::time_point last_progress_, last_heartbeat_;
   double contact_seconds_before_ = 0.0;  // earlier segments' (restart file)
+  long long peak_rss_setup_ = 0;         // bytes, getrusage at the end of set-up (summary.json rank_counts)
 };
 
 }  // namespace tribex::solver

@@ -236,6 +236,9 @@ void DeckRun::close() {
   summary.initial_stable_time_step = stable0_.dt;
   summary.controlling_element = stable0_.controlling_element;
   summary.mass_scaling = model_->mass_scaling;
+  // Collective (every rank reaches the close): each rank's counts to rank 0.
+  summary.rank_counts = parallel::gather_rank_counts(
+      parallel::count_rank(*model_, region_.contact ? &*region_.contact : nullptr, peak_rss_setup_));
   const long steps_run = summary.steps - summary.first_step;  // by this process
   summary.ns_per_element_step =
       steps_run > 0 && elements_ > 0 ? 1e9 * summary.loop_seconds / (double(elements_) * double(steps_run)) : 0.0;

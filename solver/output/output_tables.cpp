@@ -95,6 +95,48 @@ std::span<const Field<RunWarning>> warning_fields() {
   return table;
 }
 
+// summary.json "rank_counts", one object per rank in this order (solver/parallel/rank_counts.hpp).
+// The per-step figures are the totals over the force evaluations that exchanged (one per step plus
+// the initial one): the buffers are sized at set-up, so every step moves the same bytes.
+std::span<const Field<parallel::RankCounts>> rank_count_fields() {
+  using C = parallel::RankCounts;
+  using F = Field<C>;
+  static const F table[] = {
+      field<&C::rank>("rank", "-", "MPI rank, 0-based"),
+      field<&C::elements>("elements", "count", "elements of this rank"),
+      field<&C::nodes>("nodes", "count", "nodes this rank holds (a shared node is counted by every rank that holds it)"),
+      field<&C::owned_nodes>("owned_nodes", "count", "nodes this rank owns (a shared node: its lowest holder)"),
+      field<&C::shared_nodes>("shared_nodes", "count", "held nodes that other ranks hold too (their forces are summed in the halo)"),
+      field<&C::contact_faces>("contact_faces", "count",
+                               "contact-surface faces this rank's contact search holds (replicated contact: every face)"),
+      field<&C::ghost_faces>("ghost_faces", "count",
+                             "of contact_faces, those whose element is another rank's (replicated contact: all but the rank's own)"),
+      F{"halo_bytes_sent_per_step", "B", "shared-node forces sent to the neighbour ranks per force evaluation (MPI_Isend payload)",
+        [](const C& c) { return c.halo_exchanges > 0 ? double(c.halo_bytes_sent) / double(c.halo_exchanges) : 0.0; }},
+      F{"halo_bytes_received_per_step", "B", "shared-node forces received from the neighbour ranks per force evaluation",
+        [](const C& c) { return c.halo_exchanges > 0 ? double(c.halo_bytes_received) / double(c.halo_exchanges) : 0.0; }},
+      F{"contact_bytes_sent_per_step", "B",
+        "surface gather per force evaluation: this rank's surface nodes (x, v, f) x (ranks - 1) (MPI_Allgatherv payload)",
+        [](const C& c) { return c.surface_gathers > 0 ? double(c.contact_bytes_sent) / double(c.surface_gathers) : 0.0; }},
+      F{"contact_bytes_received_per_step", "B", "surface gather per force evaluation: the other ranks' surface nodes",
+        [](const C& c) {
+          return c.surface_gathers > 0 ? double(c.contact_bytes_received) / double(c.surface_gathers) : 0.0;
+        }},
+      F{"contact_pairs_per_step", "count",
+        "candidate (slave node, master face) pairs this rank's narrow phase evaluated per contact evaluation, all passes",
+        [](const C& c) {
+          return c.contact_evaluations > 0 ? double(c.contact_pairs) / double(c.contact_evaluations) : 0.0;
+        }},
+      field<&C::contact_evaluations>("contact_evaluations", "count", "contact force evaluations of this process"),
+      field<&C::searches>("searches", "count", "full broad-phase searches of this process, all passes (the set-up search for initial overlaps included)"),
+      field<&C::search_reuses>("search_reuses", "count",
+                               "pass evaluations that kept the candidates of an earlier search (the cheap update)"),
+      field<&C::peak_rss_setup_bytes>("peak_rss_setup_bytes", "B", "peak resident memory at the end of set-up (getrusage)"),
+      field<&C::peak_rss_bytes>("peak_rss_bytes", "B", "peak resident memory of the run (getrusage, at the close)"),
+  };
+  return table;
+}
+
 // summary.json in file order. Text and objects have no unit (""); the "units" object lists the rest.
 std::span<const Field<RunSummary>> summary_fields() {
   using R = RunSummary;
@@ -180,6 +222,22 @@ std::span<const Field<RunSummary>> summary_fields() {
                       number(b.fraction()) + ", \"largest_density_factor\": " + number(b.largest_scale) + "}";
              }
              return out + "\n  ]}";
+           }),
+      text("rank_counts",
+           "per MPI rank, in rank order: elements, nodes, ghost faces, bytes exchanged and contact work per step, "
+           "searches, peak memory (one entry in a serial run; units: units.rank_counts)",
+           [](const R& s) {
+             std::string out = "[";
+             for (std::size_t i = 0; i < s.rank_counts.size(); ++i) {
+               out += i ? ",\n    {" : "\n    {";
+               bool first = true;
+               for (const Field<parallel::RankCounts>& f : rank_count_fields()) {
+                 out += (first ? "\"" : ", \"") + std::string(f.name) + "\": " + number(f.get(s.rank_counts[i]));
+                 first = false;
+               }
+               out += "}";
+             }
+             return out + (s.rank_counts.empty() ? "]" : "\n  ]");
            }),
   };
   return table;

@@ -10,6 +10,7 @@
 #include "solver/guards/run_warning.hpp"
 #include "solver/mass_scaling.hpp"
 #include "solver/output/run_identity.hpp"
+#include "solver/parallel/rank_counts.hpp"
 
 namespace tribex::solver {
 
@@ -36,6 +37,7 @@ struct RunSummary {
   Energies energies;                       // the energy ledger at the end
   std::vector<RunWarning> warnings;  // set-up and run guards (solver/guards/README.md), in the order raised
   MassScalingReport mass_scaling;    // `begin mass scaling` (inactive: summary.json null)
+  std::vector<parallel::RankCounts> rank_counts;  // every rank's counts, in rank order (rank 0; others: empty)
 };
 
 }  // namespace tribex::solver

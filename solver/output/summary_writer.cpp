@@ -42,12 +42,13 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
   std::FILE* f = std::fopen(tmp.c_str(), "w");
   if (!f) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
   // One key per line in table order (output_tables.cpp), then "units": the unit of every key that
-  // is a quantity, and of the fields of the energies object and of a warnings entry.
+  // is a quantity, and of the fields of the energies object, of a warnings entry and of a rank_counts entry.
   std::fprintf(f, "{\n");
   for (const Field<RunSummary>& k : summary_fields())
     std::fprintf(f, "  \"%s\": %s,\n", std::string(k.name).c_str(), (k.json ? k.json(s) : number(k.get(s))).c_str());
-  std::fprintf(f, "  \"units\": {%s, \"energies\": {%s}, \"warnings\": {%s}}\n}\n", units(summary_fields()).c_str(),
-               units(energy_fields()).c_str(), units(warning_fields()).c_str());
+  std::fprintf(f, "  \"units\": {%s, \"energies\": {%s}, \"warnings\": {%s}, \"rank_counts\": {%s}}\n}\n",
+               units(summary_fields()).c_str(), units(energy_fields()).c_str(), units(warning_fields()).c_str(),
+               units(rank_count_fields()).c_str());
   // Written whole or not at all: a full disk keeps the earlier summary.json (if any) and says so.
   const bool written = !std::ferror(f);
   const int write_errno = errno;

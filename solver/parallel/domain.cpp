@@ -35,15 +35,18 @@ void Domain::sum_shared(double* f) {
   if (neighbours_.empty()) return;
   const double start = now();
   const int nk = static_cast<int>(neighbours_.size());
+  ++traffic.halo_exchanges;
   for (int k = 0; k < nk; ++k) {
     const int b = neighbour_offset_[k], n = neighbour_offset_[k + 1] - b;
     MPI_Irecv(&recv_[3 * b], 3 * n, MPI_DOUBLE, neighbours_[k], 17, MPI_COMM_WORLD, &requests_[k]);
+    traffic.halo_received += static_cast<long long>(sizeof(double)) * 3 * n;
   }
   for (int k = 0; k < nk; ++k) {
     const int b = neighbour_offset_[k], n = neighbour_offset_[k + 1] - b;
     for (int j = b; j < b + n; ++j)
       for (int i = 0; i < 3; ++i) send_[3 * j + i] = f[3 * neighbour_nodes_[j] + i];
     MPI_Isend(&send_[3 * b], 3 * n, MPI_DOUBLE, neighbours_[k], 17, MPI_COMM_WORLD, &requests_[nk + k]);
+    traffic.halo_sent += static_cast<long long>(sizeof(double)) * 3 * n;
   }
   MPI_Waitall(2 * nk, requests_.data(), MPI_STATUSES_IGNORE);
   // Sum in ascending rank order (0 + f_r1 + f_r2 + ...): the same operations on every rank that
@@ -120,6 +123,10 @@ void Domain::gather_surface(const double* x, const double* v, const double* f, d
   }
   MPI_Allgatherv(surface_send_.data(), static_cast<int>(surface_send_.size()), MPI_DOUBLE, surface_recv_.data(),
                  surface_counts_.data(), surface_displs_.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  ++traffic.surface_gathers;
+  const long long mine = static_cast<long long>(sizeof(double) * surface_send_.size());
+  traffic.surface_sent += mine * (ranks - 1);
+  traffic.surface_received += static_cast<long long>(sizeof(double) * surface_recv_.size()) - mine;
   for (std::size_t j = 0; j < surface_order_.size(); ++j) {
     const int node = surface_nodes_[surface_order_[j]];
     for (int i = 0; i < 3; ++i) {

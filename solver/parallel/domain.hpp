@@ -35,6 +35,19 @@ class Domain {
   bool serial() const { return ranks == 1; }
   /// Wall time spent in sum_shared and gather_surface (messages and waiting), s; 0 on one rank.
   double communication_seconds = 0.0;
+  /// Payload bytes this rank moved in sum_shared and gather_surface since set-up (summary.json
+  /// rank_counts). Halo: the doubles of each MPI_Isend / MPI_Irecv. Surface gather (MPI_Allgatherv):
+  /// sent = this rank's block x (ranks - 1), the copies the other ranks receive of it; received =
+  /// the other ranks' blocks. Payload, not wire bytes: Open MPI's allgather algorithm may forward
+  /// blocks through intermediate ranks. Plain increments: nothing allocated in the loop.
+  struct Traffic {
+    long long halo_sent = 0, halo_received = 0;        // bytes
+    long long surface_sent = 0, surface_received = 0;  // bytes
+    long long halo_exchanges = 0, surface_gathers = 0;  // calls that sent messages (one per force evaluation)
+  };
+  Traffic traffic;
+  /// Nodes held by more than one rank (each holder counts them).
+  int shared_node_count() const { return static_cast<int>(shared_nodes_.size()); }
   /// The identity layout of a whole model on one rank (build_model sets it).
   void init_serial(int nodes, int elements);
   int owned_node_count() const { return owned_nodes_; }

@@ -49,6 +49,7 @@ TEST(OutputTables, EveryFieldIsNamedOnceAndDefined) {
   expect_described(solver::contact_total_fields(), "contact totals");
   expect_described(solver::warning_fields(), "warnings");
   expect_described(solver::summary_fields(), "summary.json");
+  expect_described(solver::rank_count_fields(), "rank_counts");
   for (const auto& f : solver::energy_fields()) EXPECT_EQ(f.unit, "J") << f.name;
 }
 
@@ -152,6 +153,15 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
   w.step = 10;
   w.message = "deep";
   s.warnings = {w};
+  solver::parallel::RankCounts c;  // rank_counts (issue 25): per-step figures are totals over the exchanges
+  c.rank = 1;
+  c.elements = 20;
+  c.halo_exchanges = 4;
+  c.halo_bytes_sent = 96;
+  c.contact_evaluations = 4;
+  c.contact_pairs = 10;
+  c.peak_rss_bytes = 1 << 20;
+  s.rank_counts = {c};
   solver::write_summary_json((dir / "summary.json").string(), s);
   const std::string text = read_file(dir / "summary.json");
 
@@ -165,7 +175,8 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
                                             "loop_time_s", "ns_per_element_step", "first_step", "total_wall_time_s",
                                             "total_loop_time_s", "contact_time_s", "ranks", "communication_time_s",
                                             "initial_stable_time_step", "controlling_element", "energy_error",
-                                            "energy_unit", "warnings", "energies", "mass_scaling", "units"}));
+                                            "energy_unit", "warnings", "energies", "mass_scaling", "rank_counts",
+                                            "units"}));
   for (const char* expected :
        {"\"status\": \"numerical failure: element 8 \\\"inverted\\\"\",\n", "\"exit_code\": 3,\n", "\"steps\": 1234,\n",
         "\"final_time\": 0.125,\n", "\"deck_sha256\": null,\n", "\"total_wall_time_s\": null,\n",
@@ -173,7 +184,11 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
         "{\"kind\": \"penetration\", \"step\": 10, \"time\": 0, ", "\"node\": null, \"message\": \"deep\"}",
         "\"energies\": {\"kinetic\": 1.5, \"internal\": 0, ", "\"plastic_dissipation\": 0.25},\n",
         "\"units\": {\"steps\": \"count\", \"final_time\": \"s\", ", "\"energy_error\": \"-\", \"energies\": {\"kinetic\": \"J\", ",
-        "\"warnings\": {\"step\": \"count\", \"time\": \"s\", ", "\"mass_scaling\": null,\n"})
+        "\"warnings\": {\"step\": \"count\", \"time\": \"s\", ", "\"mass_scaling\": null,\n",
+        "\"rank_counts\": [\n    {\"rank\": 1, \"elements\": 20, \"nodes\": 0, ",
+        "\"halo_bytes_sent_per_step\": 24, \"halo_bytes_received_per_step\": 0, ",
+        "\"contact_pairs_per_step\": 2.5, \"contact_evaluations\": 4, ", "\"peak_rss_bytes\": 1048576}\n  ],\n",
+        "\"rank_counts\": {\"rank\": \"-\", \"elements\": \"count\", ", "\"peak_rss_bytes\": \"B\"}}\n}\n"})
     EXPECT_NE(text.find(expected), std::string::npos) << "summary.json lacks " << expected << "\n" << text;
   EXPECT_EQ(text.substr(text.size() - 5), "}}\n}\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json.tmp"));

@@ -30,8 +30,8 @@ const char* run_usage =
     "            (wall time, default 60; 0: none; with --quiet to log.txt only)\n"
     "  --list-columns   print every column history.csv can have, with its unit and definition\n"
     "            (history_columns.csv beside each history.csv lists a run's own), and exit\n"
-    "  --list-summary-keys   print every key of summary.json (energies.NAME, warnings[].NAME for the\n"
-    "            fields of those two) with its unit and definition, and exit\n"
+    "  --list-summary-keys   print every key of summary.json (energies.NAME, warnings[].NAME,\n"
+    "            rank_counts[].NAME for the fields of those) with its unit and definition, and exit\n"
     "  Exit codes: 0 ok, 2 bad input, 3 numerical failure, 130 interrupted (outputs valid).\n";
 
 const char* check_usage =
@@ -77,6 +77,7 @@ int run_command(const std::vector<std::string>& argv) {
     print_fields("", solver::summary_fields());
     print_fields("energies.", solver::energy_fields());
     print_fields("warnings[].", solver::warning_fields());
+    print_fields("rank_counts[].", solver::rank_count_fields());
     return 0;
   }
   const std::string deck_path = args.positional(0, "DECK");

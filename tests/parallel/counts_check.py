@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""summary.json's rank_counts (issue 25, scope 3), checked against what the run must have done.
+
+  counts_check.py TRIBEX DECK OUT --ranks N
+
+runs DECK (a contact deck) on N ranks and checks, from OUT/summary.json:
+  - one entry per rank, in rank order; elements sum to the model's; owned nodes sum to the model's
+    nodes, held nodes at least that (shared nodes counted by every holder);
+  - one rank: nodes and elements are the model's, nothing shared, no ghost face, 0 bytes exchanged;
+  - several ranks: every rank sends and receives halo bytes, 24 B (3 doubles) per shared node and
+    neighbour on 2 ranks, and the bytes sent over all ranks equal those received (halo and surface
+    gather); every rank gathers contact bytes; each contact face is owned by exactly one rank
+    (sum of contact_faces - ghost_faces = contact_faces) and some are ghosts;
+  - contact (one interaction pass): one evaluation per step plus the initial one, each a full search
+    or a reuse of the candidates, plus the set-up search; pairs evaluated > 0; the replicated contact does the same work on every rank (same pairs and searches);
+  - peak RSS > 0 and at the close >= at the end of set-up.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("tribex")
+    ap.add_argument("deck")
+    ap.add_argument("out")
+    ap.add_argument("--ranks", type=int, default=2)
+    a = ap.parse_args()
+    shutil.rmtree(a.out, ignore_errors=True)
+    cmd = [a.tribex, "run", a.deck, "-o", a.out, "--quiet"]
+    if a.ranks > 1:
+        cmd = ["mpiexec", "-n", str(a.ranks), "--oversubscribe"] + (["--allow-run-as-root"] if os.geteuid() == 0 else []) + cmd
+    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
+    if p.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
+    with open(os.path.join(a.out, "summary.json")) as f:
+        s = json.load(f)
+    rc = s["rank_counts"]
+    failures = []
+
+    def expect(ok, what):
+        if not ok:
+            failures.append(what)
+
+    n = a.ranks
+    expect(s["ranks"] == n and len(rc) == n, f"{len(rc)} entries for {s['ranks']} ranks, expected {n}")
+    expect([r["rank"] for r in rc] == list(range(n)), "entries not in rank order")
+    expect(sum(r["elements"] for r in rc) == s["elements"], "elements do not sum to the model's")
+    expect(sum(r["owned_nodes"] for r in rc) == s["nodes"], "owned nodes do not sum to the model's")
+    expect(sum(r["nodes"] for r in rc) >= s["nodes"], "held nodes fewer than the model's")
+    byte_keys = ["halo_bytes_sent_per_step", "halo_bytes_received_per_step", "contact_bytes_sent_per_step",
+                 "contact_bytes_received_per_step"]
+    if n == 1:
+        r = rc[0]
+        expect(r["nodes"] == s["nodes"] and r["elements"] == s["elements"], "serial: not the whole model")
+        expect(r["shared_nodes"] == 0 and r["ghost_faces"] == 0, "serial: shared nodes or ghost faces")
+        expect(all(r[k] == 0 for k in byte_keys), "serial: bytes exchanged")
+    else:
+        for r in rc:
+            expect(r["shared_nodes"] > 0, f"rank {r['rank']}: no shared node")
+            expect(all(r[k] > 0 for k in byte_keys), f"rank {r['rank']}: a byte count is 0")
+            if n == 2:
+                expect(r["halo_bytes_sent_per_step"] == 24 * r["shared_nodes"], f"rank {r['rank']}: halo bytes != 24 x shared")
+        for kind in ("halo", "contact"):
+            sent = sum(r[f"{kind}_bytes_sent_per_step"] for r in rc)
+            received = sum(r[f"{kind}_bytes_received_per_step"] for r in rc)
+            expect(sent == received, f"{kind}: {sent} B sent but {received} B received per step")
+        faces = rc[0]["contact_faces"]
+        expect(sum(r["contact_faces"] - r["ghost_faces"] for r in rc) == faces, "contact faces not owned once each")
+        expect(all(r["ghost_faces"] > 0 for r in rc), "a rank without ghost faces (surfaces not split)")
+    steps_run = s["steps"] - s["first_step"]
+    for r in rc:
+        expect(r["contact_evaluations"] == steps_run + 1, f"rank {r['rank']}: {r['contact_evaluations']} contact "
+               f"evaluations for {steps_run} steps")
+        expect(r["contact_pairs_per_step"] > 0 and r["searches"] >= 1, f"rank {r['rank']}: no contact work")
+        # One pass: each evaluation either searched or kept the candidates; plus the set-up search.
+        expect(r["searches"] + r["search_reuses"] == r["contact_evaluations"] + 1, f"rank {r['rank']}: searches + reuses "
+               f"!= evaluations + 1")
+        expect(r["searches"] == rc[0]["searches"], "replicated contact: searches differ")
+        expect(r["contact_pairs_per_step"] == rc[0]["contact_pairs_per_step"], "replicated contact: pairs differ")
+        expect(0 < r["peak_rss_setup_bytes"] <= r["peak_rss_bytes"], f"rank {r['rank']}: peak RSS")
+    for r in rc:
+        print(json.dumps(r))
+    if failures:
+        sys.exit("FAIL:\n  " + "\n  ".join(failures))
+    print(f"{n} rank(s): rank_counts consistent with the model ({s['elements']} elements, {s['nodes']} nodes)")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
