@@ -168,7 +168,10 @@ void DeckRun::loop() {
   element_plastic_strain_.assign(static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
   terminal_ = root_ && !options_.quiet && isatty(STDERR_FILENO);
   // Batch jobs and pipes get a heartbeat line instead of the terminal's carriage-return progress.
-  heartbeat_ = root_ && options_.heartbeat_seconds > 0 && !isatty(STDOUT_FILENO);
+  // Parallel runs always do: Open MPI gives the ranks a pseudo-terminal for stdout whatever mpiexec's
+  // own stdout is, so rank 0 cannot tell a terminal from a batch job's file (measured: a 2-rank run
+  // redirected to a file printed nothing for 8 minutes).
+  heartbeat_ = root_ && options_.heartbeat_seconds > 0 && (ranks_ > 1 || !isatty(STDOUT_FILENO));
   last_progress_ = last_heartbeat_ = Clock::now();
 
   fault_signal_point("outputs");
