@@ -39,7 +39,7 @@ struct ElementBlock {
   std::vector<double> mass_scale;  // [e]
   // mean quadrature only
   // hourglass vectors in factored form, gamma_aI = Gamma_aI - c_aj B0_jI (hex8/geometry.hpp):
-  std::vector<double> hg_coefficients;  // c_aj = (X_jJ Gamma_aJ)/V0, [4][3] per element, interleaved (1/m^2... m/m^3)
+  std::vector<double> hg_coefficients;  // c_aj = (X_jJ Gamma_aJ)/V0, [4][3] per element, interleaved (1/m^2)
   std::vector<double> hg_k;      // [e] kappa M (B.B)/(24 V): f = hg_k gamma gamma^T u   (N/m)
   std::vector<double> hg_c;      // [e] nu rho c sqrt(B.B/3)/8: f = hg_c gamma gamma^T v  (N s/m)
   // fully integrated only, interleaved:

@@ -29,8 +29,10 @@ inline T element_stable_step(const Material& mat, const ElementBlock& blk, int e
                              double step_factor) {
   T L = materials::load_lanes<T>(&blk.length0[e]);
   T J = T{} + 1.0;
-  T M = T{} + mat.wave_modulus(nullptr);
-  if (H) {
+  T M;
+  if (!H) {
+    M = T{} + mat.wave_modulus(nullptr);
+  } else {
     const T F[9] = {1.0 + H[0], H[1], H[2], H[3], 1.0 + H[4], H[5], H[6], H[7], 1.0 + H[8]};
     T C[9];
     J = materials::cofactor3(F, C);
