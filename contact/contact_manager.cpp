@@ -52,6 +52,25 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
   all_nodes_.erase(std::unique(all_nodes_.begin(), all_nodes_.end()), all_nodes_.end());
 }
 
+void ContactManager::set_unscaled_penalty_reference(std::vector<double> unscaled_mass, double unscaled_dt) {
+  penalty_mass_ = std::move(unscaled_mass);
+  penalty_dt_ = unscaled_dt;
+  for (auto& p : passes_)
+    if (p.mortar)
+      p.penalty_per_area =
+          std::min(mortar_penalty_per_area(surfaces_[p.slave], surfaces_[p.master], penalty_mass_, p.penalty_scale,
+                                           penalty_dt_),
+                   mortar_penalty_per_area(surfaces_[p.slave], surfaces_[p.master], mass_,
+                                           scaled_penalty_cap(p.penalty_scale), dt_ref_));
+}
+
+double ContactManager::penalty_stiffness(double scale, const ContactPoint& point) const {
+  const double k = scale * effective_mass(mass_, point) / (dt_ref_ * dt_ref_);
+  if (penalty_mass_.empty()) return k;
+  const double unscaled = scale * effective_mass(penalty_mass_, point) / (penalty_dt_ * penalty_dt_);
+  return std::min(unscaled, scaled_penalty_cap(scale) / scale * k);
+}
+
 void ContactManager::set_axis(const double point[3], const double direction[3]) {
   const double n = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
   for (int i = 0; i < 3; ++i) {

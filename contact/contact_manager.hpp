@@ -74,6 +74,16 @@ class ContactManager {
   /// pair on a fixed master sticks exactly. `prescribed` [node] nonzero for such nodes.
   void set_prescribed_nodes(std::vector<char> prescribed) { prescribed_ = std::move(prescribed); }
 
+  /// Mass-scaled runs (solver/mass_scaling.hpp, docs/theory.md 1.4.1): the penalty stiffness is taken
+  /// from the unscaled lumped masses `unscaled_mass` [node] and the unscaled step `unscaled_dt`, as the
+  /// same deck without mass scaling would have it, so that mass scaling leaves the contact stiffness
+  /// (and with it the penetration and contact area) unchanged; capped at k dt^2 / m_eff = max(s, 2) on
+  /// the scaled masses and step (half the explicit limit 4 of the node-face spring alone). Without
+  /// this call the penalty is s m_eff / dt_ref^2 on the masses given to the constructor.
+  void set_unscaled_penalty_reference(std::vector<double> unscaled_mass, double unscaled_dt);
+  /// The largest k dt^2 / m_eff of a mass-scaled run's penalty (the cap above) for penalty scale `s`.
+  static double scaled_penalty_cap(double s) { return s > 2.0 ? s : 2.0; }
+
   /// Contact axis the radii are measured from (radius_max, radius_edge, radius_pressure_fit): a point and a unit direction.
   void set_axis(const double point[3], const double direction[3]);
 
@@ -170,6 +180,12 @@ class ContactManager {
   std::vector<Pass> passes_;
   std::vector<double> mass_;  // a copy: the manager outlives the set-up model in parallel runs
   double dt_ref_;
+  // Mass-scaled runs only (set_unscaled_penalty_reference; empty otherwise): the unscaled lumped
+  // masses [node], kg, and step, s, the penalty is taken from.
+  std::vector<double> penalty_mass_;
+  double penalty_dt_ = 0.0;
+  /// k_p of a node-to-face point for penalty scale `scale`, N/m (docs/theory.md 5.2, 1.4.1).
+  double penalty_stiffness(double scale, const ContactPoint& point) const;
   BucketSearch bucket_;
   std::vector<double> traction_, status_;
   std::vector<char> prescribed_;  // [node] velocity prescribed in x, y, z (set_prescribed_nodes)

@@ -15,6 +15,7 @@
 #include "solver/afm_surface_mesh.hpp"
 #include "solver/contact_setup.hpp"
 #include "solver/errors.hpp"
+#include "solver/output/run_log.hpp"
 #include "solver/stable_time_step.hpp"
 #include "solver/surface_layer_blocks.hpp"
 
@@ -322,10 +323,13 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     for (const auto& name : region.history->displacement_node_sets) node_set(m, name, region.history->displacement_where);
   }
 
-  // Mass scaling before the contact: the penalty k_p = s m_eff / dt^2 then reads the scaled masses and
-  // the scaled step (docs/theory.md 1.4.1).
+  // Mass scaling before the contact, which is built on the scaled masses and step (the junction's slip
+  // prediction, the rough-surface bounds) but takes its penalty from the unscaled ones, kept here
+  // (docs/theory.md 1.4.1).
+  std::vector<double> unscaled_mass;
   if (region.mass_scaling) {
     const auto& tc = deck.procedure.time_control;
+    if (region.contact) unscaled_mass = model.mass;
     model.mass_scaling = apply_mass_scaling(*region.mass_scaling, tc.time_step_scale_factor,
                                             tc.maximum_time_step.value_or(INFINITY), model);
   }
@@ -334,6 +338,14 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     const double dt = std::min(tc.time_step_scale_factor * compute_stable_time_step(model, nullptr).dt,
                                tc.maximum_time_step.value_or(INFINITY));
     model.contact = build_contact(*region.contact, model, dt, &model.preflight, &model.setup);
+    if (model.mass_scaling.active) {
+      model.contact->set_unscaled_penalty_reference(std::move(unscaled_mass), model.mass_scaling.unscaled_time_step);
+      model.preflight.push_back(
+          format("  contact penalty from the unscaled masses and step %.6g s (mass scaling), capped at "
+                 "k dt^2 / m_eff = %.3g on the scaled ones",
+                 model.mass_scaling.unscaled_time_step,
+                 contact::ContactManager::scaled_penalty_cap(region.contact->penalty_scale_factor)));
+    }
   }
   model.domain.init_serial(nn, m.element_count());
   return model;

@@ -49,7 +49,7 @@ void ContactManager::node_to_face_with(const Law& law, Pass& p, const StepInputs
       if (!best.usable || best.proj.gap >= 0.0) continue;
       // A node deeper than the search margin is not a contact but the far side of a thin body.
       if (-best.proj.gap > p.margin) continue;
-      const double kp = p.penalty_scale * view.effective_mass(point) / (dt_ref_ * dt_ref_);
+      const double kp = penalty_stiffness(p.penalty_scale, point);
       // f_s = -k_p g n (g < 0 pushes the slave node out along the master's outward normal).
       const double fn_mag = -kp * best.proj.gap * p.factor;
       const double* n = best.proj.normal;

@@ -47,6 +47,15 @@ struct TangentialPairs {
   void record(const ContactPoint& p);
 };
 
+/// m_eff = m_s m_M / (m_s + m_M), 1/m_M = sum_a N_a^2 / m_a (docs/theory.md 5.2), kg, from the lumped
+/// masses `mass` [node].
+inline double effective_mass(const std::vector<double>& mass, const ContactPoint& p) {
+  double inv_mM = 0.0;
+  for (int a = 0; a < 4; ++a) inv_mM += p.shape[a] * p.shape[a] / mass[p.face_nodes[a]];
+  const double ms = mass[p.node], mM = 1.0 / inv_mM;
+  return ms * mM / (ms + mM);
+}
+
 struct PassView {
   const ContactSurface& slave;
   const ContactSurface& master;
@@ -81,14 +90,9 @@ struct PassView {
   }
   /// The node in contact: status, contact area (unless the law counts it otherwise), node count, radius.
   void count_contact(const ContactPoint& p, bool count_area) const;
-  /// m_eff = m_s m_M / (m_s + m_M), 1/m_M = sum_a N_a^2 / m_a (docs/theory.md 5.2), kg.
   bool is_prescribed(int node) const { return !prescribed.empty() && prescribed[node]; }
-  double effective_mass(const ContactPoint& p) const {
-    double inv_mM = 0.0;
-    for (int a = 0; a < 4; ++a) inv_mM += p.shape[a] * p.shape[a] / mass[p.face_nodes[a]];
-    const double ms = mass[p.node], mM = 1.0 / inv_mM;
-    return ms * mM / (ms + mM);
-  }
+  /// The point's m_eff from the run's (possibly mass-scaled) masses, kg.
+  double effective_mass(const ContactPoint& p) const { return contact::effective_mass(mass, p); }
 };
 
 }  // namespace tribex::contact

@@ -16,6 +16,11 @@ namespace {
 // least this fraction of its peak. Before contact builds up (a driven tip approaching, the first
 // rings) and after unloading, kinetic energy is legitimately comparable to a small internal energy.
 constexpr double loaded_fraction = 0.1;
+// The mid-run stop of `maximum kinetic energy ratio`: the limit exceeded at every sample over this
+// fraction of the expected run, where the internal energy is at least `loaded_fraction` of its peak so far.
+// A short excess (the first contact's ring, where the peak so far is the current tiny internal energy)
+// does not stop the run; the end-of-run scan still judges every loaded sample against the whole run's peak.
+constexpr double sustained_fraction = 0.05;
 constexpr std::size_t sample_width = 4;  // step, t, kinetic, internal
 constexpr long target_samples = 4096;
 
@@ -94,6 +99,7 @@ RunGuards::RunGuards(const inputs::GuardSpec& spec, SetupFindings setup, long ex
       one_point_contact_(std::move(setup.one_point_contact)) {
   warnings_.reserve(warnings_.size() + 8);  // the run-time kinds, each at most once
   if (spec_.quasi_static) {
+    sustained_steps_ = std::max(1L, static_cast<long>(std::ceil(sustained_fraction * double(expected_steps))));
     stride_ = std::max(1L, expected_steps / target_samples);
     capacity_ = sample_width * 2 * static_cast<std::size_t>(target_samples);
     samples_.reserve(capacity_);
@@ -158,7 +164,29 @@ void RunGuards::observe(long step, double t, const Energies& energies, const con
     }
     const double deformation_kinetic = std::max(0.0, energies.kinetic - translational_kinetic);
     samples_.insert(samples_.end(), {double(step), t, deformation_kinetic, energies.internal});
+    if (spec_.kinetic_energy_limit) watch_sustained_kinetic(step, t, deformation_kinetic, energies.internal);
   }
+}
+
+void RunGuards::watch_sustained_kinetic(long step, double t, double kinetic, double internal) {
+  running_peak_ = std::max(running_peak_, internal);
+  const bool loaded = internal > 0.0 && internal >= loaded_fraction * running_peak_;
+  if (!loaded || !(kinetic / internal > *spec_.kinetic_energy_limit)) {
+    excess_since_ = -1;
+    return;
+  }
+  if (excess_since_ < 0) {
+    excess_since_ = step;
+    excess_since_time_ = t;
+  }
+  if (step - excess_since_ < sustained_steps_) return;
+  throw NumericalFailure(format(
+      "kinetic energy (less the blocks' mean translation) is %.3g %% of internal energy at step %ld, t = %.6g s, and "
+      "has been above 'maximum kinetic energy ratio' %.3g %% of 'begin mass scaling' since step %ld, t = %.6g s (%ld "
+      "steps, %.0f %% of the run, where the internal energy is at least %.0f %% of its peak so far): the added mass "
+      "made the run dynamic; lower the target time step, drive slower or damp",
+      100 * kinetic / internal, step, t, 100 * *spec_.kinetic_energy_limit, excess_since_, excess_since_time_,
+      step - excess_since_, 100 * sustained_fraction, 100 * loaded_fraction));
 }
 
 std::string RunGuards::finish() {
@@ -205,6 +233,7 @@ void RunGuards::save(StateArchive& archive) const {
   archive.put("guards_warnings", flat);
   archive.put("guards_samples", samples_);
   archive.put("guards_stride", double(stride_));
+  archive.put("guards_running_peak", std::vector<double>{running_peak_, double(excess_since_), excess_since_time_});
 }
 
 void RunGuards::restore(const StateArchive& archive) {
@@ -227,6 +256,15 @@ void RunGuards::restore(const StateArchive& archive) {
   samples_.reserve(std::max(capacity_, samples_.size()));
   capacity_ = std::max(capacity_, samples_.capacity());
   stride_ = static_cast<long>(archive.scalar("guards_stride"));
+  if (archive.has("guards_running_peak")) {
+    const auto& peak = archive.array("guards_running_peak");
+    if (peak.size() != 3)
+      throw SetupError("restart file: 'guards_running_peak' holds " + std::to_string(peak.size()) +
+                       " values, not the 3 this tribex keeps");
+    running_peak_ = peak[0];
+    excess_since_ = static_cast<long>(peak[1]);
+    excess_since_time_ = peak[2];
+  }
 }
 
 }  // namespace tribex::solver

@@ -61,6 +61,8 @@ class RunGuards {
   };
   void watch(Watch& w, long step, double t, double value, int node);
   std::string scan_quasi_static();
+  /// The mid-run stop of `maximum kinetic energy ratio` (run_guards.cpp, sustained_fraction); throws.
+  void watch_sustained_kinetic(long step, double t, double kinetic, double internal);
   RunWarning& entry(const Watch& w) { return warnings_[static_cast<std::size_t>(w.entry)]; }
   std::string text(const RunWarning& w) const { return describe(w, one_point_contact_); }
 
@@ -73,6 +75,12 @@ class RunGuards {
   std::vector<double> samples_;
   std::size_t capacity_ = 0;
   long stride_ = 1;
+  // The mid-run kinetic-energy stop: the peak internal energy so far, J; the step and time the current
+  // unbroken excess began (-1: none); its length that stops the run, steps.
+  double running_peak_ = 0.0;
+  long excess_since_ = -1;
+  double excess_since_time_ = 0.0;
+  long sustained_steps_ = 1;
 };
 
 

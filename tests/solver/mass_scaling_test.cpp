@@ -148,35 +148,63 @@ TEST(MassScaling, SetUpErrorsNameTheKeyAndTheFix) {
   EXPECT_THROW(build_model(capped), SetupError);  // the target is above 'maximum time step'
 }
 
-TEST(MassScaling, KineticEnergyLimitFailsALoadedQuasiStaticRun) {
+// Load to 0.5 J and unload over 1000 steps; kinetic energy 0.01 x internal while loaded, a start
+// transient (kinetic 100 x internal for 20 steps, as at a first contact) and kinetic far above internal
+// after the unload; from step 600, `ratio` x internal for `span` steps.
+static std::pair<std::string, std::vector<RunWarning>> quasi_static_run(double ratio, long span, long* stopped_at = nullptr,
+                                                                        std::string* stop_message = nullptr) {
   inputs::GuardSpec spec;
   spec.quasi_static = true;
   spec.kinetic_energy_limit = 0.1;
-  const auto quiet = [](const RunWarning&) {};
-  // Load to 0.5 J and unload; kinetic energy `ratio` x internal while loaded from step 600, a start
-  // transient (kinetic 100 x internal for 20 steps) and kinetic far above internal after the unload.
-  const auto run = [&](double ratio) {
-    RunGuards g(spec, SetupFindings{}, 1000, quiet);
-    for (long n = 0; n < 1000; ++n) {
-      Energies e;
-      e.internal = n < 500 ? 1e-3 * n : 1e-3 * (1000 - n);
-      e.kinetic = n < 20 ? 100 * e.internal : n < 600 ? 0.01 * e.internal : n < 960 ? ratio * e.internal : 1.0;
-      e.external_work = e.kinetic + e.internal;
+  RunGuards g(spec, SetupFindings{}, 1000, [](const RunWarning&) {});
+  for (long n = 0; n < 1000; ++n) {
+    Energies e;
+    e.internal = n < 500 ? 1e-3 * n : 1e-3 * (1000 - n);
+    e.kinetic = n < 20 ? 100 * e.internal : (n >= 600 && n < 600 + span) ? ratio * e.internal : n < 960 ? 0.01 * e.internal : 1.0;
+    e.external_work = e.kinetic + e.internal;
+    try {
       g.observe(n, 1e-12 * n, e, nullptr);
+    } catch (const NumericalFailure& f) {
+      if (stopped_at) *stopped_at = n;
+      if (stop_message) *stop_message = f.what();
+      return {g.finish(), g.warnings()};
     }
-    return std::make_pair(g.finish(), g.warnings());
-  };
-  const auto [fails, warned] = run(0.3);  // 30 % while loaded: the warning (5 %) and the limit (10 %)
+  }
+  return {g.finish(), g.warnings()};
+}
+
+TEST(MassScaling, KineticEnergyLimitFailsALoadedQuasiStaticRunAtTheEnd) {
+  // 30 % for 30 steps (3 % of the run, under the 5 % that stops it mid-run): judged at the end.
+  long stopped = -1;
+  const auto [fails, warned] = quasi_static_run(0.3, 30, &stopped);
+  EXPECT_EQ(stopped, -1) << "a 30-step excess stopped the run";
   EXPECT_NE(fails.find("reached 30 % of internal energy at step 600"), std::string::npos) << fails;
   EXPECT_NE(fails.find("above 'maximum kinetic energy ratio' 10 %"), std::string::npos) << fails;
   ASSERT_EQ(warned.size(), 1u);
   EXPECT_STREQ(kind_name(warned[0].kind), "kinetic_energy");
-  const auto [passes, warned8] = run(0.08);  // 8 %: warned (above 5 %), within the limit
+  const auto [passes, warned8] = quasi_static_run(0.08, 360, &stopped);  // 8 %: warned (above 5 %), within the limit
+  EXPECT_EQ(stopped, -1);
   EXPECT_TRUE(passes.empty()) << passes;
   EXPECT_EQ(warned8.size(), 1u);
-  const auto [quiet2, none] = run(0.02);  // 2 %: neither (the transients are outside the loaded window)
+  const auto [quiet2, none] = quasi_static_run(0.02, 360, &stopped);  // 2 %: neither (transients outside the window)
+  EXPECT_EQ(stopped, -1);
   EXPECT_TRUE(quiet2.empty()) << quiet2;
   EXPECT_TRUE(none.empty());
+}
+
+TEST(MassScaling, KineticEnergyLimitStopsASustainedExcessMidRun) {
+  // 30 % from step 600 on: stopped once the excess has lasted 5 % of the 1000 expected steps (step 650),
+  // not at the start transient (100 x for 20 steps, 2 %), and the end scan still reports it.
+  long stopped = -1;
+  std::string message;
+  const auto [fails, warned] = quasi_static_run(0.3, 360, &stopped, &message);
+  EXPECT_EQ(stopped, 650);
+  EXPECT_NE(message.find("is 30 % of internal energy at step 650"), std::string::npos) << message;
+  EXPECT_NE(message.find("above 'maximum kinetic energy ratio' 10 % of 'begin mass scaling' since step 600"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(fails.find("reached 30 % of internal energy at step 600"), std::string::npos) << fails;
+  ASSERT_EQ(warned.size(), 1u);
 }
 
 }  // namespace

@@ -19,8 +19,9 @@ friction, the FE contact radius sqrt(A/pi) and the DMT radius of a 50 nm sphere 
 load (a reference only for case (a): the AFM surface is curved and tilted under the tip).
 
 usage: afm_sliding.py [--tribex build/bin/tribex] [--variant reduced|full] [--out DIR] [--plot PNG]
-                      [--no-run] [--case a_si|b_sam]
-  (--no-run: check outputs already in DIR/<deck>_output; --case: only that case)
+                      [--no-run] [--case a_si|b_sam] [--mass-scaled] [--against DIR]
+  (--no-run: check outputs already in DIR/<deck>_output; --case: only that case; --mass-scaled: the
+  *_mass_scaled.i decks; --against: P, F and sqrt(A/pi) within 1 % of the unscaled outputs in DIR)
 """
 import argparse
 import json
@@ -88,7 +89,21 @@ def check_case(folder, label, tau):
     base_failure = base_reaction_failure(w, "y")
     if base_failure:
         failures.append(f"{label}: {base_failure}")
-    return {"rows": rows, "a_fe": a_fe, "F": F}, failures
+    return {"rows": rows, "a_fe": a_fe, "F": F, "P_hold": P_hold}, failures
+
+
+def compare_runs(res, ref, label, tolerance=0.01):
+    """A mass-scaled run against the unscaled one (issue 24: friction, contact radius and the load in
+    the hold within 1 %). Returns the failures."""
+    failures = []
+    for key, name, unit in (("P_hold", "P in the hold", "nN"), ("F", "F (steady sliding)", "nN"),
+                            ("a_fe", "sqrt(A/pi)", "nm")):
+        d = res[key] / ref[key] - 1
+        print(f"  against the reference run: {name} {res[key] * 1e9:.3f} vs {ref[key] * 1e9:.3f} {unit}: "
+              f"{d:+.2%} (tolerance {tolerance:.0%})")
+        if abs(d) > tolerance:
+            failures.append(f"{label}: {name} differs from the reference run by {d:+.2%} (> {tolerance:.0%})")
+    return failures
 
 
 def main():
@@ -101,6 +116,9 @@ def main():
     ap.add_argument("--case", choices=[c[0] for c in CASES], help="only this case (a full case runs for hours)")
     ap.add_argument("--mass-scaled", action="store_true",
                     help="run the *_mass_scaled.i decks (make_decks.py --mass-scaling F writes them)")
+    ap.add_argument("--against", metavar="DIR",
+                    help="also compare P in the hold, F and sqrt(A/pi) with the unscaled decks' outputs in DIR "
+                         "(DIR/<deck>_output, e.g. an earlier run's --out), within 1 %%")
     a = ap.parse_args()
     cases = [c for c in CASES if a.case in (None, c[0])]
     os.makedirs(a.out, exist_ok=True)
@@ -114,6 +132,10 @@ def main():
         failures += fail
         if res:
             results[case] = res
+        if res and a.against:
+            ref, ref_fail = check_case(os.path.join(a.against, f"afm_sliding_{a.variant}_{case}_output"),
+                                       label + " (reference)", tau)
+            failures += ref_fail + (compare_runs(res, ref, label) if ref else [])
     if len(results) == 2:
         ra, rb = results["a_si"]["a_fe"], results["b_sam"]["a_fe"]
         print(f"contact radius: SAM {rb * 1e9:.3f} nm vs Si {ra * 1e9:.3f} nm (ratio {rb / ra:.3f}; expected > 1)")
