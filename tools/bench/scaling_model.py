@@ -1,0 +1,107 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Scaling model of a parallel tribex run (issue 25): time and memory per rank per step against the
+rank count, for today's replicated set-up and contact and for the distributed design of issue 25,
+from measured inputs (tools/bench/README.md "Scaling model to 1,024 ranks" lists them and their
+commands). A model, not a measurement: it says where each design stops scaling and why.
+
+Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nodes per cube side):
+  elements      E/N x c_el                                   (c_el: ns per element per step)
+  halo          6 neighbours x (latency + 24 B x (K / N^(1/3))^2 / bandwidth)   (cube subdomains)
+  contact       replicated: S x c_node on every rank; distributed: S / min(N, N_c) x c_node, N_c the
+                ranks a contact-weighted partition spreads the zone over (S / 16 by default)
+  surface data  replicated: MPI_Allgatherv of 72 B x all surface nodes to every rank
+                (recursive doubling: log2 N latencies + the whole surface over the link);
+                distributed: ghost faces within the margin from <= 8 neighbouring contact ranks
+  reductions    the stable step every 10 steps: one MPI_Allreduce, log2 N latencies
+Memory per rank: replicated set-up holds the whole model on every rank (M_1, measured);
+distributed: (M_1 - M_0) / N + M_0, M_0 the part that does not divide (code, libraries, MPI buffers).
+
+usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--ns-element C] [--ns-slave-node C]
+                        [--serial-rss-mb M] [--surface-nodes NS] [--latency-us L] [--bandwidth-gbs B]
+                        [--rank-memory-gb G] [--csv FILE]
+"""
+import argparse
+import csv
+import math
+import sys
+
+RANKS = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]
+
+
+def step_costs(n, a):
+    """Seconds per step per rank of each part, and memory per rank (bytes), for both designs."""
+    lat, bw = a.latency_us * 1e-6, a.bandwidth_gbs * 1e9
+    elements = a.elements / n * a.ns_element * 1e-9
+    side = round(a.elements ** (1 / 3)) + 1  # nodes per side of the cube block
+    halo = 0.0 if n == 1 else min(6, 2 * math.ceil(math.log2(n))) * (lat + 24 * (side / n ** (1 / 3)) ** 2 / bw)
+    reduce = 0.0 if n == 1 else math.ceil(math.log2(n)) * lat / 10
+    contact_rep = a.slave_nodes * a.ns_slave_node * 1e-9
+    gather = 0.0 if n == 1 else math.ceil(math.log2(n)) * lat + 72 * a.surface_nodes / bw
+    # Distributed: the contact zone shared by at most n ranks (a contact-weighted partition), each
+    # taking its slave nodes and the ghost faces of at most 8 neighbours within the margin (a strip
+    # of the zone's share's perimeter, 4 sqrt(S/n) nodes x 72 B).
+    share = a.slave_nodes / min(n, max(1.0, a.slave_nodes / a.slave_nodes_per_rank))
+    contact_dist = share * a.ns_slave_node * 1e-9
+    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 4 * math.sqrt(share) * 72 / bw
+    mem_rep = a.serial_rss_mb * 1e6
+    mem_dist = (a.serial_rss_mb - a.fixed_rss_mb) * 1e6 / n + a.fixed_rss_mb * 1e6
+    rep = {"elements": elements, "halo": halo, "reductions": reduce, "contact": contact_rep, "surface": gather}
+    dist = {"elements": elements, "halo": halo, "reductions": reduce, "contact": contact_dist, "surface": ghosts}
+    return rep, dist, mem_rep, mem_dist
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--elements", type=float, default=1_009_000, help="E (counts_indenter.i)")
+    ap.add_argument("--slave-nodes", type=float, default=961, help="S: slave nodes in the contact zone")
+    ap.add_argument("--slave-nodes-per-rank", type=float, default=16,
+                    help="the fewest slave nodes a contact-weighted partition gives a contact rank")
+    ap.add_argument("--surface-nodes", type=float, default=11_162, help="contact surface nodes (both surfaces)")
+    ap.add_argument("--ns-element", type=float, default=85.0, help="c_el, ns per element per step")
+    ap.add_argument("--ns-slave-node", type=float, default=340.0, help="c_node, ns per slave node per step")
+    ap.add_argument("--serial-rss-mb", type=float, default=850.0, help="peak RSS of a rank holding the whole model, MB")
+    ap.add_argument("--fixed-rss-mb", type=float, default=60.0, help="per-rank memory that does not divide, MB")
+    ap.add_argument("--latency-us", type=float, default=1.5, help="message latency, us (InfiniBand class)")
+    ap.add_argument("--bandwidth-gbs", type=float, default=12.0, help="link bandwidth per rank pair, GB/s")
+    ap.add_argument("--rank-memory-gb", type=float, default=4.0, help="memory per rank of the cluster, GB")
+    ap.add_argument("--csv", help="write the table as CSV (columns: see the header row)")
+    a = ap.parse_args()
+    rows = []
+    t1 = None
+    for n in RANKS:
+        rep, dist, mem_rep, mem_dist = step_costs(n, a)
+        t_rep, t_dist = sum(rep.values()), sum(dist.values())
+        if t1 is None:
+            t1 = t_rep
+        rows.append({"ranks": n, "replicated_us": 1e6 * t_rep, "replicated_contact_us": 1e6 * (rep["contact"] + rep["surface"]),
+                     "replicated_efficiency": t1 / (n * t_rep), "replicated_rss_mb": mem_rep / 1e6,
+                     "distributed_us": 1e6 * t_dist, "distributed_contact_us": 1e6 * (dist["contact"] + dist["surface"]),
+                     "distributed_efficiency": t1 / (n * t_dist), "distributed_rss_mb": mem_dist / 1e6})
+    print(f"model: {a.elements:.0f} elements, {a.slave_nodes:.0f} slave nodes in contact, {a.ns_element:g} ns/element/step, "
+          f"{a.ns_slave_node:g} ns/slave node/step, latency {a.latency_us:g} us, {a.bandwidth_gbs:g} GB/s")
+    print(f"{'ranks':>6} | {'replicated us/step':>18} {'contact+gather':>14} {'eff':>6} {'RSS MB':>7} | "
+          f"{'distributed us/step':>19} {'contact+ghosts':>14} {'eff':>6} {'RSS MB':>7}")
+    for r in rows:
+        print(f"{r['ranks']:>6} | {r['replicated_us']:>18.1f} {r['replicated_contact_us']:>14.1f} "
+              f"{r['replicated_efficiency']:>6.1%} {r['replicated_rss_mb']:>7.0f} | {r['distributed_us']:>19.1f} "
+              f"{r['distributed_contact_us']:>14.1f} {r['distributed_efficiency']:>6.1%} {r['distributed_rss_mb']:>7.0f}")
+    # Where each design stops: efficiency below 50 %, and the largest model that fits a rank.
+    for design in ("replicated", "distributed"):
+        below = [r["ranks"] for r in rows if r[f"{design}_efficiency"] < 0.5]
+        print(f"{design}: parallel efficiency below 50 % from {below[0]} ranks" if below else
+              f"{design}: parallel efficiency at least 50 % up to {RANKS[-1]} ranks")
+    per_element = a.serial_rss_mb * 1e6 / a.elements
+    print(f"largest model that fits {a.rank_memory_gb:g} GB per rank: replicated "
+          f"{a.rank_memory_gb * 1e9 / per_element / 1e6:.1f} M elements at any rank count; distributed "
+          f"{(a.rank_memory_gb * 1e3 - a.fixed_rss_mb) * 1e6 / per_element * RANKS[-1] / 1e9:.1f} G elements at {RANKS[-1]} ranks")
+    if a.csv:
+        with open(a.csv, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0]))
+            w.writeheader()
+            w.writerows(rows)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
