@@ -13,7 +13,9 @@ Checked for each case (all from history.csv; the tolerances are stated, not tune
     tanh(V / v_ref) = tanh(75)) within 2 % at every history row, and its mean within 1 %;
   * sign: the substrate's base reaction in y opposes the friction that drags the substrate in +y
     (mean base reaction y < -0.5 F);
-  * (b) against (a): the compliant SAM gives the larger contact radius (the report's Fig. 3.9).
+  * (b) against (a): the compliant SAM gives the larger contact radius (the report's Fig. 3.9);
+  * full variant: F and sqrt(A/pi) in 10 nm bins of sliding within 1 % of the fully integrated,
+    unscaled runs' table (FULL_BINS, README.md), so that a faster set-up shows it keeps the answer.
 Printed: wall time, elements, steps and ns per element per step (from summary.json), the mean
 friction, the FE contact radius sqrt(A/pi) and the DMT radius of a 50 nm sphere on a flat at the same
 load (a reference only for case (a): the AFM surface is curved and tilted under the tip).
@@ -44,6 +46,14 @@ STEADY_FROM = 1.0e-9               # m of sliding
 R_TIP = 50e-9
 W = 0.05                           # J/m^2
 CASES = [("a_si", "(a) Si on Si", 195e6), ("b_sam", "(b) Si on 2 nm SAM", 194e6)]
+BIN = 10e-9                        # m: the bin table's width of sliding position
+# The full variant's bin table of the fully integrated, unscaled runs (README.md "Results": case (a)
+# 2026-11-21, case (b) 2026-11-22, before issue 22 made the SAM track the slave, which moved reduced (b)'s
+# F by -0.6 %; to 3 digits, and how their first bin was cut is not recorded, here from 1 nm): F (nN) and
+# sqrt(A/pi) (nm) per 10 nm of sliding, the reference a faster set-up (mixed blocks, mass scaling) must
+# meet within 1 % (issue 24).
+FULL_BINS = {"a_si": ([25.8, 25.9, 25.2, 24.1, 23.1, 22.1, 21.8], [6.49, 6.50, 6.42, 6.27, 6.14, 6.01, 5.96]),
+             "b_sam": ([52.0, 51.9, 50.9, 49.3, 47.5, 46.1, 45.7], [9.25, 9.24, 9.15, 9.00, 8.84, 8.71, 8.67])}
 
 
 def dmt_radius_si(P):
@@ -92,6 +102,35 @@ def check_case(folder, label, tau):
     return {"rows": rows, "a_fe": a_fe, "F": F, "P_hold": P_hold}, failures
 
 
+def bin_table(rows, case, label, reference=None, tolerance=0.01):
+    """Means of F, sqrt(A/pi) and P per 10 nm of sliding position (the steady rows, from 1 nm: the first
+    bin is 1-10 nm), printed; with `reference` ((F nN list, radius nm list)) each bin against it.
+    Returns the failures."""
+    failures = []
+    end = max(r["tip_top_displacement_y"] for r in rows)
+    print(f"  {label} in {BIN * 1e9:g} nm bins of sliding position (F nN, sqrt(A/pi) nm, P nN"
+          + (f"; against the reference, tolerance {tolerance:.0%})" if reference else ")"))
+    k = 0
+    while k * BIN < end - 1e-12:
+        w = steady_window(rows, "y", max(STEADY_FROM, k * BIN), (k + 1) * BIN)
+        if w is None:
+            break
+        F, a_fe = w["F"] * 1e9, math.sqrt(w["area"] / math.pi) * 1e9
+        line = f"    {k * BIN * 1e9:4.0f}-{(k + 1) * BIN * 1e9:3.0f} nm: F {F:6.2f}, sqrt(A/pi) {a_fe:5.3f}, P {w['P'] * 1e9:6.1f}"
+        if reference and k < len(reference[0]):
+            dF, da = F / reference[0][k] - 1, a_fe / reference[1][k] - 1
+            line += f" | reference {reference[0][k]:.1f}, {reference[1][k]:.2f}: {dF:+.2%}, {da:+.2%}"
+            for d, what in ((dF, "F"), (da, "sqrt(A/pi)")):
+                if abs(d) > tolerance:
+                    failures.append(f"{label}: {what} in the {k * BIN * 1e9:.0f}-{(k + 1) * BIN * 1e9:.0f} nm bin differs "
+                                    f"from the reference by {d:+.2%} (> {tolerance:.0%})")
+        print(line)
+        k += 1
+    if reference and k < len(reference[0]):
+        failures.append(f"{label}: {k} bins of sliding, the reference has {len(reference[0])}")
+    return failures
+
+
 def compare_runs(res, ref, label, tolerance=0.01):
     """A mass-scaled run against the unscaled one (issue 24: friction, contact radius and the load in
     the hold within 1 %). Returns the failures."""
@@ -132,6 +171,8 @@ def main():
         failures += fail
         if res:
             results[case] = res
+        if res and a.variant == "full":
+            failures += bin_table(res["rows"], case, label, FULL_BINS[case])
         if res and a.against:
             ref, ref_fail = check_case(os.path.join(a.against, f"afm_sliding_{a.variant}_{case}_output"),
                                        label + " (reference)", tau)
