@@ -137,6 +137,10 @@ begin sierra hertz_coarse_mass_scaled
           surfaces = tip flat
         end interaction sphere_flat
       end contact definition tip_on_flat
+      # A restart file at a stop (CTest verify_hertz_coarse_mass_scaled_restart resumes one).
+      begin restart output
+        wall time increment = 600 s
+      end restart output
       begin history output hist
         time increment = 3 ps
         reaction force = tip_top substrate_bottom
