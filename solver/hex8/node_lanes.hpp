@@ -103,8 +103,8 @@ inline void gather_nodal(const double* a, const int* const nodes[], materials::d
 }
 
 inline void subtract_nodal(double* f, const int* const nodes[], const materials::double8 in[24], unsigned lanes) {
-  // [lane][node] (x, y) and z, taken out of the registers in the sizes they are read back in
-  // (a 16-byte load from a 64-byte store would have to wait for the store to reach the cache)
+  // [lane][node] (x, y) and z, taken out of the registers in the sizes they are read back in, as at
+  // four lanes (storing whole registers and reading 16-byte pieces back measured the same)
   materials::double2 xy[8][8];
   double z[8][8];
   for (int I = 0; I < 8; ++I) {

@@ -161,6 +161,29 @@ INSTANTIATE_TEST_SUITE_P(
              (std::get<1>(p.param) == inputs::ElementFormulation::mean_quadrature ? "MeanQuadrature" : "FullyIntegrated");
     });
 
+// 125 elements at eight lanes: 15 groups of eight, then the four-lane tail (the AVX-512 file's own
+// double4 batch) and one alone; bitwise the two-lane pass, both formulations.
+TEST(EightLanes, TailOfFourAndOneIsBitwiseTheTwoLanePass) {
+  for (auto formulation : {inputs::ElementFormulation::mean_quadrature, inputs::ElementFormulation::fully_integrated}) {
+    Box box = distorted_box("neo_hookean", formulation, 5);
+    const int nodes = box.mesh.node_count();
+    std::vector<double> u(3 * nodes), v(3 * nodes);
+    for (int k = 0; k < 3 * nodes; ++k) {
+      u[k] = 1e-11 * std::sin(0.7 * k);
+      v[k] = 30.0 * std::cos(1.1 * k);
+    }
+    const auto& blk = box.model.blocks[0];
+    ASSERT_EQ(blk.count, 125);
+    const PassResult two = run_pass(blk, box.mesh, u, v, 2);
+    const PassResult eight = run_pass(blk, box.mesh, u, v, 8);
+    for (int k = 0; k < 3 * nodes; ++k) EXPECT_EQ(two.force[k], eight.force[k]) << "force component " << k;
+    for (std::size_t k = 0; k < two.stress.size(); ++k) EXPECT_EQ(two.stress[k], eight.stress[k]) << "stress " << k;
+    EXPECT_EQ(two.totals.strain_energy, eight.totals.strain_energy);
+    EXPECT_EQ(two.totals.viscous_power, eight.totals.viscous_power);
+    EXPECT_GT(two.totals.strain_energy, 0.0);
+  }
+}
+
 TEST(FullyIntegratedLanes, InvertedElementInALaterLaneIsReported) {
   for (int lanes : {2, 4, 8}) {
     Box box = distorted_box("neo_hookean", inputs::ElementFormulation::fully_integrated, 2);
