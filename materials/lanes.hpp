@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// One element, two per SSE register, or four per AVX2 register (double4 below). The fully integrated kernel runs the same code for a lone
+// One element, two per SSE register, four per AVX2 register or eight per AVX-512 register (double4,
+// double8 below). The fully integrated kernel runs the same code for a lone
 // element (T = double) and for a pair (T = double2, GCC's vector extension: + - * / act lane by
 // lane and a double operand is broadcast). The arithmetic is IEEE lane by lane and x86-64-v2 has
 // no fused multiply-add, so an element's forces are bitwise the same alone or in a pair (tested:
@@ -13,6 +14,9 @@
 #include <cmath>
 #include <cstring>
 
+#ifdef __AVX512F__
+#include <immintrin.h>
+#endif
 #if defined(__x86_64__) && defined(__GLIBC__)
 #include <emmintrin.h>
 extern "C" __m128d _ZGVbN2v_log(__m128d);  // NOLINT(bugprone-reserved-identifier): glibc's ABI name
@@ -38,8 +42,10 @@ inline T from_lanes(F&& f) {
     return f(0);
   else if constexpr (lane_count<T> == 2)
     return T{f(0), f(1)};
-  else
+  else if constexpr (lane_count<T> == 4)
     return T{f(0), f(1), f(2), f(3)};
+  else
+    return T{f(0), f(1), f(2), f(3), f(4), f(5), f(6), f(7)};
 }
 
 /// lane_count<T> consecutive doubles from p (a pair-interleaved array's two lanes).
@@ -108,6 +114,38 @@ inline double4 lane_log(double4 x) {
   const double2 lo = lane_log(double2{x[0], x[1]}), hi = lane_log(double2{x[2], x[3]});
   return double4{lo[0], lo[1], hi[0], hi[1]};
 }
+#endif
+
+// Eight elements per AVX-512 register, likewise only where the translation unit is compiled for
+// AVX-512 (solver/hex8/avx512_kernels.cpp, built with -mavx512f -ffp-contract=off: AVX-512F has
+// fused multiply-add of its own, so -mno-fma alone would not keep GCC from contracting a * b + c).
+// sqrt is correctly rounded, so the vector instruction gives each lane what std::sqrt gives; the
+// logarithm is the two-lane routine four times, as for double4.
+#ifdef __AVX512F__
+using double8 = double __attribute__((vector_size(64)));
+template <>
+inline constexpr int lane_count<double8> = 8;
+inline double lane(double8 x, int l) { return x[l]; }
+inline double8 negative_part(double8 x) { return x < double8{} ? x : double8{}; }
+inline double8 positive_part(double8 x) { return x > double8{} ? x : double8{}; }
+inline double8 lane_max(double8 x, double y) {
+  const double8 yy = double8{} + y;
+  return x > yy ? x : yy;
+}
+// (_mm512_mask_sqrt_pd with every lane selected: the unmasked intrinsic passes GCC 12 an
+// undefined register that -Wmaybe-uninitialized reports, GCC bug 105593)
+inline double8 lane_sqrt(double8 x) {
+  const __m512d v = reinterpret_cast<__m512d>(x);
+  return reinterpret_cast<double8>(_mm512_mask_sqrt_pd(v, 0xff, v));
+}
+inline double8 lane_log(double8 x) {
+  const double2 a = lane_log(double2{x[0], x[1]}), b = lane_log(double2{x[2], x[3]});
+  const double2 c = lane_log(double2{x[4], x[5]}), d = lane_log(double2{x[6], x[7]});
+  return double8{a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
+}
+/// Lanes 0-3 from lo and 4-7 from hi (two groups of an array interleaved by four:
+/// solver/element_block.hpp load_record).
+inline double8 join_lanes(double4 lo, double4 hi) { return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7); }
 #endif
 
 }  // namespace tribex::materials

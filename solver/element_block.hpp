@@ -5,6 +5,7 @@
 // [0, count); the global element is first_element + e.
 #pragma once
 
+#include <cstring>
 #include <span>
 #include <string>
 #include <vector>
@@ -29,7 +30,8 @@ struct ElementBlock {
 
   // Records of several values per element are interleaved by element in groups of
   // `interleave_width` (below): value k of element e at lane_index(e, k, per_element), so that the
-  // kernels load 1, 2 or 4 consecutive elements' value k with one load. [e] arrays are plain.
+  // kernels load 1, 2 or 4 consecutive elements' value k with one load (8: two loads, load_record).
+  // [e] arrays are plain.
   std::vector<double> B0;        // [3][8] per element, interleaved: reference gradient operator (m^2)
   std::vector<double> volume0;   // [e] (m^3)
   std::vector<double> length0;   // [e] reference characteristic length (m)
@@ -66,6 +68,32 @@ inline std::size_t lane_index(int e, int k, int per_element) {
 inline std::size_t interleaved_size(int count, int per_element) {
   constexpr int w = interleave_width;
   return static_cast<std::size_t>(w) * static_cast<std::size_t>(per_element) * static_cast<std::size_t>((count + w - 1) / w);
+}
+/// Value k of elements e .. e + lane_count<T> - 1 of an interleaved record array (e a multiple of
+/// the lane count): one load up to the group width; eight lanes (AVX-512) span two groups, one
+/// load from each. The groups stay four wide for every kernel, so the state arrays of restart
+/// files keep one layout whatever the CPU that wrote them.
+template <class T>
+inline T load_record(const std::vector<double>& a, int e, int k, int per_element) {
+  const double* p = a.data() + lane_index(e, k, per_element);
+#ifdef __AVX512F__
+  if constexpr (materials::lane_count<T> == 8)
+    return materials::join_lanes(materials::load_lanes<materials::double4>(p),
+                                 materials::load_lanes<materials::double4>(p + interleave_width * per_element));
+  else
+#endif
+    return materials::load_lanes<T>(p);
+}
+/// The inverse of load_record.
+template <class T>
+inline void store_record(std::vector<double>& a, int e, int k, int per_element, const T& x) {
+  double* p = a.data() + lane_index(e, k, per_element);
+  if constexpr (materials::lane_count<T> <= interleave_width) {
+    materials::store_lanes(p, x);
+  } else {
+    std::memcpy(p, &x, sizeof(T) / 2);
+    std::memcpy(p + interleave_width * per_element, reinterpret_cast<const char*>(&x) + sizeof(T) / 2, sizeof(T) / 2);
+  }
 }
 /// Element e's reference gradient operator B0 [3][8] (m^2) out of the interleaved record.
 inline void reference_gradient(const ElementBlock& block, int e, double B[24]) {

@@ -4,10 +4,11 @@
 // f_iI -= wdetJ_g S_ij dN_I/dX_j, the gradients and forces sum-factorised over the element's
 // edges (sum_factorized.hpp). A material with state keeps it per point, interleaved like the
 // operators: value k of point p of element e at lane_index(e, p state_size + k, 8 state_size).
-// Elements run four at a time per AVX2 register or two per SSE register (lanes.hpp), the tail two
-// and one at a time, bitwise as they would in a full register. Bulk viscosity uses the element-mean
-// volumetric rate (B0, as in the mean-quadrature element), which is adequate for the damping role
-// it has here. Locks volumetrically as nu -> 0.5 (use mean quadrature there).
+// Elements run eight at a time per AVX-512 register, four per AVX2 register or two per SSE register
+// (lanes.hpp), the tail four, two and one at a time, bitwise as they would in a full register. Bulk
+// viscosity uses the element-mean volumetric rate (B0, as in the mean-quadrature element), which is
+// adequate for the damping role it has here. Locks volumetrically as nu -> 0.5 (use mean
+// quadrature there).
 #pragma once
 
 #include "materials/lanes.hpp"
@@ -35,8 +36,8 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   // e is a multiple of the lane count: lane l of an interleaved record is element e + l (element_block.hpp)
   T Q[9][8], w[8];
   for (int k = 0; k < 9; ++k)
-    for (int p = 0; p < 8; ++p) Q[k][p] = materials::load_lanes<T>(&blk.inv_jacobian[lane_index(e, 8 * k + p, 72)]);
-  for (int p = 0; p < 8; ++p) w[p] = materials::load_lanes<T>(&blk.wdetJ[lane_index(e, p, 8)]);
+    for (int p = 0; p < 8; ++p) Q[k][p] = load_record<T>(blk.inv_jacobian, e, 8 * k + p, 72);
+  for (int p = 0; p < 8; ++p) w[p] = load_record<T>(blk.wdetJ, e, p, 8);
 
   // Bulk viscosity (docs/theory.md 1.5): a pressure q = -b1 rho c L edot + rho (b2 L)^2 min(edot, 0)^2
   // from the element's mean volumetric rate edot = B0_iI v_iI / V. Its force -q B0_iI is added
@@ -44,7 +45,7 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   const T V = materials::load_lanes<T>(&blk.volume0[e]);
   const T L = materials::load_lanes<T>(&blk.length0[e]);
   T B0[24];
-  for (int k = 0; k < 24; ++k) B0[k] = materials::load_lanes<T>(&blk.B0[lane_index(e, k, 24)]);
+  for (int k = 0; k < 24; ++k) B0[k] = load_record<T>(blk.B0, e, k, 24);
   T edot{};
   for (int k = 0; k < 24; ++k) edot += ve[k] * B0[k];
   edot /= V;
@@ -62,9 +63,9 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
     T H[9], S[9], dissipated;
     point_gradient(G, Q, p, H);
     T state[ns > 0 ? ns : 1];
-    for (int k = 0; k < ns; ++k) state[k] = materials::load_lanes<T>(&blk.state[lane_index(e, ns * p + k, 8 * ns)]);
+    for (int k = 0; k < ns; ++k) state[k] = load_record<T>(blk.state, e, ns * p + k, 8 * ns);
     const T W = materials::point_stress(mat, H, state, dt, S, dissipated);
-    for (int k = 0; k < ns; ++k) materials::store_lanes(&blk.state[lane_index(e, ns * p + k, 8 * ns)], state[k]);
+    for (int k = 0; k < ns; ++k) store_record(blk.state, e, ns * p + k, 8 * ns, state[k]);
     not_finite += 0.0 * W;  // NaN in a lane once any of its W is NaN or inf (inverted element)
     energy += w[p] * W;
     if constexpr (Material::dissipates) plastic_work += w[p] * dissipated;
@@ -114,7 +115,7 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   }
 }
 
-/// The block at lane width T (double2 or double4), the tail two and one at a time.
+/// The block at lane width T (double2, double4 or double8), the tail four (after eight), two and one at a time.
 template <class T, class Material>
 ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk, const int* conn,
                                           const double* u, const double* v, double* force, double dt,
@@ -123,6 +124,11 @@ ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk
   constexpr int n = materials::lane_count<T>;
   int e = 0;
   for (; e + n <= blk.count; e += n) fully_integrated_lanes<T>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
+#ifdef __AVX512F__
+  if constexpr (n > 4)
+    for (; e + 4 <= blk.count; e += 4)
+      fully_integrated_lanes<materials::double4>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
+#endif
   if constexpr (n > 2)
     for (; e + 2 <= blk.count; e += 2)
       fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);

@@ -19,11 +19,17 @@ struct ElementPassTotals {
   hex8::StableStepMin stable;     // when asked for: the block's stable step at this u (stable_time_step.hpp)
 };
 
-/// Elements per kernel call: 4 (AVX2) where the CPU has AVX2, else 2 (SSE2, every x86-64). The
-/// results are bitwise the same at either width (mean_quadrature.hpp).
+/// The widest element batch the CPU runs: 8 (AVX-512F) or 4 (AVX2) where it has them, else 2 (SSE2,
+/// every x86-64); or the width forced by set_element_lane_width. The results are bitwise the same
+/// at every width (mean_quadrature.hpp).
 int element_lane_width();
-/// Force the width (2 or 4; 4 only where the CPU has AVX2; 0: the CPU's best): tests and
-/// `tribex bench block --lanes`.
+/// Elements per kernel call for a block of this formulation: the forced width, else the CPU's
+/// widest but at most 4 for mean quadrature, whose eight-lane kernel measured about 10 % slower
+/// than the four-lane one at 40^3 on an AMD EPYC with AVX-512 (while the fully integrated one gained
+/// 13-16 %: tools/bench/README.md, "Eight lanes").
+int element_lane_width(inputs::ElementFormulation formulation);
+/// Force the width (2, 4 or 8; a width above the CPU's widest gives its widest; 0: the default
+/// above): tests and `tribex bench block --lanes`.
 void set_element_lane_width(int lanes);
 
 /// Internal forces of one block, subtracted from `force` [node][3]:

@@ -15,7 +15,7 @@
 // every linear field of the reference coordinates, rigid rotations (u = (R - I) X) produce no
 // hourglass force at any angle.
 //
-// Elements run 1, 2 or 4 at a time (T = double, double2, double4: materials/lanes.hpp), element
+// Elements run 1, 2, 4 or 8 at a time (T = double, double2, double4, double8: materials/lanes.hpp), element
 // data interleaved by element (element_block.hpp). Every lane does the same IEEE operations in the
 // same order, and the totals and nodal forces are added lane by lane in element order, so the
 // results are bitwise the same at every lane width (tests/solver/element_lanes_test.cpp).
@@ -78,7 +78,7 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
   gather_nodal(u, nodes, ue);
   gather_nodal(v, nodes, ve);
   T B[24];
-  for (int k = 0; k < 24; ++k) B[k] = load_lanes<T>(&blk.B0[lane_index(e, k, 24)]);
+  for (int k = 0; k < 24; ++k) B[k] = load_record<T>(blk.B0, e, k, 24);
   const T V = load_lanes<T>(&blk.volume0[e]);
   const T inv_v0 = 1.0 / V;
   T s[9], H[9];
@@ -107,7 +107,7 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
 
   // Hourglass generalized displacements h_ia and rates g_ia, from the B0 sums s (and w for v).
   T c[12];
-  for (int k = 0; k < 12; ++k) c[k] = load_lanes<T>(&blk.hg_coefficients[lane_index(e, k, 12)]);
+  for (int k = 0; k < 12; ++k) c[k] = load_record<T>(blk.hg_coefficients, e, k, 12);
   T w[9];
   if constexpr (HourglassViscosity)
     for (int i = 0; i < 3; ++i)
@@ -176,7 +176,7 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
 }
 
 /// Elements [begin, count) of the block, `T` lanes at a time from `begin` (a multiple of the lane
-/// count), the tail two and one at a time.
+/// count), the tail four (after eight), two and one at a time.
 template <class T, class Material, bool HourglassViscosity>
 void mean_quadrature_range(const Material& mat, ElementBlock& blk, int begin, const int* conn, const double* u,
                            const double* v, double* force, double dt, bool want_stress, bool want_stable_step,
@@ -185,6 +185,12 @@ void mean_quadrature_range(const Material& mat, ElementBlock& blk, int begin, co
   int e = begin;
   for (; e + n <= blk.count; e += n)
     mean_quadrature_lanes<T, Material, HourglassViscosity>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
+#ifdef __AVX512F__
+  if constexpr (n > 4)
+    for (; e + 4 <= blk.count; e += 4)
+      mean_quadrature_lanes<materials::double4, Material, HourglassViscosity>(mat, blk, e, conn, u, v, force, dt,
+                                                                             want_stress, want_stable_step, totals);
+#endif
   if constexpr (n > 2)
     for (; e + 2 <= blk.count; e += 2)
       mean_quadrature_lanes<materials::double2, Material, HourglassViscosity>(mat, blk, e, conn, u, v, force, dt,

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Moving nodal vectors between the [node][3] arrays and an element batch's [component][node]
-// registers (T = double, double2, double4: materials/lanes.hpp), for the element kernels.
+// registers (T = double, double2, double4, double8: materials/lanes.hpp), for the element kernels.
 //   gather_nodal:     out[8 i + I] lane l = a[3 nodes[l][I] + i]
 //   subtract_nodal:   f[3 nodes[l][I] + i] -= in[8 i + I] lane l for the lanes set in `lanes`
 //                     (bit l: lane l; an inverted element's lane is left out), lane by lane in element order
@@ -71,6 +71,59 @@ inline void subtract_nodal(double* f, const int* const nodes[], const materials:
     for (int I = 0; I < 8 && (lanes >> l & 1u); ++I) {
       double* fn = f + 3 * nodes[l][I];
       _mm_storeu_pd(fn, _mm_sub_pd(_mm_loadu_pd(fn), xy[l][I]));
+      fn[2] -= z[l][I];
+    }
+}
+#endif
+
+#ifdef __AVX512F__
+// Eight lanes: as the four-lane versions, with the (x, y) pairs of lanes 0, 2, 4, 6 and of 1, 3, 5, 7
+// in one register each, so that one unpack gives the eight x and another the eight y in lane order.
+// Written as GCC vector shuffles, not intrinsics: GCC 12's AVX-512 unpack and insert intrinsics
+// pass an undefined register that -Wmaybe-uninitialized reports (GCC bug 105593); the same
+// instructions come out.
+inline materials::double8 pairs_of_lanes(const double* p0, const double* p1, const double* p2, const double* p3) {
+  using materials::double2;
+  using materials::load_lanes;
+  const materials::double4 lo = __builtin_shufflevector(load_lanes<double2>(p0), load_lanes<double2>(p1), 0, 1, 2, 3);
+  const materials::double4 hi = __builtin_shufflevector(load_lanes<double2>(p2), load_lanes<double2>(p3), 0, 1, 2, 3);
+  return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+
+inline void gather_nodal(const double* a, const int* const nodes[], materials::double8 out[24]) {
+  for (int I = 0; I < 8; ++I) {
+    const double* p[8];
+    for (int l = 0; l < 8; ++l) p[l] = a + 3 * nodes[l][I];
+    const materials::double8 even = pairs_of_lanes(p[0], p[2], p[4], p[6]);  // [x0 y0 | x2 y2 | x4 y4 | x6 y6]
+    const materials::double8 odd = pairs_of_lanes(p[1], p[3], p[5], p[7]);
+    out[I] = __builtin_shufflevector(even, odd, 0, 8, 2, 10, 4, 12, 6, 14);       // x0 .. x7
+    out[8 + I] = __builtin_shufflevector(even, odd, 1, 9, 3, 11, 5, 13, 7, 15);   // y0 .. y7
+    out[16 + I] = materials::double8{p[0][2], p[1][2], p[2][2], p[3][2], p[4][2], p[5][2], p[6][2], p[7][2]};
+  }
+}
+
+inline void subtract_nodal(double* f, const int* const nodes[], const materials::double8 in[24], unsigned lanes) {
+  // [lane][node] (x, y) and z, taken out of the registers in the sizes they are read back in, as at
+  // four lanes (storing whole registers and reading 16-byte pieces back measured the same)
+  materials::double2 xy[8][8];
+  double z[8][8];
+  for (int I = 0; I < 8; ++I) {
+    const materials::double8 even = __builtin_shufflevector(in[I], in[8 + I], 0, 8, 2, 10, 4, 12, 6, 14);  // [x0 y0 | x2 y2 | ...]
+    const materials::double8 odd = __builtin_shufflevector(in[I], in[8 + I], 1, 9, 3, 11, 5, 13, 7, 15);   // [x1 y1 | x3 y3 | ...]
+    xy[0][I] = __builtin_shufflevector(even, even, 0, 1);
+    xy[1][I] = __builtin_shufflevector(odd, odd, 0, 1);
+    xy[2][I] = __builtin_shufflevector(even, even, 2, 3);
+    xy[3][I] = __builtin_shufflevector(odd, odd, 2, 3);
+    xy[4][I] = __builtin_shufflevector(even, even, 4, 5);
+    xy[5][I] = __builtin_shufflevector(odd, odd, 4, 5);
+    xy[6][I] = __builtin_shufflevector(even, even, 6, 7);
+    xy[7][I] = __builtin_shufflevector(odd, odd, 6, 7);
+    for (int l = 0; l < 8; ++l) z[l][I] = in[16 + I][l];
+  }
+  for (int l = 0; l < 8; ++l)
+    for (int I = 0; I < 8 && (lanes >> l & 1u); ++I) {
+      double* fn = f + 3 * nodes[l][I];
+      materials::store_lanes(fn, materials::load_lanes<materials::double2>(fn) - xy[l][I]);
       fn[2] -= z[l][I];
     }
 }

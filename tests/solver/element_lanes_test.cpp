@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The element kernels run elements four per AVX2 register, two per SSE register, or alone
-// (materials/lanes.hpp). An element's forces, energy and stress must not depend on the lane it
-// ran in or on the lane width (so results do not depend on the partition, the block size or the
-// CPU): each element of a distorted 3x3x3 box (27 elements: six groups of four, a pair and one
-// alone), run as a block of its own, must give bitwise what it gives inside the block, at lane
-// widths 2 and 4, for both formulations and both hyperelastic materials; and an inverted element
-// in a later lane must be the one reported.
+// The element kernels run elements eight per AVX-512 register, four per AVX2 register, two per SSE
+// register, or alone (materials/lanes.hpp). An element's forces, energy and stress must not depend
+// on the lane it ran in or on the lane width (so results do not depend on the partition, the block
+// size or the CPU): each element of a distorted 3x3x3 box (27 elements: six groups of four, a pair
+// and one alone; at eight lanes three groups of eight, the pair and the one), run as a block of its
+// own, must give bitwise what it gives inside the block, at lane widths 2, 4 and 8, for both
+// formulations and both hyperelastic materials; and an inverted element in a later lane must be the
+// one reported.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,14 +94,19 @@ TEST_P(LanesTest, ElementsGiveBitwiseTheSameResultsAtEveryLaneWidthAndAlone) {
   ASSERT_EQ(blk.count, 27);
   const PassResult two = run_pass(blk, box.mesh, u, v, 2);
   const PassResult four = run_pass(blk, box.mesh, u, v, 4);
-  if (solver::element_lane_width() < 4) {
-    GTEST_LOG_(INFO) << "this CPU has no AVX2: width 4 ran as 2";
+  if (solver::element_lane_width() < 8) {
+    GTEST_LOG_(INFO) << "this CPU has no AVX-512F (width 8 ran as " << solver::element_lane_width() << ")"
+                     << (solver::element_lane_width() < 4 ? " and no AVX2 (width 4 ran as 2)" : "");
   }
-  for (int k = 0; k < 3 * nodes; ++k) EXPECT_EQ(two.force[k], four.force[k]) << "force component " << k;
-  for (std::size_t k = 0; k < two.stress.size(); ++k) EXPECT_EQ(two.stress[k], four.stress[k]) << "stress " << k;
-  EXPECT_EQ(two.totals.strain_energy, four.totals.strain_energy);
-  EXPECT_EQ(two.totals.hourglass_energy, four.totals.hourglass_energy);
-  EXPECT_EQ(two.totals.viscous_power, four.totals.viscous_power);
+  // eight lanes: three groups of eight, then the pair and the lone element
+  const PassResult eight = run_pass(blk, box.mesh, u, v, 8);
+  for (const PassResult* wide : {&four, &eight}) {
+    for (int k = 0; k < 3 * nodes; ++k) EXPECT_EQ(two.force[k], wide->force[k]) << "force component " << k;
+    for (std::size_t k = 0; k < two.stress.size(); ++k) EXPECT_EQ(two.stress[k], wide->stress[k]) << "stress " << k;
+    EXPECT_EQ(two.totals.strain_energy, wide->totals.strain_energy);
+    EXPECT_EQ(two.totals.hourglass_energy, wide->totals.hourglass_energy);
+    EXPECT_EQ(two.totals.viscous_power, wide->totals.viscous_power);
+  }
 
   std::vector<double> f_single(3 * nodes, 0.0);
   double energy = 0.0, hourglass = 0.0, power = 0.0;
@@ -123,7 +129,7 @@ TEST_P(LanesTest, ElementsGiveBitwiseTheSameResultsAtEveryLaneWidthAndAlone) {
   EXPECT_EQ(four.totals.first_inverted, -1);
 }
 
-// The stable step folded into the force pass is bitwise compute_stable_time_step's, at both widths.
+// The stable step folded into the force pass is bitwise compute_stable_time_step's, at every width.
 TEST_P(LanesTest, FoldedStableStepIsTheSeparatePassBitwise) {
   const auto [material, formulation] = GetParam();
   Box box = distorted_box(material, formulation);
@@ -133,7 +139,7 @@ TEST_P(LanesTest, FoldedStableStepIsTheSeparatePassBitwise) {
   const solver::StableStep separate = solver::compute_stable_time_step(box.model, u.data());
   ASSERT_GT(separate.dt, 0.0);
   ASSERT_EQ(separate.inverted_element, -1);
-  for (int lanes : {2, 4}) {
+  for (int lanes : {2, 4, 8}) {
     solver::set_element_lane_width(lanes);
     std::vector<double> f(3 * nodes, 0.0);
     const auto totals = solver::add_internal_forces(box.model.blocks[0], box.mesh.connectivity.data(), u.data(),
@@ -155,8 +161,31 @@ INSTANTIATE_TEST_SUITE_P(
              (std::get<1>(p.param) == inputs::ElementFormulation::mean_quadrature ? "MeanQuadrature" : "FullyIntegrated");
     });
 
+// 125 elements at eight lanes: 15 groups of eight, then the four-lane tail (the AVX-512 file's own
+// double4 batch) and one alone; bitwise the two-lane pass, both formulations.
+TEST(EightLanes, TailOfFourAndOneIsBitwiseTheTwoLanePass) {
+  for (auto formulation : {inputs::ElementFormulation::mean_quadrature, inputs::ElementFormulation::fully_integrated}) {
+    Box box = distorted_box("neo_hookean", formulation, 5);
+    const int nodes = box.mesh.node_count();
+    std::vector<double> u(3 * nodes), v(3 * nodes);
+    for (int k = 0; k < 3 * nodes; ++k) {
+      u[k] = 1e-11 * std::sin(0.7 * k);
+      v[k] = 30.0 * std::cos(1.1 * k);
+    }
+    const auto& blk = box.model.blocks[0];
+    ASSERT_EQ(blk.count, 125);
+    const PassResult two = run_pass(blk, box.mesh, u, v, 2);
+    const PassResult eight = run_pass(blk, box.mesh, u, v, 8);
+    for (int k = 0; k < 3 * nodes; ++k) EXPECT_EQ(two.force[k], eight.force[k]) << "force component " << k;
+    for (std::size_t k = 0; k < two.stress.size(); ++k) EXPECT_EQ(two.stress[k], eight.stress[k]) << "stress " << k;
+    EXPECT_EQ(two.totals.strain_energy, eight.totals.strain_energy);
+    EXPECT_EQ(two.totals.viscous_power, eight.totals.viscous_power);
+    EXPECT_GT(two.totals.strain_energy, 0.0);
+  }
+}
+
 TEST(FullyIntegratedLanes, InvertedElementInALaterLaneIsReported) {
-  for (int lanes : {2, 4}) {
+  for (int lanes : {2, 4, 8}) {
     Box box = distorted_box("neo_hookean", inputs::ElementFormulation::fully_integrated, 2);
     const int nodes = box.mesh.node_count();
     std::vector<double> u(3 * nodes, 0.0), v(3 * nodes, 0.0);
