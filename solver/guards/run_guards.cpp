@@ -233,7 +233,8 @@ void RunGuards::save(StateArchive& archive) const {
   archive.put("guards_warnings", flat);
   archive.put("guards_samples", samples_);
   archive.put("guards_stride", double(stride_));
-  archive.put("guards_running_peak", std::vector<double>{running_peak_, double(excess_since_), excess_since_time_});
+  // The mid-run kinetic-energy stop: peak internal energy so far (J), start step and time (s) of the excess.
+  archive.put("guards_kinetic_excess", std::vector<double>{running_peak_, double(excess_since_), excess_since_time_});
 }
 
 void RunGuards::restore(const StateArchive& archive) {
@@ -256,10 +257,10 @@ void RunGuards::restore(const StateArchive& archive) {
   samples_.reserve(std::max(capacity_, samples_.size()));
   capacity_ = std::max(capacity_, samples_.capacity());
   stride_ = static_cast<long>(archive.scalar("guards_stride"));
-  if (archive.has("guards_running_peak")) {
-    const auto& peak = archive.array("guards_running_peak");
+  if (archive.has("guards_kinetic_excess")) {
+    const auto& peak = archive.array("guards_kinetic_excess");
     if (peak.size() != 3)
-      throw SetupError("restart file: 'guards_running_peak' holds " + std::to_string(peak.size()) +
+      throw SetupError("restart file: 'guards_kinetic_excess' holds " + std::to_string(peak.size()) +
                        " values, not the 3 this tribex keeps");
     running_peak_ = peak[0];
     excess_since_ = static_cast<long>(peak[1]);
