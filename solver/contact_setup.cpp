@@ -68,19 +68,25 @@ void cover_reach(const inputs::InteractionSpec& it, const inputs::ContactSpec& s
   }
 }
 
+// Index of the block holding `element` of `mesh` (its blocks are the model's, in order), -1 for none.
+int block_of(const mesh::Mesh& mesh, int element) {
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
+    if (element >= mesh.blocks[b].first_element && element < mesh.blocks[b].first_element + mesh.blocks[b].element_count)
+      return static_cast<int>(b);
+  return -1;
+}
+
 // Mean P-wave modulus M = lambda + 2 mu (reference state) of the elements under a contact surface's
 // faces, Pa: the stiffness that decides which side of a node-to-face pair may carry the point loads.
-double surface_wave_modulus(const Model& model, const inputs::ContactSurfaceSpec& surface) {
+double surface_wave_modulus(const Model& model, const mesh::Mesh& mesh, const inputs::ContactSurfaceSpec& surface) {
   double sum = 0.0;
   long count = 0;
   for (const auto& set : surface.side_sets)
-    for (const auto& side : model.mesh.side_sets.at(set))
-      for (const auto& b : model.blocks)
-        if (side.element >= b.first_element && side.element < b.first_element + b.count) {
-          sum += materials::wave_modulus_of(b.material);
-          ++count;
-          break;
-        }
+    for (const auto& side : mesh.side_sets.at(set))
+      if (const int b = block_of(mesh, side.element); b >= 0) {
+        sum += materials::wave_modulus_of(model.blocks[static_cast<std::size_t>(b)].material);
+        ++count;
+      }
   return count ? sum / static_cast<double>(count) : 0.0;
 }
 
@@ -93,11 +99,11 @@ double surface_wave_modulus(const Model& model, const inputs::ContactSurfaceSpec
 constexpr double stiffer_slave_ratio = 2.0;
 
 void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const Model& model,
-                 contact::InteractionSettings& s, std::vector<std::string>* report) {
+                 const mesh::Mesh& mesh, contact::InteractionSettings& s, std::vector<std::string>* report) {
   if (it.symmetric || it.enforcement == inputs::InteractionEnforcement::mortar || !contact::uses_penalty(s.law)) return;
   const auto& slave = spec.surfaces[static_cast<std::size_t>(s.slave)];
   const auto& master = spec.surfaces[static_cast<std::size_t>(s.master)];
-  const double m_slave = surface_wave_modulus(model, slave), m_master = surface_wave_modulus(model, master);
+  const double m_slave = surface_wave_modulus(model, mesh, slave), m_master = surface_wave_modulus(model, mesh, master);
   if (!(m_slave > stiffer_slave_ratio * m_master)) return;
   std::swap(s.slave, s.master);
   if (report)
@@ -113,13 +119,15 @@ void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& s
 // (verification/hertz/README.md, "Element choice"). Recorded for the run guards, which raise it once
 // the penetration shows such a pressure (flat contacts at low pressure run fine on these elements).
 void note_one_point_elements(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const Model& model,
-                             SetupFindings& findings) {
+                             const mesh::Mesh& mesh, SetupFindings& findings) {
   std::vector<std::string> blocks;
   for (const auto& surface : spec.surfaces) {
     if (surface.name != it.slave && surface.name != it.master) continue;
     for (const auto& set : surface.side_sets)
-      for (const auto& side : model.mesh.side_sets.at(set)) {
-        const auto& b = model.blocks[static_cast<std::size_t>(model.element_block[static_cast<std::size_t>(side.element)])];
+      for (const auto& side : mesh.side_sets.at(set)) {
+        const int index = block_of(mesh, side.element);
+        if (index < 0) continue;
+        const auto& b = model.blocks[static_cast<std::size_t>(index)];
         if (b.formulation == inputs::ElementFormulation::mean_quadrature &&
             std::find(blocks.begin(), blocks.end(), b.name) == blocks.end())
           blocks.push_back(b.name);
@@ -147,10 +155,43 @@ void refuse_shared_side_sets(const inputs::ContactSpec& spec, const inputs::Inte
 
 }  // namespace
 
-std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model, double dt,
+mesh::Mesh contact_surface_mesh(const mesh::Mesh& whole, const inputs::ContactSpec& spec) {
+  std::vector<char> wanted(static_cast<std::size_t>(whole.element_count()), 0);
+  for (const auto& s : spec.surfaces)
+    for (const auto& set : s.side_sets)
+      if (auto it = whole.side_sets.find(set); it != whole.side_sets.end())
+        for (const auto& side : it->second) wanted[static_cast<std::size_t>(side.element)] = 1;
+  // Elements ascending, so each block stays one range; node numbers stay global.
+  std::vector<int> kept_of(wanted.size(), -1);
+  mesh::Mesh m;
+  m.coordinates.assign(whole.coordinates.size(), 0.0);
+  for (const auto& b : whole.blocks) {
+    mesh::Block kept{b.name, m.element_count(), 0};
+    for (int e = b.first_element; e < b.first_element + b.element_count; ++e) {
+      if (!wanted[static_cast<std::size_t>(e)]) continue;
+      kept_of[static_cast<std::size_t>(e)] = m.element_count();
+      for (int I = 0; I < 8; ++I) {
+        const int n = whole.connectivity[8 * static_cast<std::size_t>(e) + I];
+        m.connectivity.push_back(n);
+        for (int i = 0; i < 3; ++i) m.coordinates[3 * static_cast<std::size_t>(n) + i] = whole.coordinates[3 * static_cast<std::size_t>(n) + i];
+      }
+      ++kept.element_count;
+    }
+    m.blocks.push_back(kept);
+  }
+  for (const auto& [name, sides] : whole.side_sets) {
+    auto& out = m.side_sets[name];
+    for (const auto& side : sides)
+      if (kept_of[static_cast<std::size_t>(side.element)] >= 0) out.push_back({kept_of[static_cast<std::size_t>(side.element)], side.face});
+  }
+  return m;
+}
+
+std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model,
+                                                       const ContactGeometry& geometry, double dt,
                                                        std::vector<std::string>* report,
                                                        SetupFindings* findings) {
-  const auto& mesh = model.mesh;
+  const auto& mesh = geometry.mesh;
   std::vector<std::string> known;
   for (const auto& [name, sides] : mesh.side_sets) known.push_back(name);
   std::vector<contact::ContactSurface> surfaces;
@@ -183,7 +224,7 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     s.penalty_scale = spec.penalty_scale_factor;
     s.search_margin = spec.search_margin.value_or(0.0);
     set_law(it, s, report, findings);
-    order_roles(it, spec, model, s, report);
+    order_roles(it, spec, model, mesh, s, report);
     cover_reach(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
     if (it.enforcement == inputs::InteractionEnforcement::mortar) {
       s.enforcement = contact::Enforcement::mortar;
@@ -193,17 +234,13 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
                           (contact::adhesion_of(s.law) ? ", adhesion at face integration points" : ""));
     }
     if (findings && s.enforcement == contact::Enforcement::node_to_face && contact::uses_penalty(s.law))
-      note_one_point_elements(it, spec, model, *findings);
+      note_one_point_elements(it, spec, model, mesh, *findings);
     interactions.push_back(s);
   }
-  auto manager = std::make_unique<contact::ContactManager>(std::move(surfaces), std::move(interactions), model.mass, dt,
-                                                           mesh.node_count());
+  auto manager = std::make_unique<contact::ContactManager>(std::move(surfaces), std::move(interactions), geometry.mass,
+                                                           dt, mesh.node_count());
   if (spec.axis) manager->set_axis(spec.axis->data(), spec.axis->data() + 3);
-  // Nodes with all three velocity components prescribed (fixed or driven) for the tangential pairs.
-  std::vector<char> constrained(static_cast<std::size_t>(mesh.node_count()), 0), prescribed(constrained.size(), 0);
-  for (int dof : model.constraints.dof) ++constrained[static_cast<std::size_t>(dof / 3)];
-  for (std::size_t n = 0; n < constrained.size(); ++n) prescribed[n] = constrained[n] == 3;
-  manager->set_prescribed_nodes(std::move(prescribed));
+  manager->set_prescribed_nodes(geometry.prescribed);  // for the tangential pairs
 
   // Pre-flight: initial gaps and overlaps per pass, worst nodes named.
   const auto overlaps = manager->initial_overlaps(mesh.coordinates.data(), 3);

@@ -49,7 +49,7 @@ class DeckRun {
       summary_.status = "checked";
       return summary_;
     }
-    distribute_and_resume();
+    start_from_restart();
     stop_before_outputs("before the output files were opened");
     open_outputs();
     peak_rss_setup_ = parallel::peak_rss_bytes();  // set-up's high-water mark, before the loop adds to it
@@ -59,11 +59,13 @@ class DeckRun {
   }
 
  private:
-  // ---- stage 1: the whole model, checked and reported; nothing written ----
+  // ---- stage 1: the model (a parallel run: this rank's part), checked and reported; nothing written ----
   void preflight();
-  void report_mesh(const Model& global);
-  // ---- stage 2: this rank's part, the integrator and the restart state ----
-  void distribute_and_resume();
+  void build_parts();  // parallel: the whole mesh on rank 0, partitioned; every rank builds its part
+  void report_partition(const mesh::Mesh& whole, const std::vector<int>& part, const parallel::NodeHolders& holders);
+  void report_mesh(const Model& model);
+  // ---- stage 2: the integrator and the restart state ----
+  void start_from_restart();
   // ---- stage 3: the output folder, history.csv, results.h5, restart output ----
   void open_outputs();
   void choose_history_columns();
@@ -106,15 +108,14 @@ class DeckRun {
   RunSummary summary_;
 
   // stage 1
-  std::optional<Model> global_;  // the whole model until localized
   StableStep stable0_;
   double est_steps_ = 0.0;
   int elements_ = 0;
-  // stage 2
-  std::optional<mesh::Mesh> whole_mesh_;  // kept until results.h5 holds it (parallel runs)
-  std::map<std::string, double> set_size_;  // node-set sizes of the whole mesh
-  std::string mesh_hash_;
   std::optional<Model> model_;
+  std::optional<mesh::Mesh> whole_mesh_;  // parallel runs, rank 0: kept until results.h5 holds it
+  std::map<std::string, double> set_size_;  // node-set sizes of the whole mesh
+  std::string mesh_hash_;                   // of the whole mesh (restart files)
+  // stage 2
   std::optional<CentralDifference> integrator_;
   std::optional<RunGuards> guards_;
   std::optional<BlockTranslation> block_translation_;

@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "mesh/mesh_error.hpp"
+#include "solver/contact_setup.hpp"
 #include "solver/deck_run.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/output_folder.hpp"
@@ -14,133 +15,127 @@
 #include "solver/restart/run_fingerprint.hpp"
 
 namespace tribex::solver {
-namespace {
-
-// Exit code of an error thrown inside run_deck (the CLI maps the same types the same way).
-int exit_code_of(const std::exception_ptr& e) {
-  try {
-    std::rethrow_exception(e);
-  } catch (const SetupError&) {
-    return 2;
-  } catch (const mesh::MeshError&) {
-    return 2;
-  } catch (const NumericalFailure&) {
-    return 3;
-  } catch (const StoppedByOtherRank& s) {
-    return s.exit_code;
-  } catch (...) {
-    return 1;
-  }
-}
-
-/// Collective: when any rank holds an error, the lowest such rank rethrows it (and prints it) and
-/// every other rank throws StoppedByOtherRank with its exit code. For the steps of the set-up that
-/// can fail on one rank only (files written by rank 0, a rank's group of a restart file).
-void agree_on_errors(const std::exception_ptr& error) {
-  if (parallel::size() == 1) {
-    if (error) std::rethrow_exception(error);
-    return;
-  }
-  const double first = parallel::min(error ? double(parallel::rank()) : 1e9);
-  if (first >= 1e9) return;
-  int code = error ? exit_code_of(error) : 0;
-  parallel::broadcast(&code, 1, static_cast<int>(first));
-  if (parallel::rank() == static_cast<int>(first)) std::rethrow_exception(error);
-  throw StoppedByOtherRank(code);
-}
-
-}  // namespace
 
 void DeckRun::preflight() {
   fault_signal_point("setup");
   summary_.identity = identify_run(deck_.path, ranks_);
   log_.say(identity_line(summary_.identity));
-  // Bad input is found here, before any file is written. Every rank builds the whole model (the
-  // same checks, the same errors), then keeps its part (parallel::localize).
-  global_.emplace(build_model(deck_));
-  const Model& global = *global_;
-  elements_ = global.mesh.element_count();
-  report_mesh(global);
-  stable0_ = compute_stable_time_step(global, nullptr);
+  // Bad input is found here, before any file is written: one rank builds the whole model; in a
+  // parallel run every rank builds its part (the same checks, an error stops every rank).
+  if (ranks_ == 1) {
+    model_.emplace(build_model(deck_));
+    mesh_hash_ = mesh_sha256(model_->mesh);
+    for (const auto& [name, nodes] : model_->mesh.node_sets) set_size_[name] = double(nodes.size());
+  } else {
+    build_parts();
+  }
+  const Model& model = *model_;
+  report_mesh(model);
+  stable0_ = whole_model_stable_time_step(model);
   log_.say(format("stable time step %.6g s (element %d controls it); scale factor %.3g => dt = %.6g s", stable0_.dt,
                   stable0_.controlling_element + 1, tc_.time_step_scale_factor,
                   std::min(stable0_.dt * tc_.time_step_scale_factor, tc_.maximum_time_step.value_or(INFINITY))));
-  for (const auto& line : global.mass_scaling.lines()) log_.say(line);
+  for (const auto& line : model.mass_scaling.lines()) log_.say(line);
   est_steps_ = (tc_.termination_time - tc_.start_time) /
                std::min(stable0_.dt * tc_.time_step_scale_factor, tc_.maximum_time_step.value_or(INFINITY));
   log_.say(format("termination time %.6g s: about %.0f steps", tc_.termination_time, std::ceil(est_steps_)));
-  log_.say(format("constraints: %zu dofs; silent-boundary nodes: %zu; pressure loads: %zu", global.constraints.dof.size(),
-                  global.silent.node.size(), global.pressures.size()));
-  for (const auto& line : global.preflight) log_.say(line);
-  for (const auto& w : global.setup.warnings) announce(w);
+  // Counted on the owned copies (constraints and dashpots sit on every copy of a node).
+  double counts[2] = {0.0, 0.0};
+  for (int dof : model.constraints.dof) counts[0] += model.domain.owned[dof / 3];
+  for (int node : model.silent.node) counts[1] += model.domain.owned[node];
+  parallel::sum(counts, 2);
+  log_.say(format("constraints: %.0f dofs; silent-boundary nodes: %.0f; pressure loads: %zu", counts[0], counts[1],
+                  model.pressures.size()));
+  for (const auto& line : model.preflight) log_.say(line);
+  for (const auto& w : model.setup.warnings) announce(w);
   summary_.elements = elements_;
-  summary_.nodes = global.mesh.node_count();
+  summary_.nodes = model.domain.global_node_count;
   // `tribex check` stops where the run would (exit 3, the same message); a run stops after its outputs
   // are open (DeckRun::loop), so that they are valid.
-  if (options_.check_only && global.mass_scaling.exceeds_limit())
-    throw NumericalFailure(global.mass_scaling.limit_message());
+  if (options_.check_only && model.mass_scaling.exceeds_limit())
+    throw NumericalFailure(model.mass_scaling.limit_message());
 }
 
-void DeckRun::report_mesh(const Model& global) {
-  const auto& mesh = global.mesh;
-  log_.say(format("mesh: %d nodes, %d hex8 elements in %zu block(s); total mass %.6g kg", mesh.node_count(), elements_,
-                  global.blocks.size(), global.total_mass));
-  for (const auto& b : global.blocks)
-    log_.say(format("  block %-16s %8d elements  %s  %s", b.name.c_str(), b.count,
-                    std::string(materials::model_name(b.material)).c_str(),
-                    b.formulation == inputs::ElementFormulation::mean_quadrature ? "mean_quadrature" : "fully_integrated"));
+void DeckRun::build_parts() {
+  // Rank 0 reads or generates the whole mesh, checks and partitions it, and sends every rank its part;
+  // it keeps the whole mesh only until results.h5 holds it (open_results).
+  std::optional<mesh::Mesh> whole;
+  std::vector<int> part;
+  parallel::NodeHolders holders;
+  mesh::Mesh contact_mesh;
+  std::exception_ptr error;
+  if (root_) {
+    try {
+      whole.emplace(build_mesh(deck_));
+      try {
+        part = parallel::partition_elements(*whole, ranks_);
+      } catch (const std::runtime_error& e) {
+        throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
+                         "; run with fewer ranks (mpirun -np N)");
+      }
+      holders = parallel::node_holders(*whole, part);
+      mesh_hash_ = mesh_sha256(*whole);
+      if (region_.contact) contact_mesh = contact_surface_mesh(*whole, *region_.contact);
+      report_partition(*whole, part, holders);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  agree_on_errors(error);
+  parallel::broadcast(mesh_hash_, 0);
+  parallel::MeshPart mine = parallel::distribute_mesh(whole ? &*whole : nullptr, &part, &holders);
+  holders = {};
+  part = {};
+  if (region_.contact) parallel::broadcast_mesh(contact_mesh, 0);
+  if (whole && region_.results) whole_mesh_ = std::move(*whole);
+  whole.reset();
+  for (const auto& [name, size] : mine.node_set_size) set_size_[name] = double(size);
+  model_.emplace(build_model(deck_, std::move(mine), contact_mesh));
+}
+
+void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& part,
+                               const parallel::NodeHolders& holders) {
+  int shared = 0;
+  for (int n = 0; n < whole.node_count(); ++n) shared += holders.count(n) > 1;
+  std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
+  for (int p : part) ++rank_elements[p];
+  const auto [fewest, most] = std::minmax_element(rank_elements.begin(), rank_elements.end());
+  log_.say(format("parallel: %d ranks, METIS k-way partition of the element graph; %d-%d elements per rank; %d nodes "
+                  "on partition boundaries; every rank builds only its part",
+                  ranks_, *fewest, *most, shared));
+}
+
+void DeckRun::report_mesh(const Model& model) {
+  const auto& d = model.domain;
+  elements_ = d.global_element_count;
+  std::vector<double> block_elements;
+  for (const auto& b : model.blocks) block_elements.push_back(b.count);
+  parallel::sum(block_elements.data(), static_cast<int>(block_elements.size()));
+  log_.say(format("mesh: %d nodes, %d hex8 elements in %zu block(s); total mass %.6g kg", d.global_node_count, elements_,
+                  model.blocks.size(), model.total_mass));
+  for (std::size_t b = 0; b < model.blocks.size(); ++b)
+    log_.say(format("  block %-16s %8.0f elements  %s  %s", model.blocks[b].name.c_str(), block_elements[b],
+                    std::string(materials::model_name(model.blocks[b].material)).c_str(),
+                    model.blocks[b].formulation == inputs::ElementFormulation::mean_quadrature ? "mean_quadrature"
+                                                                                               : "fully_integrated"));
   double worst = 1.0, sum = 0.0;
   int worst_element = 0;
-  for (int e = 0; e < elements_; ++e) {
-    const double q = mesh::scaled_jacobian(mesh, e);
+  for (int e = 0; e < model.mesh.element_count(); ++e) {
+    const double q = mesh::scaled_jacobian(model.mesh, e);
     sum += q;
     if (q < worst) {
       worst = q;
-      worst_element = e;
+      worst_element = d.global_element[e];
     }
   }
+  parallel::sum(&sum, 1);
+  worst = parallel::min_location(worst, worst_element);
   log_.say(format("element quality: scaled Jacobian min %.3f (element %d), mean %.3f", worst, worst_element + 1,
                   elements_ ? sum / elements_ : 0.0));
 }
 
-void DeckRun::distribute_and_resume() {
-  // This rank's part. The whole mesh is kept until results.h5 has been created (rank 0 writes it
-  // there, once); node-set sizes are those of the whole mesh.
-  const mesh::Mesh& mesh = global_->mesh;
-  std::vector<int> part;
-  try {
-    part = parallel::partition_elements(mesh, ranks_);
-  } catch (const std::runtime_error& e) {
-    throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
-                     "; run with fewer ranks (mpirun -np N)");
-  }
-  if (ranks_ > 1 && region_.results) whole_mesh_ = mesh;
-  for (const auto& [name, nodes] : mesh.node_sets) set_size_[name] = double(nodes.size());
-  if (ranks_ > 1) {
-    int shared = 0;
-    std::vector<int> holder(static_cast<std::size_t>(mesh.node_count()), -1);
-    for (int e = 0; e < elements_; ++e)
-      for (int I = 0; I < 8; ++I) {
-        int& h = holder[mesh.connectivity[8 * e + I]];
-        if (h >= 0 && h != part[e] && h < 1 << 20) {
-          ++shared;
-          h = 1 << 20;
-        } else if (h < 0) {
-          h = part[e];
-        }
-      }
-    std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
-    for (int e = 0; e < elements_; ++e) ++rank_elements[part[e]];
-    const auto [fewest, most] = std::minmax_element(rank_elements.begin(), rank_elements.end());
-    log_.say(format("parallel: %d ranks, METIS k-way partition of the element graph; %d-%d elements per rank; %d nodes "
-                    "on partition boundaries",
-                    ranks_, *fewest, *most, shared));
-  }
+void DeckRun::start_from_restart() {
   stop_before_outputs("after the model was built");
-  mesh_hash_ = mesh_sha256(mesh);
-  model_.emplace(parallel::localize(std::move(*global_), part));
-  global_.reset();
-
   // A restart file is read and checked against the model before any output file is touched.
   integrator_.emplace(*model_, tc_);
   guards_.emplace(region_.guards, model_->setup, static_cast<long>(std::ceil(est_steps_)),

@@ -11,7 +11,8 @@
 namespace tribex::solver {
 
 ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block,
-                                const materials::Material& material, const inputs::SectionSpec& section) {
+                                const materials::Material& material, const inputs::SectionSpec& section,
+                                const std::vector<int>& global_element) {
   ElementBlock b;
   b.name = block.name;
   b.first_element = block.first_element;
@@ -51,7 +52,7 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
     double B[24];
     const double V = hex8::gradient_operator(X, B);
     if (!(V > 0.0) || hex8::min_corner_jacobian(X) <= 0.0)
-      throw SetupError("element " + std::to_string(global + 1) + " of block '" + b.name +
+      throw SetupError("element " + std::to_string((global_element.empty() ? global : global_element[global]) + 1) + " of block '" + b.name +
                        "' is inverted or degenerate (volume " + std::to_string(V) +
                        " m^3); fix the mesh (node order or geometry)");
     for (int k = 0; k < 24; ++k) b.B0[lane_index(e, k, 24)] = B[k];

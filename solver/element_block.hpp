@@ -108,8 +108,10 @@ std::vector<double> select_interleaved(const std::vector<double>& from, std::spa
 void equivalent_plastic_strain(const ElementBlock& block, double* out);
 
 /// Build the reference data of one block. Throws solver::SetupError naming the first element with
-/// a non-positive volume or Jacobian (1-based, as gmsh and ParaView show them + 1).
+/// a non-positive volume or Jacobian (1-based, as gmsh and ParaView show them + 1; `global_element`
+/// maps a rank's local elements to the whole mesh's numbers, empty: the mesh is the whole mesh).
 ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block,
-                                const materials::Material& material, const inputs::SectionSpec& section);
+                                const materials::Material& material, const inputs::SectionSpec& section,
+                                const std::vector<int>& global_element = {});
 
 }  // namespace tribex::solver

@@ -3,6 +3,9 @@
 
 #include <cstring>
 
+#include "mesh/mesh_error.hpp"
+#include "solver/parallel/communicator.hpp"
+
 namespace tribex::solver {
 
 OutputError output_failure(const std::string& path, int error_number) {
@@ -10,6 +13,39 @@ OutputError output_failure(const std::string& path, int error_number) {
   return OutputError(reason + " while writing " + path +
                      "; free space on the device or choose another output folder (-o); the files up to the last "
                      "complete output step are kept");
+}
+
+SetupError orphan_node_error(int node) {
+  return SetupError("mesh node " + std::to_string(node + 1) + " belongs to no element (zero mass); remove it from the mesh");
+}
+
+int exit_code_of(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const SetupError&) {
+    return 2;
+  } catch (const mesh::MeshError&) {
+    return 2;
+  } catch (const NumericalFailure&) {
+    return 3;
+  } catch (const StoppedByOtherRank& s) {
+    return s.exit_code;
+  } catch (...) {
+    return 1;
+  }
+}
+
+void agree_on_errors(const std::exception_ptr& error) {
+  if (parallel::size() == 1) {
+    if (error) std::rethrow_exception(error);
+    return;
+  }
+  const double first = parallel::min(error ? double(parallel::rank()) : 1e9);
+  if (first >= 1e9) return;
+  int code = error ? exit_code_of(error) : 0;
+  parallel::broadcast(&code, 1, static_cast<int>(first));
+  if (parallel::rank() == static_cast<int>(first)) std::rethrow_exception(error);
+  throw StoppedByOtherRank(code);
 }
 
 }  // namespace tribex::solver

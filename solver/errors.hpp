@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -38,5 +39,17 @@ class StoppedByOtherRank : public std::runtime_error {
   explicit StoppedByOtherRank(int code) : std::runtime_error("stopped by another rank"), exit_code(code) {}
   int exit_code;
 };
+
+/// The mesh node (0-based) that belongs to no element: it would have no mass.
+SetupError orphan_node_error(int node);
+
+/// Exit code of an error (2 bad input, 3 numerical failure, a StoppedByOtherRank's own, else 1).
+int exit_code_of(const std::exception_ptr& error);
+
+/// Collective: when any rank holds an error, the lowest such rank rethrows it (and prints it) and
+/// every other rank throws StoppedByOtherRank with its exit code. For the steps of the set-up that
+/// can fail on some ranks only (a rank's part of the mesh, files written by rank 0, a rank's group of
+/// a restart file). One rank: rethrows its error.
+void agree_on_errors(const std::exception_ptr& error);
 
 }  // namespace tribex::solver

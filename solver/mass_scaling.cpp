@@ -8,6 +8,7 @@
 #include "solver/errors.hpp"
 #include "solver/model.hpp"
 #include "solver/output/run_log.hpp"
+#include "solver/parallel/communicator.hpp"
 #include "solver/stable_time_step.hpp"
 
 namespace tribex::solver {
@@ -40,7 +41,7 @@ MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double
 
   // The reference estimate of every element (the same one the run starts from).
   std::vector<double> dt_e(static_cast<std::size_t>(m.element_count()));
-  const StableStep unscaled = compute_stable_time_step(model, nullptr, dt_e.data());
+  const StableStep unscaled = whole_model_stable_time_step(model, dt_e.data());
   report.unscaled_time_step = std::min(time_step_scale_factor * unscaled.dt, maximum_time_step);
   report.target_time_step =
       spec.target_time_step ? *spec.target_time_step : *spec.largest_factor * report.unscaled_time_step;
@@ -58,7 +59,9 @@ MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double
                             "run cannot reach it; lower the target or raise 'maximum time step'",
                             report.target_time_step, key.c_str(), maximum_time_step));
 
-  // Per element: s_e = (T_e / dt_e)^2 where dt_e < T_e; dm_e = (s_e - 1) rho V0 to the nodes (1/8 each).
+  // Per element: s_e = (T_e / dt_e)^2 where dt_e < T_e; dm_e = (s_e - 1) rho V0 to the nodes (1/8 each),
+  // this rank's elements to its partial nodal masses (summed over the ranks by build_model), the
+  // report's sums over the ranks.
   const double element_target = report.target_time_step / time_step_scale_factor;
   for (auto& blk : model.blocks) {
     BlockMassScaling b;
@@ -67,7 +70,6 @@ MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double
     b.listed = spec.blocks.empty() || std::find(spec.blocks.begin(), spec.blocks.end(), blk.name) != spec.blocks.end();
     const double rho = materials::density_of(blk.material);
     for (int e = 0; e < blk.count; ++e) b.mass += rho * blk.volume0[e];
-    report.unscaled_mass += b.mass;
     if (b.listed) {
       blk.mass_scale.assign(static_cast<std::size_t>(blk.count), 1.0);
       for (int e = 0; e < blk.count; ++e) {
@@ -83,6 +85,16 @@ MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double
       }
       if (b.scaled_elements == 0) blk.mass_scale.clear();
     }
+    if (!model.domain.serial()) {
+      double sums[4] = {b.mass, b.added_mass, double(b.elements), double(b.scaled_elements)};
+      parallel::sum(sums, 4);
+      b.mass = sums[0];
+      b.added_mass = sums[1];
+      b.elements = static_cast<int>(sums[2]);
+      b.scaled_elements = static_cast<int>(sums[3]);
+      b.largest_scale = parallel::max(b.largest_scale);
+    }
+    report.unscaled_mass += b.mass;
     report.added_mass += b.added_mass;
     report.blocks.push_back(b);
   }

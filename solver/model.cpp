@@ -16,6 +16,7 @@
 #include "solver/contact_setup.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/run_log.hpp"
+#include "solver/parallel/communicator.hpp"
 #include "solver/stable_time_step.hpp"
 #include "solver/surface_layer_blocks.hpp"
 
@@ -41,20 +42,6 @@ std::string list_names(const std::vector<std::string>& names) {
   const std::string hint = inputs::closest_match(name, known);
   throw SetupError(where.str() + ": error: " + what + " '" + name + "' is not in the mesh" +
                    (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; the mesh has: " + list_names(known));
-}
-
-const std::vector<int>& node_set(const mesh::Mesh& m, const std::string& name, const inputs::SourceLocation& where) {
-  auto it = m.node_sets.find(name);
-  if (it == m.node_sets.end()) missing(where, "node set", name, keys_of(m.node_sets));
-  if (it->second.empty()) throw SetupError(where.str() + ": error: node set '" + name + "' is empty");
-  return it->second;
-}
-
-const std::vector<mesh::Side>& side_set(const mesh::Mesh& m, const std::string& name, const inputs::SourceLocation& where) {
-  auto it = m.side_sets.find(name);
-  if (it == m.side_sets.end()) missing(where, "side set", name, keys_of(m.side_sets));
-  if (it->second.empty()) throw SetupError(where.str() + ": error: side set '" + name + "' is empty");
-  return it->second;
 }
 
 int function_index(const Model& model, const std::string& name) {
@@ -161,171 +148,285 @@ const inputs::FiniteElementModelSpec& model_spec(const inputs::Deck& deck) {
 }
 }  // namespace
 
-Model build_model(const inputs::Deck& deck) { return build_model(deck, build_mesh(model_spec(deck))); }
+mesh::Mesh build_mesh(const inputs::Deck& deck) { return build_mesh(model_spec(deck)); }
 
-Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
+Model build_model(const inputs::Deck& deck) { return build_model(deck, build_mesh(deck)); }
+
+namespace {
+
+// Sizes of the whole mesh's node and side sets (a rank's part may hold none of a set's entries).
+struct SetSizes {
+  std::map<std::string, int> node, side;
+};
+
+SetSizes set_sizes_of(const mesh::Mesh& m) {
+  SetSizes s;
+  for (const auto& [name, nodes] : m.node_sets) s.node[name] = static_cast<int>(nodes.size());
+  for (const auto& [name, sides] : m.side_sets) s.side[name] = static_cast<int>(sides.size());
+  return s;
+}
+
+// [node] 1 where all three velocity components are prescribed (fixed or driven), for the tangential pairs.
+std::vector<char> prescribed_nodes(const Model& model) {
+  std::vector<char> constrained(model.mass.size(), 0), prescribed(model.mass.size(), 0);
+  for (int dof : model.constraints.dof) ++constrained[static_cast<std::size_t>(dof / 3)];
+  for (std::size_t n = 0; n < constrained.size(); ++n) prescribed[n] = constrained[n] == 3;
+  return prescribed;
+}
+
+// The surface nodes' masses and prescribed flags in global numbering (ContactGeometry): every rank
+// puts in the values of the surface nodes it owns, one sum over the ranks completes them (each value
+// has one owner, so the sum is exact).
+struct GatheredSurface {
+  std::vector<double> mass, unscaled_mass;
+  std::vector<char> prescribed;
+};
+
+GatheredSurface gather_surface_values(const Model& model, const mesh::Mesh& contact_mesh,
+                                      const std::vector<double>& unscaled_mass) {
+  const auto& d = model.domain;
+  std::vector<int> nodes = contact_mesh.connectivity;
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const std::vector<char> prescribed = prescribed_nodes(model);
+  const std::size_t ns = nodes.size();
+  std::vector<double> values(3 * ns, 0.0);  // mass, unscaled mass, prescribed
+  for (std::size_t k = 0; k < ns; ++k) {
+    const auto it = std::lower_bound(d.global_node.begin(), d.global_node.end(), nodes[k]);
+    if (it == d.global_node.end() || *it != nodes[k]) continue;
+    const auto l = static_cast<std::size_t>(it - d.global_node.begin());
+    if (!(d.owned[l] > 0.0)) continue;
+    values[3 * k] = model.mass[l];
+    values[3 * k + 1] = unscaled_mass.empty() ? 0.0 : unscaled_mass[l];
+    values[3 * k + 2] = prescribed[l];
+  }
+  parallel::sum(values.data(), static_cast<int>(values.size()));
+  GatheredSurface g;
+  const auto gn = static_cast<std::size_t>(d.global_node_count);
+  g.mass.assign(gn, 0.0);
+  if (!unscaled_mass.empty()) g.unscaled_mass.assign(gn, 0.0);
+  g.prescribed.assign(gn, 0);
+  for (std::size_t k = 0; k < ns; ++k) {
+    const auto n = static_cast<std::size_t>(nodes[k]);
+    g.mass[n] = values[3 * k];
+    if (!unscaled_mass.empty()) g.unscaled_mass[n] = values[3 * k + 1];
+    g.prescribed[n] = values[3 * k + 2] > 0.5;
+  }
+  return g;
+}
+
+
+// Silent boundaries, accumulated per node over the faces (the rank's faces; summed over the ranks later).
+struct SilentSums {
+  std::vector<double> area;          // [node][3] area vector / 4
+  std::vector<double> coefficients;  // [node][3] c_n, c_t, faces touching the node
+};
+
+Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part,
+               const mesh::Mesh* contact_mesh);
+
+}  // namespace
+
+Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) { return assemble(deck, std::move(mesh), nullptr, nullptr); }
+
+Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const mesh::Mesh& contact_mesh) {
+  mesh::Mesh mesh = std::move(part.mesh);
+  return assemble(deck, std::move(mesh), &part, &contact_mesh);
+}
+
+namespace {
+
+Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part,
+               const mesh::Mesh* contact_mesh) {
   const auto& region = deck.procedure.region;
   const inputs::FiniteElementModelSpec* fem = &model_spec(deck);
   Model model;
   model.mesh = std::move(mesh);
   const mesh::Mesh& m = model.mesh;
   const int nn = m.node_count();
-
-  for (const auto& f : deck.functions) {
-    model.functions.emplace_back(f);
-    model.function_names.push_back(f.name);
-  }
-
-  // Element blocks: every mesh block needs parameters, every parameter block a mesh block.
-  std::vector<std::string> block_names;
-  for (const auto& b : m.blocks) block_names.push_back(b.name);
-  for (const auto& p : fem->blocks)
-    if (!m.find_block(p.block)) {
-      const std::string hint = inputs::closest_match(p.block, block_names);
-      throw SetupError(p.where.str() + ": error: block '" + p.block + "' is not in the mesh" +
-                       (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; the mesh has: " + list_names(block_names));
-    }
-  model.element_block.assign(static_cast<std::size_t>(m.element_count()), -1);
-  for (const auto& b : m.blocks) {
-    auto p = std::find_if(fem->blocks.begin(), fem->blocks.end(), [&](const auto& q) { return q.block == b.name; });
-    if (p == fem->blocks.end())
-      throw SetupError(fem->where.str() + ": error: mesh block '" + b.name +
-                       "' has no 'begin parameters for block " + b.name + "' in finite element model '" + fem->name + "'");
-    const auto* material = deck.find_material(p->material);
-    const auto* section = deck.find_section(p->section);
-    model.blocks.push_back(make_element_block(m, b, make_material(*material, p->model), *section));
-    for (int e = 0; e < b.element_count; ++e) model.element_block[b.first_element + e] = static_cast<int>(model.blocks.size() - 1);
-  }
-
-  // Bodies: a surface layer block belongs to the block it was split from (followed back to a block
-  // of the mesh as built or read, which the split never empties).
-  for (const auto& b : model.blocks) {
-    std::string root = b.name;
-    for (auto sl = fem->surface_layers.rbegin(); sl != fem->surface_layers.rend(); ++sl)
-      if (sl->name == root) root = sl->from_block;
-    auto body = std::find_if(model.blocks.begin(), model.blocks.end(), [&](const auto& q) { return q.name == root; });
-    model.block_body.push_back(body != model.blocks.end() ? static_cast<int>(body - model.blocks.begin())
-                                                          : static_cast<int>(model.block_body.size()));
-  }
-
-  // Lumped mass: rho V0 / 8 to each node of each element (docs/theory.md 1.2).
-  model.mass.assign(static_cast<std::size_t>(nn), 0.0);
-  for (const auto& blk : model.blocks) {
-    const double rho = materials::density_of(blk.material);
-    for (int e = 0; e < blk.count; ++e) {
-      const double share = rho * blk.volume0[e] / 8.0;
-      for (int I = 0; I < 8; ++I) model.mass[m.connectivity[8 * (blk.first_element + e) + I]] += share;
-      model.total_mass += 8.0 * share;
-    }
-  }
-  for (int n = 0; n < nn; ++n)
-    if (!(model.mass[n] > 0.0))
-      throw SetupError("mesh node " + std::to_string(n + 1) + " belongs to no element (zero mass); remove it from the mesh");
-
-  // Kinematic constraints; a dof may be constrained once only.
-  std::map<int, std::string> owner;  // dof -> deck location that constrained it
-  auto constrain = [&](int dof, Constraints::Kind kind, int function, double scale, const inputs::SourceLocation& where) {
-    auto [it, inserted] = owner.emplace(dof, where.str());
-    if (!inserted)
-      throw SetupError(where.str() + ": error: node " + std::to_string(dof / 3 + 1) + " component " + "xyz"[dof % 3] +
-                       " is already constrained at " + it->second + "; constrain each component once");
-    model.constraints.dof.push_back(dof);
-    model.constraints.kind.push_back(kind);
-    model.constraints.function.push_back(function);
-    model.constraints.scale.push_back(scale);
+  if (part)
+    model.domain.init_parallel(*part);
+  else
+    model.domain.init_serial(nn, m.element_count());
+  parallel::Domain& domain = model.domain;
+  const SetSizes sizes = part ? SetSizes{part->node_set_size, part->side_set_size} : set_sizes_of(m);
+  // Node numbers in messages are the whole mesh's.
+  const auto number = [&](int local_node) { return std::to_string(domain.global_node[local_node] + 1); };
+  const auto checked_node_set = [&](const std::string& name, const inputs::SourceLocation& where) -> const std::vector<int>& {
+    auto it = m.node_sets.find(name);
+    if (it == m.node_sets.end()) missing(where, "node set", name, keys_of(m.node_sets));
+    if (sizes.node.at(name) == 0) throw SetupError(where.str() + ": error: node set '" + name + "' is empty");
+    return it->second;
   };
-  for (const auto& f : region.fixed_displacements)
-    for (int n : node_set(m, f.node_set, f.where))
-      for (auto c : f.components) constrain(3 * n + static_cast<int>(c), Constraints::Kind::fixed, -1, 0.0, f.where);
-  for (const auto& p : region.prescribed_motions) {
-    const auto kind = p.kind == inputs::PrescribedMotionSpec::Kind::displacement ? Constraints::Kind::displacement
-                                                                                 : Constraints::Kind::velocity;
-    for (int n : node_set(m, p.node_set, p.where))
-      constrain(3 * n + static_cast<int>(p.component), kind, function_index(model, p.function), p.scale_factor, p.where);
-  }
+  const auto checked_side_set = [&](const std::string& name, const inputs::SourceLocation& where) -> const std::vector<mesh::Side>& {
+    auto it = m.side_sets.find(name);
+    if (it == m.side_sets.end()) missing(where, "side set", name, keys_of(m.side_sets));
+    if (sizes.side.at(name) == 0) throw SetupError(where.str() + ": error: side set '" + name + "' is empty");
+    return it->second;
+  };
 
-  model.initial_velocity.assign(3 * static_cast<std::size_t>(nn), 0.0);
-  for (const auto& iv : region.initial_velocities) {
-    std::vector<int> nodes;
-    if (!iv.node_set.empty()) {
-      nodes = node_set(m, iv.node_set, iv.where);
-    } else {
-      const mesh::Block* b = m.find_block(iv.block);
-      if (!b) missing(iv.where, "block", iv.block, block_names);
-      for (int e = b->first_element; e < b->first_element + b->element_count; ++e)
-        for (int I = 0; I < 8; ++I) nodes.push_back(m.connectivity[8 * e + I]);
+  SilentSums silent;
+  // Checks that can fail on some ranks only (a node or element of this rank's part) are agreed on
+  // before the collective part below, so that every rank stops with the same message.
+  std::exception_ptr local_error;
+  try {
+    for (const auto& f : deck.functions) {
+      model.functions.emplace_back(f);
+      model.function_names.push_back(f.name);
     }
-    for (int n : nodes)
-      for (int i = 0; i < 3; ++i) model.initial_velocity[3 * n + i] = iv.velocity[i];
-  }
 
-  for (const auto& p : region.pressures) {
-    PressureLoad load;
-    for (const auto& s : side_set(m, p.side_set, p.where)) {
-      const auto nodes = m.side_nodes(s);
-      load.face_nodes.insert(load.face_nodes.end(), nodes.begin(), nodes.end());
-      load.face_element.push_back(s.element);
+    // Element blocks: every mesh block needs parameters, every parameter block a mesh block.
+    std::vector<std::string> block_names;
+    for (const auto& b : m.blocks) block_names.push_back(b.name);
+    for (const auto& p : fem->blocks)
+      if (!m.find_block(p.block)) {
+        const std::string hint = inputs::closest_match(p.block, block_names);
+        throw SetupError(p.where.str() + ": error: block '" + p.block + "' is not in the mesh" +
+                         (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; the mesh has: " + list_names(block_names));
+      }
+    model.element_block.assign(static_cast<std::size_t>(m.element_count()), -1);
+    for (const auto& b : m.blocks) {
+      auto p = std::find_if(fem->blocks.begin(), fem->blocks.end(), [&](const auto& q) { return q.block == b.name; });
+      if (p == fem->blocks.end())
+        throw SetupError(fem->where.str() + ": error: mesh block '" + b.name +
+                         "' has no 'begin parameters for block " + b.name + "' in finite element model '" + fem->name + "'");
+      const auto* material = deck.find_material(p->material);
+      const auto* section = deck.find_section(p->section);
+      model.blocks.push_back(make_element_block(m, b, make_material(*material, p->model), *section, part ? domain.global_element : std::vector<int>{}));
+      for (int e = 0; e < b.element_count; ++e) model.element_block[b.first_element + e] = static_cast<int>(model.blocks.size() - 1);
     }
-    load.function = function_index(model, p.function);
-    load.scale = p.scale_factor;
-    model.pressures.push_back(std::move(load));
-  }
 
-  // Prescribed forces: on free dofs only (a constrained dof's force would go into its reaction).
-  for (const auto& p : region.prescribed_forces) {
-    NodalForceLoad load;
-    const auto nodes = node_set(m, p.node_set, p.where);
-    for (int n : nodes) {
-      const int dof = 3 * n + static_cast<int>(p.component);
-      if (auto it = owner.find(dof); it != owner.end())
-        throw SetupError(p.where.str() + ": error: 'begin prescribed force' loads node " + std::to_string(n + 1) +
-                         " component " + "xyz"[dof % 3] + ", which is constrained at " + it->second +
-                         "; load a free component or remove the constraint");
-      load.dof.push_back(dof);
+    // Bodies: a surface layer block belongs to the block it was split from (followed back to a block
+    // of the mesh as built or read, which the split never empties).
+    for (const auto& b : model.blocks) {
+      std::string root = b.name;
+      for (auto sl = fem->surface_layers.rbegin(); sl != fem->surface_layers.rend(); ++sl)
+        if (sl->name == root) root = sl->from_block;
+      auto body = std::find_if(model.blocks.begin(), model.blocks.end(), [&](const auto& q) { return q.name == root; });
+      model.block_body.push_back(body != model.blocks.end() ? static_cast<int>(body - model.blocks.begin())
+                                                            : static_cast<int>(model.block_body.size()));
     }
-    load.function = function_index(model, p.function);
-    load.scale = nodes.empty() ? 0.0 : p.scale_factor / static_cast<double>(nodes.size());
-    model.nodal_forces.push_back(std::move(load));
-  }
 
-  // Silent boundaries: accumulate area vectors and coefficients per node over all faces.
-  std::map<int, std::array<double, 5>> silent;  // node -> area vector (3), c_n sum, c_t sum
-  for (const auto& sb : region.silent_boundaries) {
-    for (const auto& s : side_set(m, sb.side_set, sb.where)) {
-      const auto& blk = model.blocks[model.element_block[s.element]];
+    // Lumped mass: rho V0 / 8 to each node of each element (docs/theory.md 1.2).
+    model.mass.assign(static_cast<std::size_t>(nn), 0.0);
+    for (const auto& blk : model.blocks) {
       const double rho = materials::density_of(blk.material);
-      const double cp = std::sqrt(materials::wave_modulus_of(blk.material) / rho);
-      const double cs = std::sqrt(materials::shear_modulus_of(blk.material) / rho);
-      const auto nodes = m.side_nodes(s);
-      double a[3];
-      area_vector(m.coordinates.data(), nodes, a);
-      const double area = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-      for (int n : nodes) {
-        auto& acc = silent[n];
-        for (int i = 0; i < 3; ++i) acc[i] += a[i] / 4.0;
-        acc[3] += sb.normal_coefficient * rho * cp * area / 4.0;
-        acc[4] += sb.tangential_coefficient * rho * cs * area / 4.0;
+      for (int e = 0; e < blk.count; ++e) {
+        const double share = rho * blk.volume0[e] / 8.0;
+        for (int I = 0; I < 8; ++I) model.mass[m.connectivity[8 * (blk.first_element + e) + I]] += share;
+        model.total_mass += 8.0 * share;
       }
     }
+    for (int n = 0; n < nn; ++n)
+      if (!(model.mass[n] > 0.0)) throw orphan_node_error(domain.global_node[n]);
+
+    // Kinematic constraints; a dof may be constrained once only.
+    std::map<int, std::string> owner;  // dof -> deck location that constrained it
+    auto constrain = [&](int dof, Constraints::Kind kind, int function, double scale, const inputs::SourceLocation& where) {
+      auto [it, inserted] = owner.emplace(dof, where.str());
+      if (!inserted)
+        throw SetupError(where.str() + ": error: node " + number(dof / 3) + " component " + "xyz"[dof % 3] +
+                         " is already constrained at " + it->second + "; constrain each component once");
+      model.constraints.dof.push_back(dof);
+      model.constraints.kind.push_back(kind);
+      model.constraints.function.push_back(function);
+      model.constraints.scale.push_back(scale);
+    };
+    for (const auto& f : region.fixed_displacements)
+      for (int n : checked_node_set(f.node_set, f.where))
+        for (auto c : f.components) constrain(3 * n + static_cast<int>(c), Constraints::Kind::fixed, -1, 0.0, f.where);
+    for (const auto& p : region.prescribed_motions) {
+      const auto kind = p.kind == inputs::PrescribedMotionSpec::Kind::displacement ? Constraints::Kind::displacement
+                                                                                   : Constraints::Kind::velocity;
+      for (int n : checked_node_set(p.node_set, p.where))
+        constrain(3 * n + static_cast<int>(p.component), kind, function_index(model, p.function), p.scale_factor, p.where);
+    }
+
+    model.initial_velocity.assign(3 * static_cast<std::size_t>(nn), 0.0);
+    for (const auto& iv : region.initial_velocities) {
+      std::vector<int> nodes;
+      if (!iv.node_set.empty()) {
+        nodes = checked_node_set(iv.node_set, iv.where);
+      } else {
+        const mesh::Block* b = m.find_block(iv.block);
+        if (!b) missing(iv.where, "block", iv.block, block_names);
+        for (int e = b->first_element; e < b->first_element + b->element_count; ++e)
+          for (int I = 0; I < 8; ++I) nodes.push_back(m.connectivity[8 * e + I]);
+      }
+      for (int n : nodes)
+        for (int i = 0; i < 3; ++i) model.initial_velocity[3 * n + i] = iv.velocity[i];
+    }
+
+    for (const auto& p : region.pressures) {
+      PressureLoad load;
+      for (const auto& s : checked_side_set(p.side_set, p.where)) {
+        const auto nodes = m.side_nodes(s);
+        load.face_nodes.insert(load.face_nodes.end(), nodes.begin(), nodes.end());
+        load.face_element.push_back(s.element);
+      }
+      load.function = function_index(model, p.function);
+      load.scale = p.scale_factor;
+      model.pressures.push_back(std::move(load));
+    }
+
+    // Prescribed forces: on free dofs only (a constrained dof's force would go into its reaction).
+    for (const auto& p : region.prescribed_forces) {
+      NodalForceLoad load;
+      const auto nodes = checked_node_set(p.node_set, p.where);
+      for (int n : nodes) {
+        const int dof = 3 * n + static_cast<int>(p.component);
+        if (auto it = owner.find(dof); it != owner.end())
+          throw SetupError(p.where.str() + ": error: 'begin prescribed force' loads node " + number(n) +
+                           " component " + "xyz"[dof % 3] + ", which is constrained at " + it->second +
+                           "; load a free component or remove the constraint");
+        // On the owner's copy only: shared nodes' partial forces are summed over the ranks.
+        if (domain.owned[n] > 0.0) load.dof.push_back(dof);
+      }
+      load.function = function_index(model, p.function);
+      const int whole_set = sizes.node.at(p.node_set);
+      load.scale = whole_set == 0 ? 0.0 : p.scale_factor / static_cast<double>(whole_set);
+      model.nodal_forces.push_back(std::move(load));
+    }
+
+    // Silent boundaries: accumulate area vectors and coefficients per node over the faces.
+    if (!region.silent_boundaries.empty()) {
+      silent.area.assign(3 * static_cast<std::size_t>(nn), 0.0);
+      silent.coefficients.assign(3 * static_cast<std::size_t>(nn), 0.0);
+    }
+    for (const auto& sb : region.silent_boundaries) {
+      for (const auto& s : checked_side_set(sb.side_set, sb.where)) {
+        const auto& blk = model.blocks[model.element_block[s.element]];
+        const double rho = materials::density_of(blk.material);
+        const double cp = std::sqrt(materials::wave_modulus_of(blk.material) / rho);
+        const double cs = std::sqrt(materials::shear_modulus_of(blk.material) / rho);
+        const auto nodes = m.side_nodes(s);
+        double a[3];
+        area_vector(m.coordinates.data(), nodes, a);
+        const double area = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        for (int n : nodes) {
+          for (int i = 0; i < 3; ++i) silent.area[3 * n + i] += a[i] / 4.0;
+          silent.coefficients[3 * n] += sb.normal_coefficient * rho * cp * area / 4.0;
+          silent.coefficients[3 * n + 1] += sb.tangential_coefficient * rho * cs * area / 4.0;
+          silent.coefficients[3 * n + 2] += 1.0;
+        }
+      }
+    }
+    model.mass_damping = region.mass_damping_coefficient;
+    // History columns of node sets: checked here so that `tribex check` finds a missing one.
+    if (region.history) {
+      for (const auto& name : region.history->reaction_force_node_sets)
+        checked_node_set(name, region.history->reaction_force_where);
+      for (const auto& name : region.history->displacement_node_sets) checked_node_set(name, region.history->displacement_where);
+    }
+
+  } catch (...) {
+    local_error = std::current_exception();
   }
-  for (const auto& [n, acc] : silent) {
-    const double len = std::sqrt(acc[0] * acc[0] + acc[1] * acc[1] + acc[2] * acc[2]);
-    model.silent.node.push_back(n);
-    for (int i = 0; i < 3; ++i) model.silent.normal.push_back(len > 0.0 ? acc[i] / len : 0.0);
-    model.silent.c_normal.push_back(acc[3]);
-    model.silent.c_tangential.push_back(acc[4]);
-  }
-  model.mass_damping = region.mass_damping_coefficient;
-  // History columns of node sets: checked here so that `tribex check` finds a missing one.
-  if (region.history) {
-    for (const auto& name : region.history->reaction_force_node_sets)
-      node_set(m, name, region.history->reaction_force_where);
-    for (const auto& name : region.history->displacement_node_sets) node_set(m, name, region.history->displacement_where);
-  }
+  agree_on_errors(local_error);
 
   // Mass scaling before the contact, which is built on the scaled masses and step (the junction's slip
   // prediction, the rough-surface bounds) but takes its penalty from the unscaled ones, kept here
-  // (docs/theory.md 1.4.1).
+  // (docs/theory.md 1.4.1). Both act on this rank's partial masses, summed over the ranks after.
   std::vector<double> unscaled_mass;
   if (region.mass_scaling) {
     const auto& tc = deck.procedure.time_control;
@@ -333,11 +434,35 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
     model.mass_scaling = apply_mass_scaling(*region.mass_scaling, tc.time_step_scale_factor,
                                             tc.maximum_time_step.value_or(INFINITY), model);
   }
+  domain.sum_shared(model.mass.data(), 1);
+  if (!unscaled_mass.empty()) domain.sum_shared(unscaled_mass.data(), 1);
+  parallel::sum(&model.total_mass, 1);
+  if (!silent.area.empty()) {
+    domain.sum_shared(silent.area.data(), 3);
+    domain.sum_shared(silent.coefficients.data(), 3);
+    for (int n = 0; n < nn; ++n) {
+      if (silent.coefficients[3 * n + 2] == 0.0) continue;
+      const double* acc = &silent.area[3 * static_cast<std::size_t>(n)];
+      const double len = std::sqrt(acc[0] * acc[0] + acc[1] * acc[1] + acc[2] * acc[2]);
+      model.silent.node.push_back(n);
+      for (int i = 0; i < 3; ++i) model.silent.normal.push_back(len > 0.0 ? acc[i] / len : 0.0);
+      model.silent.c_normal.push_back(silent.coefficients[3 * n]);
+      model.silent.c_tangential.push_back(silent.coefficients[3 * n + 1]);
+    }
+  }
   if (region.contact) {
     const auto& tc = deck.procedure.time_control;
-    const double dt = std::min(tc.time_step_scale_factor * compute_stable_time_step(model, nullptr).dt,
+    const double dt = std::min(tc.time_step_scale_factor * whole_model_stable_time_step(model).dt,
                                tc.maximum_time_step.value_or(INFINITY));
-    model.contact = build_contact(*region.contact, model, dt, &model.preflight, &model.setup);
+    if (part) {
+      GatheredSurface g = gather_surface_values(model, *contact_mesh, unscaled_mass);
+      model.contact = build_contact(*region.contact, model, {*contact_mesh, g.mass, std::move(g.prescribed)}, dt,
+                                    &model.preflight, &model.setup);
+      unscaled_mass = std::move(g.unscaled_mass);
+    } else {
+      model.contact = build_contact(*region.contact, model, {m, model.mass, prescribed_nodes(model)}, dt,
+                                    &model.preflight, &model.setup);
+    }
     if (model.mass_scaling.active) {
       model.contact->set_unscaled_penalty_reference(std::move(unscaled_mass), model.mass_scaling.unscaled_time_step);
       model.preflight.push_back(
@@ -347,8 +472,12 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
                  contact::ContactManager::scaled_penalty_cap(region.contact->penalty_scale_factor)));
     }
   }
-  model.domain.init_serial(nn, m.element_count());
+  // The counters report the loop's messages (summary.json rank_counts, per step): set-up's sums are not among them.
+  domain.traffic = {};
+  domain.communication_seconds = 0.0;
   return model;
 }
+
+}  // namespace
 
 }  // namespace tribex::solver

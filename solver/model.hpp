@@ -16,6 +16,7 @@
 #include "solver/guards/run_warning.hpp"
 #include "solver/mass_scaling.hpp"
 #include "solver/parallel/domain.hpp"
+#include "solver/parallel/mesh_part.hpp"
 #include "solver/time_function.hpp"
 
 namespace tribex::solver {
@@ -77,7 +78,7 @@ struct Model {
   std::unique_ptr<contact::ContactManager> contact;
   std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)
   SetupFindings setup;  // warnings and unsafe choices found at set-up, for the run guards (solver/guards/README.md)
-  /// This rank's share of a parallel run (parallel::localize); identity on one rank.
+  /// This rank's share of a parallel run (from its MeshPart); identity on one rank.
   parallel::Domain domain;
 };
 
@@ -88,6 +89,16 @@ Model build_model(const inputs::Deck& deck);
 
 /// The same on a mesh built elsewhere (tests, tools that generate meshes themselves).
 Model build_model(const inputs::Deck& deck, mesh::Mesh mesh);
+
+/// Collective, in a parallel run: this rank's model from its part of the mesh alone
+/// (parallel::distribute_mesh). Nodal values that sum over elements (lumped mass, added mass,
+/// silent-boundary coefficients) are summed over the ranks that share a node; `contact_mesh` is
+/// contact_surface_mesh of the whole mesh (the same on every rank; ignored without contact). An
+/// error found on some ranks only stops every rank with the lowest one's message.
+Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const mesh::Mesh& contact_mesh);
+
+/// The mesh of the deck's region (its finite element model), as build_model(deck) builds it.
+mesh::Mesh build_mesh(const inputs::Deck& deck);
 
 /// The mesh of a finite element model spec: generated boxes (appended in deck order) or a gmsh file.
 mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "solver/hex8/element_stable_step.hpp"
+#include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver {
 
@@ -38,6 +39,17 @@ StableStep compute_stable_time_step(const Model& model, const double* u, double*
         blk.material);
   }
   return {min.dt, min.controlling_element, min.inverted_element};
+}
+
+StableStep whole_model_stable_time_step(const Model& model, double* per_element) {
+  StableStep step = compute_stable_time_step(model, nullptr, per_element);
+  if (step.controlling_element >= 0) step.controlling_element = model.domain.global_element[step.controlling_element];
+  if (step.inverted_element >= 0) step.inverted_element = model.domain.global_element[step.inverted_element];
+  if (!model.domain.serial()) {
+    if (step.controlling_element < 0) step.controlling_element = model.domain.global_element_count;  // no elements here
+    step.dt = parallel::min_location(step.dt, step.controlling_element);
+  }
+  return step;
 }
 
 }  // namespace tribex::solver

@@ -24,4 +24,9 @@ struct StableStep {
 /// the block's times the element's mass-scaling factor (ElementBlock::mass_scale).
 StableStep compute_stable_time_step(const Model& model, const double* u, double* per_element = nullptr);
 
+/// The same in the reference configuration over the whole model: in a parallel run the minimum over
+/// the ranks (collective), the controlling element in the whole mesh's numbering (ties to the lowest).
+/// `per_element` gets this rank's elements, in its local numbering.
+StableStep whole_model_stable_time_step(const Model& model, double* per_element = nullptr);
+
 }  // namespace tribex::solver

@@ -13,6 +13,7 @@
 #include "mesh/exodus_io.hpp"
 #include "mesh/mesh_error.hpp"
 #include "solver/errors.hpp"
+#include "solver/output/mesh_outline.hpp"
 #include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver {
@@ -251,11 +252,13 @@ ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& mesh,
   Impl& m = *impl_;
   m.directory = directory;
   m.path = (std::filesystem::path(directory) / "results.exo").string();
-  m.nodes = mesh.node_count();
-  m.elements = mesh.element_count();
+  // A parallel run: `mesh` is the whole mesh on rank 0 only; the others take its outline.
+  const output::MeshOutline outline = output::outline_of(mesh, "m", slab != nullptr);
+  m.nodes = static_cast<int>(outline.nodes);
+  m.elements = static_cast<int>(outline.elements);
   m.global_names = std::move(global_names);
   std::vector<const mesh::Block*> sorted;
-  for (const auto& b : mesh.blocks)
+  for (const auto& b : outline.blocks)
     if (b.element_count > 0) sorted.push_back(&b);
   std::sort(sorted.begin(), sorted.end(), [](const auto* a, const auto* b) { return a->first_element < b->first_element; });
   for (std::size_t b = 0; b < sorted.size(); ++b)

@@ -16,6 +16,7 @@
 #include "solver/errors.hpp"
 #include "solver/output/h5_handles.hpp"
 #include "solver/output/length_unit.hpp"
+#include "solver/output/mesh_outline.hpp"
 #include "solver/output/xdmf_document.hpp"
 #include "solver/parallel/communicator.hpp"
 
@@ -58,9 +59,9 @@ constexpr int voigt_of_full[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
 
 // The XDMF grids: one per block (blocks are contiguous element ranges), in element order; a run of
 // elements in no block (block_id -1) gets a grid "no_block", so every element is in one grid.
-std::vector<output::XdmfBlock> grid_ranges(const mesh::Mesh& mesh, long long elements) {
+std::vector<output::XdmfBlock> grid_ranges(const std::vector<mesh::Block>& mesh_blocks, long long elements) {
   std::vector<output::XdmfBlock> blocks;
-  for (const auto& b : mesh.blocks)
+  for (const auto& b : mesh_blocks)
     if (b.element_count > 0) blocks.push_back({b.name, b.first_element, b.element_count});
   std::sort(blocks.begin(), blocks.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<output::XdmfBlock> grids;
@@ -289,21 +290,23 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
                              std::optional<double> resume_time, const ResultsOptions& options) {
   if (mesh.coordinates.size() % 3 != 0 || mesh.connectivity.size() % 8 != 0)
     throw std::invalid_argument("ResultsWriter: mesh arrays are not [n][3] and [e][8]");
-  const long long n = mesh.node_count();
-  const long long e = mesh.element_count();
-  std::vector<int> block_id(static_cast<std::size_t>(e), -1);
+  // A parallel run: `mesh` is the whole mesh on rank 0 only; the others take its outline.
+  const output::MeshOutline outline = output::outline_of(mesh, options.length_unit, slab != nullptr);
+  const bool holds_mesh = !slab || parallel::is_root();
+  const long long n = outline.nodes;
+  const long long e = outline.elements;
+  std::vector<int> block_id(holds_mesh ? static_cast<std::size_t>(e) : 0, -1);
   std::vector<std::string> names;
-  for (const auto& b : mesh.blocks) {
+  for (const auto& b : outline.blocks) {
     if (b.first_element < 0 || b.element_count < 0 || b.first_element + b.element_count > e)
       throw std::invalid_argument("ResultsWriter: block '" + b.name + "' runs past the last element");
-    for (int k = 0; k < b.element_count; ++k)
-      block_id[static_cast<std::size_t>(b.first_element + k)] = static_cast<int>(names.size());
+    if (holds_mesh)
+      for (int k = 0; k < b.element_count; ++k) block_id[static_cast<std::size_t>(b.first_element + k)] = static_cast<int>(names.size());
     names.push_back(b.name);
   }
   if (options.gzip_level < 0 || options.gzip_level > 9)
     throw std::invalid_argument("ResultsWriter: gzip level " + std::to_string(options.gzip_level) + " is not 0..9");
-  impl_ = std::make_unique<Impl>(directory, n, e, grid_ranges(mesh, e),
-                                 output::resolve_length_unit(options.length_unit, mesh), options.gzip_level);
+  impl_ = std::make_unique<Impl>(directory, n, e, grid_ranges(outline.blocks, e), outline.unit, options.gzip_level);
   QuietHdf5Errors quiet;
   if (slab) {
     impl_->parallel = true;
@@ -368,7 +371,7 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
       output::write_row_runs(d, type, data, runs, cols, what);
     };
     const int z = impl_->gzip_level;
-    std::vector<double> xyz_in_unit(mesh.coordinates);
+    std::vector<double> xyz_in_unit(holds_mesh ? mesh.coordinates : std::vector<double>{});
     for (double& x : xyz_in_unit) x *= impl_->unit.per_metre;
     H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p, z);
     output::write_string_attribute(xyz.get(), "units", impl_->unit.name, p);

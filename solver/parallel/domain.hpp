@@ -18,11 +18,9 @@
 
 #include <vector>
 
-namespace tribex::solver {
-struct Model;
-}
-
 namespace tribex::solver::parallel {
+
+struct MeshPart;
 
 class Domain {
  public:
@@ -50,12 +48,15 @@ class Domain {
   int shared_node_count() const { return static_cast<int>(shared_nodes_.size()); }
   /// The identity layout of a whole model on one rank (build_model sets it).
   void init_serial(int nodes, int elements);
+  /// This rank's layout from its part of the mesh (parallel/mesh_part.hpp): owned flags (the lowest
+  /// holder owns a node) and the halo lists of every neighbour rank.
+  void init_parallel(const MeshPart& part);
   int owned_node_count() const { return owned_nodes_; }
   /// Local indices of the owned nodes, ascending.
   const std::vector<int>& owned_local_nodes() const { return owned_local_nodes_; }
 
-  /// Sums a nodal [local node][3] vector over the ranks that share each node.
-  void sum_shared(double* nodal);
+  /// Sums a nodal [local node][width] vector (width 1..3) over the ranks that share each node.
+  void sum_shared(double* nodal, int width = 3);
 
   /// Contact surfaces: `surface_nodes` the sorted global nodes of all surfaces (same on every rank).
   void set_surface(const std::vector<int>& surface_nodes);
@@ -69,8 +70,6 @@ class Domain {
   static constexpr int kSurfaceValues = 9;  // x, v, f per surface node
 
  private:
-  friend Model localize(Model&& global, const std::vector<int>& part);
-
   int owned_nodes_ = 0;
   // halo
   std::vector<int> neighbours_;        // ascending
@@ -87,14 +86,7 @@ class Domain {
   std::vector<int> surface_order_;                       // [position in the gathered buffer] surface index k
   std::vector<int> surface_counts_, surface_displs_;     // in doubles (6 per node)
   std::vector<double> surface_send_, surface_recv_;
-  std::vector<int> node_owner_;        // [global node] owning rank
   std::vector<int> owned_local_nodes_;  // ascending
 };
-
-/// This rank's part of the model built on every rank from the whole mesh: elements with
-/// part[e] == rank, their nodes, restricted sets, constraints, loads and dashpots, the global
-/// lumped mass (so no mass exchange is needed), and the contact manager (global numbering) with
-/// the surface gather. On one rank the model is returned unchanged with an identity Domain.
-Model localize(Model&& global, const std::vector<int>& part);
 
 }  // namespace tribex::solver::parallel

@@ -41,7 +41,7 @@ struct RankCounts {
 long long peak_rss_bytes();
 
 /// This rank's counts from its model at the close. `spec` the deck's contact definition (nullptr:
-/// none): a surface face is owned here when its side-set entry survived localize (its element is
+/// none): a surface face is owned here when its side-set entry is in this rank's part (its element is
 /// this rank's); every other face the replicated contact holds is a ghost face.
 RankCounts count_rank(const Model& model, const inputs::ContactSpec* spec, long long peak_rss_setup);
 

@@ -3,7 +3,8 @@
 """Checks of parallel runs and restarts (tests/parallel/README.md), run by CTest (label mpi).
 
   parallel_check.py agree TRIBEX DECK OUT --ranks N --rtol R [--columns c1,c2,...] [--fields]
-      runs DECK on 1 and N ranks; every history column (or the listed ones) must agree:
+      runs DECK on 1 and N ranks (--reference DIR: the one-rank run is DIR, run before by the same
+      binary, e.g. a verification deck's CTest fixture); every history column (or the listed ones) must agree:
       max |a - b| over the rows <= R * max |a| of the column (of the vector, for a component
       NAME_x/_y/_z; of all energies, for an energy; absolute for energy_error); --fields also compares every
       dataset of results.h5 (gathered fields must land in global order).
@@ -58,10 +59,11 @@ def read(path):
 
 
 def agree(a):
-    serial, parallel = os.path.join(a.out, "np1"), os.path.join(a.out, f"np{a.ranks}")
-    for d in (serial, parallel):
+    serial, parallel = a.reference or os.path.join(a.out, "np1"), os.path.join(a.out, f"np{a.ranks}")
+    for d in ((parallel,) if a.reference else (serial, parallel)):
         shutil.rmtree(d, ignore_errors=True)
-    run(a.tribex, a.deck, serial, 1)
+    if not a.reference:
+        run(a.tribex, a.deck, serial, 1)
     run(a.tribex, a.deck, parallel, a.ranks)
     h1, r1 = read(os.path.join(serial, "history.csv"))
     h2, r2 = read(os.path.join(parallel, "history.csv"))
@@ -249,6 +251,8 @@ def main():
     ap.add_argument("--rtol", type=float, default=1e-10)
     ap.add_argument("--columns", default="")
     ap.add_argument("--fields", action="store_true")
+    ap.add_argument("--reference", default="",
+                    help="agree: the one-rank run's output folder, already run (a verification run's fixture)")
     ap.add_argument("--stop", type=int, default=100)
     ap.add_argument("--expect-code", type=int, default=3)
     ap.add_argument("--expect", default="")

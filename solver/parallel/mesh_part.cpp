@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: MIT
+#include "solver/parallel/mesh_part.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <utility>
+
+#include "solver/errors.hpp"
+#include "solver/parallel/communicator.hpp"
+
+namespace tribex::solver::parallel {
+namespace {
+
+// Plain bytes: counts as 64-bit, then the values (the same machine and build on both sides).
+class Writer {
+ public:
+  template <class T>
+  void values(const std::vector<T>& v) {
+    count(v.size());
+    append(v.data(), v.size() * sizeof(T));
+  }
+  void text(const std::string& s) {
+    count(s.size());
+    append(s.data(), s.size());
+  }
+  void count(std::size_t n) {
+    const long long c = static_cast<long long>(n);
+    append(&c, sizeof c);
+  }
+  std::vector<char> bytes;
+
+ private:
+  void append(const void* p, std::size_t n) {
+    const char* c = static_cast<const char*>(p);
+    bytes.insert(bytes.end(), c, c + n);
+  }
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::vector<char>& b) : bytes_(b) {}
+  template <class T>
+  std::vector<T> values() {
+    std::vector<T> v(count());
+    take(v.data(), v.size() * sizeof(T));
+    return v;
+  }
+  std::string text() {
+    std::string s(count(), '\0');
+    take(s.data(), s.size());
+    return s;
+  }
+  std::size_t count() {
+    long long c = 0;
+    take(&c, sizeof c);
+    return static_cast<std::size_t>(c);
+  }
+
+ private:
+  void take(void* p, std::size_t n) {
+    if (at_ + n > bytes_.size()) throw std::logic_error("set-up message shorter than its contents");
+    if (n) std::memcpy(p, bytes_.data() + at_, n);
+    at_ += n;
+  }
+  const std::vector<char>& bytes_;
+  std::size_t at_ = 0;
+};
+
+void write_mesh(Writer& w, const mesh::Mesh& m) {
+  w.values(m.coordinates);
+  w.values(m.connectivity);
+  w.count(m.blocks.size());
+  for (const auto& b : m.blocks) {
+    w.text(b.name);
+    w.values(std::vector<int>{b.first_element, b.element_count});
+  }
+  w.count(m.node_sets.size());
+  for (const auto& [name, nodes] : m.node_sets) {
+    w.text(name);
+    w.values(nodes);
+  }
+  w.count(m.side_sets.size());
+  for (const auto& [name, sides] : m.side_sets) {
+    w.text(name);
+    w.values(sides);
+  }
+}
+
+mesh::Mesh read_mesh(Reader& r) {
+  mesh::Mesh m;
+  m.coordinates = r.values<double>();
+  m.connectivity = r.values<int>();
+  for (std::size_t k = r.count(); k > 0; --k) {
+    mesh::Block b;
+    b.name = r.text();
+    const auto range = r.values<int>();
+    b.first_element = range.at(0);
+    b.element_count = range.at(1);
+    m.blocks.push_back(std::move(b));
+  }
+  for (std::size_t k = r.count(); k > 0; --k) {
+    std::string name = r.text();
+    m.node_sets[name] = r.values<int>();
+  }
+  for (std::size_t k = r.count(); k > 0; --k) {
+    std::string name = r.text();
+    m.side_sets[name] = r.values<mesh::Side>();
+  }
+  return m;
+}
+
+void write_sizes(Writer& w, const std::map<std::string, int>& sizes) {
+  w.count(sizes.size());
+  for (const auto& [name, n] : sizes) {
+    w.text(name);
+    w.count(static_cast<std::size_t>(n));
+  }
+}
+
+std::map<std::string, int> read_sizes(Reader& r) {
+  std::map<std::string, int> sizes;
+  for (std::size_t k = r.count(); k > 0; --k) {
+    std::string name = r.text();
+    sizes[name] = static_cast<int>(r.count());
+  }
+  return sizes;
+}
+
+std::vector<char> pack_part(const MeshPart& p) {
+  Writer w;
+  write_mesh(w, p.mesh);
+  w.values(p.global_node);
+  w.values(p.global_element);
+  w.values(p.holder_offset);
+  w.values(p.holder_rank);
+  w.values(std::vector<int>{p.global_node_count, p.global_element_count});
+  write_sizes(w, p.node_set_size);
+  write_sizes(w, p.side_set_size);
+  return std::move(w.bytes);
+}
+
+MeshPart unpack_part(const std::vector<char>& bytes) {
+  Reader r(bytes);
+  MeshPart p;
+  p.mesh = read_mesh(r);
+  p.global_node = r.values<int>();
+  p.global_element = r.values<int>();
+  p.holder_offset = r.values<int>();
+  p.holder_rank = r.values<int>();
+  const auto counts = r.values<int>();
+  p.global_node_count = counts.at(0);
+  p.global_element_count = counts.at(1);
+  p.node_set_size = read_sizes(r);
+  p.side_set_size = read_sizes(r);
+  return p;
+}
+
+constexpr int part_tag = 23;
+
+}  // namespace
+
+NodeHolders node_holders(const mesh::Mesh& mesh, const std::vector<int>& part) {
+  const int nn = mesh.node_count(), ne = mesh.element_count();
+  // The parts of each node's elements (CSR by incidence: 4 B per element corner), then sorted and
+  // made unique per node in place.
+  NodeHolders h;
+  h.offset.assign(static_cast<std::size_t>(nn) + 1, 0);
+  for (int n : mesh.connectivity) ++h.offset[static_cast<std::size_t>(n) + 1];
+  for (int n = 0; n < nn; ++n) {
+    if (h.offset[n + 1] == 0) throw orphan_node_error(n);
+    h.offset[n + 1] += h.offset[n];
+  }
+  std::vector<int> next(h.offset.begin(), h.offset.end() - 1);
+  h.rank.resize(mesh.connectivity.size());
+  for (int e = 0; e < ne; ++e)
+    for (int I = 0; I < 8; ++I) h.rank[next[mesh.connectivity[8 * static_cast<std::size_t>(e) + I]]++] = part[e];
+  next = {};
+  int kept = 0;
+  for (int n = 0; n < nn; ++n) {
+    const auto first = h.rank.begin() + h.offset[n], last = h.rank.begin() + h.offset[n + 1];
+    std::sort(first, last);
+    const auto end = std::unique(first, last);
+    h.offset[n] = kept;
+    for (auto it = first; it != end; ++it) h.rank[static_cast<std::size_t>(kept++)] = *it;  // kept <= the read position
+  }
+  h.offset[nn] = kept;
+  h.rank.resize(static_cast<std::size_t>(kept));
+  h.rank.shrink_to_fit();
+  return h;
+}
+
+MeshPart split_mesh(const mesh::Mesh& whole, const std::vector<int>& part, const NodeHolders& holders, int rank) {
+  MeshPart p;
+  const int gn = whole.node_count(), ge = whole.element_count();
+  p.global_node_count = gn;
+  p.global_element_count = ge;
+  for (int e = 0; e < ge; ++e)
+    if (part[e] == rank) p.global_element.push_back(e);
+  std::vector<int> local_of(static_cast<std::size_t>(gn), -1);
+  for (int e : p.global_element)
+    for (int I = 0; I < 8; ++I) local_of[whole.connectivity[8 * static_cast<std::size_t>(e) + I]] = 0;
+  for (int n = 0; n < gn; ++n)
+    if (local_of[n] == 0) {
+      local_of[n] = static_cast<int>(p.global_node.size());
+      p.global_node.push_back(n);
+    }
+  const std::size_t ln = p.global_node.size(), le = p.global_element.size();
+  mesh::Mesh& m = p.mesh;
+  m.coordinates.resize(3 * ln);
+  p.holder_offset.assign(ln + 1, 0);
+  for (std::size_t l = 0; l < ln; ++l) {
+    const int n = p.global_node[l];
+    for (int i = 0; i < 3; ++i) m.coordinates[3 * l + i] = whole.coordinates[3 * static_cast<std::size_t>(n) + i];
+    p.holder_rank.insert(p.holder_rank.end(), holders.rank.begin() + holders.offset[n],
+                         holders.rank.begin() + holders.offset[n + 1]);
+    p.holder_offset[l + 1] = static_cast<int>(p.holder_rank.size());
+  }
+  m.connectivity.resize(8 * le);
+  for (std::size_t l = 0; l < le; ++l)
+    for (int I = 0; I < 8; ++I)
+      m.connectivity[8 * l + I] = local_of[whole.connectivity[8 * static_cast<std::size_t>(p.global_element[l]) + I]];
+  // Blocks are contiguous ranges of global elements, so of local ones too.
+  for (const auto& b : whole.blocks) {
+    const auto first = std::lower_bound(p.global_element.begin(), p.global_element.end(), b.first_element);
+    const auto last = std::lower_bound(first, p.global_element.end(), b.first_element + b.element_count);
+    m.blocks.push_back({b.name, static_cast<int>(first - p.global_element.begin()), static_cast<int>(last - first)});
+  }
+  for (const auto& [name, nodes] : whole.node_sets) {
+    auto& out = m.node_sets[name];
+    for (int n : nodes)
+      if (local_of[n] >= 0) out.push_back(local_of[n]);
+    p.node_set_size[name] = static_cast<int>(nodes.size());
+  }
+  for (const auto& [name, sides] : whole.side_sets) {
+    auto& out = m.side_sets[name];
+    for (const auto& s : sides)
+      if (part[s.element] == rank) {
+        const auto at = std::lower_bound(p.global_element.begin(), p.global_element.end(), s.element);
+        out.push_back({static_cast<int>(at - p.global_element.begin()), s.face});
+      }
+    p.side_set_size[name] = static_cast<int>(sides.size());
+  }
+  return p;
+}
+
+MeshPart distribute_mesh(const mesh::Mesh* whole, const std::vector<int>* part, const NodeHolders* holders) {
+  const int me = rank(), ranks = size();
+  constexpr std::size_t piece = std::size_t(1) << 30;
+  if (me == 0) {
+    for (int r = 1; r < ranks; ++r) {
+      const std::vector<char> bytes = pack_part(split_mesh(*whole, *part, *holders, r));
+      long long n = static_cast<long long>(bytes.size());
+      MPI_Send(&n, 1, MPI_LONG_LONG, r, part_tag, MPI_COMM_WORLD);
+      for (std::size_t at = 0; at < bytes.size(); at += piece)
+        MPI_Send(bytes.data() + at, static_cast<int>(std::min(piece, bytes.size() - at)), MPI_BYTE, r, part_tag,
+                 MPI_COMM_WORLD);
+    }
+    return split_mesh(*whole, *part, *holders, 0);
+  }
+  long long n = 0;
+  MPI_Recv(&n, 1, MPI_LONG_LONG, 0, part_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  std::vector<char> bytes(static_cast<std::size_t>(n));
+  for (std::size_t at = 0; at < bytes.size(); at += piece)
+    MPI_Recv(bytes.data() + at, static_cast<int>(std::min(piece, bytes.size() - at)), MPI_BYTE, 0, part_tag,
+             MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return unpack_part(bytes);
+}
+
+std::vector<char> pack_mesh(const mesh::Mesh& mesh) {
+  Writer w;
+  write_mesh(w, mesh);
+  return std::move(w.bytes);
+}
+
+mesh::Mesh unpack_mesh(const std::vector<char>& bytes) {
+  Reader r(bytes);
+  return read_mesh(r);
+}
+
+void broadcast_mesh(mesh::Mesh& mesh, int root) {
+  if (size() == 1) return;
+  std::vector<char> bytes;
+  long long n = 0;
+  if (rank() == root) {
+    bytes = pack_mesh(mesh);
+    n = static_cast<long long>(bytes.size());
+  }
+  MPI_Bcast(&n, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD);
+  bytes.resize(static_cast<std::size_t>(n));
+  constexpr std::size_t piece = std::size_t(1) << 30;
+  for (std::size_t at = 0; at < bytes.size(); at += piece)
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(piece, bytes.size() - at)), MPI_BYTE, root, MPI_COMM_WORLD);
+  if (rank() != root) mesh = unpack_mesh(bytes);
+}
+
+}  // namespace tribex::solver::parallel
