@@ -3,17 +3,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace tribex::contact {
 
 ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, const std::vector<std::string>& side_sets) {
-  ContactSurface s;
-  s.name = name;
+  std::vector<int> face_nodes;
   for (const auto& set : side_sets)
     for (const auto& side : mesh.side_sets.at(set)) {
       const auto n = mesh.side_nodes(side);
-      s.face_nodes.insert(s.face_nodes.end(), n.begin(), n.end());
+      face_nodes.insert(face_nodes.end(), n.begin(), n.end());
     }
+  return make_surface(name, mesh.coordinates.data(), std::move(face_nodes));
+}
+
+ContactSurface make_surface(const std::string& name, const double* X, std::vector<int> face_nodes) {
+  ContactSurface s;
+  s.name = name;
+  s.face_nodes = std::move(face_nodes);
   s.nodes = s.face_nodes;
   std::sort(s.nodes.begin(), s.nodes.end());
   s.nodes.erase(std::unique(s.nodes.begin(), s.nodes.end()), s.nodes.end());
@@ -25,7 +32,6 @@ ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, con
   s.node_area.assign(s.nodes.size(), 0.0);
   s.face_area.assign(static_cast<std::size_t>(s.face_count()), 0.0);
   std::vector<int> count(s.nodes.size() + 1, 0);
-  const double* X = mesh.coordinates.data();
   double edge_sum = 0.0;
   for (int f = 0; f < s.face_count(); ++f) {
     const int* n = &s.face_nodes[4 * f];

@@ -8,6 +8,8 @@
 #include "solver/errors.hpp"
 #include "solver/model.hpp"
 #include "solver/output/run_log.hpp"
+#include "solver/parallel/bytes.hpp"
+#include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -68,22 +70,14 @@ void cover_reach(const inputs::InteractionSpec& it, const inputs::ContactSpec& s
   }
 }
 
-// Index of the block holding `element` of `mesh` (its blocks are the model's, in order), -1 for none.
-int block_of(const mesh::Mesh& mesh, int element) {
-  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
-    if (element >= mesh.blocks[b].first_element && element < mesh.blocks[b].first_element + mesh.blocks[b].element_count)
-      return static_cast<int>(b);
-  return -1;
-}
-
 // Mean P-wave modulus M = lambda + 2 mu (reference state) of the elements under a contact surface's
 // faces, Pa: the stiffness that decides which side of a node-to-face pair may carry the point loads.
-double surface_wave_modulus(const Model& model, const mesh::Mesh& mesh, const inputs::ContactSurfaceSpec& surface) {
+double surface_wave_modulus(const Model& model, const ContactFaces& faces, const inputs::ContactSurfaceSpec& surface) {
   double sum = 0.0;
   long count = 0;
   for (const auto& set : surface.side_sets)
-    for (const auto& side : mesh.side_sets.at(set))
-      if (const int b = block_of(mesh, side.element); b >= 0) {
+    for (int b : faces.face_block.at(set))
+      if (b >= 0) {
         sum += materials::wave_modulus_of(model.blocks[static_cast<std::size_t>(b)].material);
         ++count;
       }
@@ -99,11 +93,11 @@ double surface_wave_modulus(const Model& model, const mesh::Mesh& mesh, const in
 constexpr double stiffer_slave_ratio = 2.0;
 
 void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const Model& model,
-                 const mesh::Mesh& mesh, contact::InteractionSettings& s, std::vector<std::string>* report) {
+                 const ContactFaces& faces, contact::InteractionSettings& s, std::vector<std::string>* report) {
   if (it.symmetric || it.enforcement == inputs::InteractionEnforcement::mortar || !contact::uses_penalty(s.law)) return;
   const auto& slave = spec.surfaces[static_cast<std::size_t>(s.slave)];
   const auto& master = spec.surfaces[static_cast<std::size_t>(s.master)];
-  const double m_slave = surface_wave_modulus(model, mesh, slave), m_master = surface_wave_modulus(model, mesh, master);
+  const double m_slave = surface_wave_modulus(model, faces, slave), m_master = surface_wave_modulus(model, faces, master);
   if (!(m_slave > stiffer_slave_ratio * m_master)) return;
   std::swap(s.slave, s.master);
   if (report)
@@ -119,13 +113,12 @@ void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& s
 // (verification/hertz/README.md, "Element choice"). Recorded for the run guards, which raise it once
 // the penetration shows such a pressure (flat contacts at low pressure run fine on these elements).
 void note_one_point_elements(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const Model& model,
-                             const mesh::Mesh& mesh, SetupFindings& findings) {
+                             const ContactFaces& faces, SetupFindings& findings) {
   std::vector<std::string> blocks;
   for (const auto& surface : spec.surfaces) {
     if (surface.name != it.slave && surface.name != it.master) continue;
     for (const auto& set : surface.side_sets)
-      for (const auto& side : mesh.side_sets.at(set)) {
-        const int index = block_of(mesh, side.element);
+      for (int index : faces.face_block.at(set)) {
         if (index < 0) continue;
         const auto& b = model.blocks[static_cast<std::size_t>(index)];
         if (b.formulation == inputs::ElementFormulation::mean_quadrature &&
@@ -155,58 +148,89 @@ void refuse_shared_side_sets(const inputs::ContactSpec& spec, const inputs::Inte
 
 }  // namespace
 
-mesh::Mesh contact_surface_mesh(const mesh::Mesh& whole, const inputs::ContactSpec& spec) {
-  std::vector<char> wanted(static_cast<std::size_t>(whole.element_count()), 0);
+ContactFaces contact_faces(const mesh::Mesh& mesh, const inputs::ContactSpec& spec) {
+  std::vector<int> block(static_cast<std::size_t>(mesh.element_count()), -1);
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
+    for (int e = 0; e < mesh.blocks[b].element_count; ++e)
+      block[static_cast<std::size_t>(mesh.blocks[b].first_element + e)] = static_cast<int>(b);
+  ContactFaces faces;
+  for (const auto& [name, sides] : mesh.side_sets) {
+    faces.face_nodes[name];
+    faces.face_block[name];
+  }
+  // Faces in whole-mesh nodes first, then renumbered by ascending node.
   for (const auto& s : spec.surfaces)
-    for (const auto& set : s.side_sets)
-      if (auto it = whole.side_sets.find(set); it != whole.side_sets.end())
-        for (const auto& side : it->second) wanted[static_cast<std::size_t>(side.element)] = 1;
-  // Elements ascending, so each block stays one range; node numbers stay global.
-  std::vector<int> kept_of(wanted.size(), -1);
-  mesh::Mesh m;
-  m.coordinates.assign(whole.coordinates.size(), 0.0);
-  for (const auto& b : whole.blocks) {
-    mesh::Block kept{b.name, m.element_count(), 0};
-    for (int e = b.first_element; e < b.first_element + b.element_count; ++e) {
-      if (!wanted[static_cast<std::size_t>(e)]) continue;
-      kept_of[static_cast<std::size_t>(e)] = m.element_count();
-      for (int I = 0; I < 8; ++I) {
-        const int n = whole.connectivity[8 * static_cast<std::size_t>(e) + I];
-        m.connectivity.push_back(n);
-        for (int i = 0; i < 3; ++i) m.coordinates[3 * static_cast<std::size_t>(n) + i] = whole.coordinates[3 * static_cast<std::size_t>(n) + i];
+    for (const auto& set : s.side_sets) {
+      auto it = mesh.side_sets.find(set);
+      if (it == mesh.side_sets.end() || !faces.face_block[set].empty()) continue;  // missing: build_contact says so
+      for (const auto& side : it->second) {
+        const auto n = mesh.side_nodes(side);
+        faces.face_nodes[set].insert(faces.face_nodes[set].end(), n.begin(), n.end());
+        faces.face_block[set].push_back(block[static_cast<std::size_t>(side.element)]);
+        faces.global_node.insert(faces.global_node.end(), n.begin(), n.end());
       }
-      ++kept.element_count;
     }
-    m.blocks.push_back(kept);
+  std::sort(faces.global_node.begin(), faces.global_node.end());
+  faces.global_node.erase(std::unique(faces.global_node.begin(), faces.global_node.end()), faces.global_node.end());
+  for (auto& [name, nodes] : faces.face_nodes)
+    for (int& n : nodes)
+      n = static_cast<int>(std::lower_bound(faces.global_node.begin(), faces.global_node.end(), n) - faces.global_node.begin());
+  faces.coordinates.reserve(3 * faces.global_node.size());
+  for (int n : faces.global_node)
+    for (int i = 0; i < 3; ++i) faces.coordinates.push_back(mesh.coordinates[3 * static_cast<std::size_t>(n) + i]);
+  return faces;
+}
+
+void broadcast_contact_faces(ContactFaces& faces) {
+  if (parallel::size() == 1) return;
+  std::vector<char> bytes;
+  if (parallel::is_root()) {
+    parallel::ByteWriter w;
+    w.values(faces.global_node);
+    w.values(faces.coordinates);
+    w.count(faces.face_nodes.size());
+    for (const auto& [name, nodes] : faces.face_nodes) {
+      w.text(name);
+      w.values(nodes);
+      w.values(faces.face_block.at(name));
+    }
+    bytes = std::move(w.bytes);
   }
-  for (const auto& [name, sides] : whole.side_sets) {
-    auto& out = m.side_sets[name];
-    for (const auto& side : sides)
-      if (kept_of[static_cast<std::size_t>(side.element)] >= 0) out.push_back({kept_of[static_cast<std::size_t>(side.element)], side.face});
+  parallel::broadcast_bytes(bytes, 0);
+  if (parallel::is_root()) return;
+  parallel::ByteReader r(bytes);
+  faces = {};
+  faces.global_node = r.values<int>();
+  faces.coordinates = r.values<double>();
+  for (std::size_t k = r.count(); k > 0; --k) {
+    const std::string name = r.text();
+    faces.face_nodes[name] = r.values<int>();
+    faces.face_block[name] = r.values<int>();
   }
-  return m;
 }
 
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model,
                                                        const ContactGeometry& geometry, double dt,
                                                        std::vector<std::string>* report,
                                                        SetupFindings* findings) {
-  const auto& mesh = geometry.mesh;
+  const ContactFaces& faces = geometry.faces;
   std::vector<std::string> known;
-  for (const auto& [name, sides] : mesh.side_sets) known.push_back(name);
+  for (const auto& [name, nodes] : faces.face_nodes) known.push_back(name);
   std::vector<contact::ContactSurface> surfaces;
   std::vector<std::string> names;
   for (const auto& s : spec.surfaces) {
+    std::vector<int> face_nodes;
     for (const auto& set : s.side_sets) {
-      auto it = mesh.side_sets.find(set);
-      if (it == mesh.side_sets.end()) {
+      auto it = faces.face_nodes.find(set);
+      if (it == faces.face_nodes.end()) {
         const std::string hint = inputs::closest_match(set, known);
         throw SetupError(s.where.str() + ": error: contact surface '" + s.name + "' names side set '" + set +
                          "', which is not in the mesh" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
       }
       if (it->second.empty()) throw SetupError(s.where.str() + ": error: side set '" + set + "' is empty");
+      face_nodes.insert(face_nodes.end(), it->second.begin(), it->second.end());
     }
-    surfaces.push_back(contact::make_surface(mesh, s.name, s.side_sets));
+    surfaces.push_back(contact::make_surface(s.name, faces.coordinates.data(), std::move(face_nodes)));
     names.push_back(s.name);
   }
   auto index_of = [&](const std::string& n) {
@@ -224,7 +248,7 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     s.penalty_scale = spec.penalty_scale_factor;
     s.search_margin = spec.search_margin.value_or(0.0);
     set_law(it, s, report, findings);
-    order_roles(it, spec, model, mesh, s, report);
+    order_roles(it, spec, model, faces, s, report);
     cover_reach(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
     if (it.enforcement == inputs::InteractionEnforcement::mortar) {
       s.enforcement = contact::Enforcement::mortar;
@@ -234,25 +258,26 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
                           (contact::adhesion_of(s.law) ? ", adhesion at face integration points" : ""));
     }
     if (findings && s.enforcement == contact::Enforcement::node_to_face && contact::uses_penalty(s.law))
-      note_one_point_elements(it, spec, model, mesh, *findings);
+      note_one_point_elements(it, spec, model, faces, *findings);
     interactions.push_back(s);
   }
   auto manager = std::make_unique<contact::ContactManager>(std::move(surfaces), std::move(interactions), geometry.mass,
-                                                           dt, mesh.node_count());
+                                                           dt, static_cast<int>(faces.global_node.size()));
   if (spec.axis) manager->set_axis(spec.axis->data(), spec.axis->data() + 3);
   manager->set_prescribed_nodes(geometry.prescribed);  // for the tangential pairs
 
   // Pre-flight: initial gaps and overlaps per pass, worst nodes named.
-  const auto overlaps = manager->initial_overlaps(mesh.coordinates.data(), 3);
+  const auto overlaps = manager->initial_overlaps(faces.coordinates.data(), 3);
   double mean_edge = 0.0;
   for (const auto& s : manager->surfaces()) mean_edge = std::max(mean_edge, s.mean_edge);
   const double tolerance = spec.initial_overlap_tolerance.value_or(0.01 * mean_edge);
   std::string worst;
   for (const auto& o : overlaps) {
     if (report)
-      report->push_back(format("  initial gap %s: node %d gap %.4g m", o.pass.c_str(), o.node + 1, o.gap));
+      report->push_back(format("  initial gap %s: node %d gap %.4g m", o.pass.c_str(), faces.global_node[o.node] + 1, o.gap));
     if (-o.gap > tolerance)
-      worst += format("%snode %d (%s) overlaps by %.4g m", worst.empty() ? "" : "; ", o.node + 1, o.pass.c_str(), -o.gap);
+      worst += format("%snode %d (%s) overlaps by %.4g m", worst.empty() ? "" : "; ", faces.global_node[o.node] + 1,
+                      o.pass.c_str(), -o.gap);
   }
   if (!worst.empty())
     throw SetupError(spec.where.str() + ": error: bodies overlap at t = 0 beyond the tolerance " + format("%.3g m", tolerance) +

@@ -3,6 +3,7 @@
 // interactions, the penalty reference time step, and the pre-flight check of initial overlaps.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,19 +16,32 @@ namespace tribex::solver {
 
 struct Model;
 
-/// What the contact set-up reads besides the model's blocks, in global node and element numbering:
-/// in a serial run the model's own mesh, masses and constraints; in a parallel run the contact
-/// surfaces' elements (contact_surface_mesh of the whole mesh, the same on every rank) and the
-/// surface nodes' masses and constraints gathered from their owners (solver/README.md "Parallel runs").
-struct ContactGeometry {
-  const mesh::Mesh& mesh;            // its blocks are the model's, in the same order
-  const std::vector<double>& mass;   // [global node] lumped mass (the surface nodes at least)
-  std::vector<char> prescribed;      // [global node] 1 where all three velocity components are prescribed
+/// The contact surfaces in the contact's own numbering (the same in serial and parallel runs, and on
+/// every rank): the nodes on the faces of the side sets a contact definition names, numbered by
+/// ascending whole-mesh node. The contact arrays (positions, forces, tractions, restart state) are
+/// sized by these surface nodes, not by the mesh (solver/README.md "Parallel runs").
+struct ContactFaces {
+  std::vector<int> global_node;                        // [surface node] the whole mesh's node, ascending
+  std::vector<double> coordinates;                     // [surface node][3], m
+  std::map<std::string, std::vector<int>> face_nodes;  // side set -> [face][4] surface nodes (every side set
+                                                       // of the mesh by name; faces only for the contact's)
+  std::map<std::string, std::vector<int>> face_block;  // side set -> [face] block index (the mesh's block order)
 };
 
-/// The elements of `whole` that have a face in a contact surface's side set, in global node
-/// numbering (coordinates kept for those elements' nodes only); every block and side set by name.
-mesh::Mesh contact_surface_mesh(const mesh::Mesh& whole, const inputs::ContactSpec& spec);
+/// The contact faces of `mesh` (the whole mesh: a serial run's, or rank 0's in a parallel run).
+ContactFaces contact_faces(const mesh::Mesh& mesh, const inputs::ContactSpec& spec);
+
+/// Collective: rank 0's `faces` on every rank.
+void broadcast_contact_faces(ContactFaces& faces);
+
+/// What the contact set-up reads besides the model's blocks: the faces and, per surface node, the
+/// lumped mass and whether all three velocity components are prescribed (summed from the nodes'
+/// owners in a parallel run).
+struct ContactGeometry {
+  const ContactFaces& faces;
+  const std::vector<double>& mass;  // [surface node] kg
+  std::vector<char> prescribed;     // [surface node]
+};
 
 /// Builds the manager; `dt` is the run's time step (scale factor x stable estimate, capped by the
 /// maximum time step). Throws SetupError for a side set missing from the mesh (deck line + names)

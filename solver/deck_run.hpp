@@ -143,6 +143,7 @@ class DeckRun {
   std::vector<double> globals_;  // results.exo: step, then row_
   std::vector<double> element_stress_, element_plastic_strain_;
   std::vector<std::vector<double>> packed_;  // parallel: this rank's rows of each field (output steps only)
+  std::vector<int> surface_index_;  // [local node] its node in the contact's numbering, -1: none (contact fields)
   bool terminal_ = false, heartbeat_ = false;
   Clock::time_point last_progress_, last_heartbeat_;
   double contact_seconds_before_ = 0.0;  // earlier segments' (restart file)

@@ -81,20 +81,31 @@ void DeckRun::write_history_row(double t, long n) {
 }
 
 void DeckRun::write_fields(double t, long n) {
-  // Parallel runs write the rows this rank owns: nodal fields packed from local (or, for the
-  // contact fields, global) numbering; the rank's elements are its rows already.
+  // Parallel runs write the rows this rank owns: nodal fields packed from local numbering, the
+  // contact fields from the contact's (zero on nodes of no contact surface, also on one rank); the
+  // rank's elements are its rows already.
   const Model& model = *model_;
   const auto& domain = model.domain;
   std::vector<FieldView> nodal, element;
   std::size_t g = 0;
-  const auto owned_rows = [&](const std::vector<double>& values, int components, bool global_numbering) {
+  const auto owned_rows = [&](const std::vector<double>& values, int components) {
     if (domain.serial()) return std::span<const double>(values);
     if (packed_.size() <= g) packed_.emplace_back();
     auto& buffer = packed_[g++];
     buffer.clear();
+    for (int l : domain.owned_local_nodes())
+      buffer.insert(buffer.end(), values.begin() + components * l, values.begin() + components * (l + 1));
+    return std::span<const double>(buffer);
+  };
+  const auto contact_rows = [&](const std::vector<double>& values, int components) {
+    if (packed_.size() <= g) packed_.emplace_back();
+    auto& buffer = packed_[g++];
+    buffer.assign(static_cast<std::size_t>(components) * domain.owned_local_nodes().size(), 0.0);
+    std::size_t row = 0;
     for (int l : domain.owned_local_nodes()) {
-      const std::size_t r = static_cast<std::size_t>(global_numbering ? domain.global_node[l] : l);
-      buffer.insert(buffer.end(), values.begin() + components * r, values.begin() + components * (r + 1));
+      if (const int k = surface_index_[static_cast<std::size_t>(l)]; k >= 0)
+        std::copy(values.begin() + components * k, values.begin() + components * (k + 1), buffer.begin() + components * row);
+      ++row;
     }
     return std::span<const double>(buffer);
   };
@@ -106,10 +117,10 @@ void DeckRun::write_fields(double t, long n) {
     if (name == "force") v = &integrator_->force();
     // SI units (the writer puts lengths, unit "m", into the file's length unit).
     const char* unit = name == "displacement" ? "m" : name == "velocity" ? "m/s" : name == "acceleration" ? "m/s^2" : "N";
-    if (v) nodal.push_back({name, 3, owned_rows(*v, 3, false), unit});
+    if (v) nodal.push_back({name, 3, owned_rows(*v, 3), unit});
     if (model.contact && name == "contact_traction")
-      nodal.push_back({name, 3, owned_rows(model.contact->traction(), 3, true), "Pa"});
-    if (model.contact && name == "contact_status") nodal.push_back({name, 1, owned_rows(model.contact->status(), 1, true), "1"});
+      nodal.push_back({name, 3, contact_rows(model.contact->traction(), 3), "Pa"});
+    if (model.contact && name == "contact_status") nodal.push_back({name, 1, contact_rows(model.contact->status(), 1), "1"});
   }
   for (const auto& name : region_.results->element_variables) {
     if (name == "stress") {

@@ -62,7 +62,7 @@ void DeckRun::build_parts() {
   std::optional<mesh::Mesh> whole;
   std::vector<int> part;
   parallel::NodeHolders holders;
-  mesh::Mesh contact_mesh;
+  ContactFaces contact;
   std::exception_ptr error;
   if (root_) {
     try {
@@ -75,7 +75,7 @@ void DeckRun::build_parts() {
       }
       holders = parallel::node_holders(*whole, part);
       mesh_hash_ = mesh_sha256(*whole);
-      if (region_.contact) contact_mesh = contact_surface_mesh(*whole, *region_.contact);
+      if (region_.contact) contact = contact_faces(*whole, *region_.contact);
       report_partition(*whole, part, holders);
     } catch (...) {
       error = std::current_exception();
@@ -86,11 +86,11 @@ void DeckRun::build_parts() {
   parallel::MeshPart mine = parallel::distribute_mesh(whole ? &*whole : nullptr, &part, &holders);
   holders = {};
   part = {};
-  if (region_.contact) parallel::broadcast_mesh(contact_mesh, 0);
+  if (region_.contact) broadcast_contact_faces(contact);
   if (whole && region_.results) whole_mesh_ = std::move(*whole);
   whole.reset();
   for (const auto& [name, size] : mine.node_set_size) set_size_[name] = double(size);
-  model_.emplace(build_model(deck_, std::move(mine), contact_mesh));
+  model_.emplace(build_model(deck_, std::move(mine), contact));
 }
 
 void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& part,
@@ -250,6 +250,12 @@ void DeckRun::open_results() {
   // gathered to rank 0, which writes the file.
   if (!region_.results) return;
   const auto& domain = model_->domain;
+  if (model_->contact) {
+    surface_index_.assign(model_->mass.size(), -1);
+    const auto& local = domain.surface_local();
+    for (std::size_t k = 0; k < local.size(); ++k)
+      if (local[k] >= 0) surface_index_[static_cast<std::size_t>(local[k])] = static_cast<int>(k);
+  }
   const auto add_row = [](std::vector<std::array<unsigned long long, 2>>& runs, unsigned long long row) {
     if (!runs.empty() && runs.back()[0] + runs.back()[1] == row)
       ++runs.back()[1];

@@ -174,26 +174,22 @@ std::vector<char> prescribed_nodes(const Model& model) {
   return prescribed;
 }
 
-// The surface nodes' masses and prescribed flags in global numbering (ContactGeometry): every rank
-// puts in the values of the surface nodes it owns, one sum over the ranks completes them (each value
-// has one owner, so the sum is exact).
-struct GatheredSurface {
+// The surface nodes' masses and prescribed flags in the contact's numbering (ContactGeometry): every
+// rank puts in the values of the surface nodes it owns, one sum over the ranks completes them (each
+// value has one owner, so the sum is exact; on one rank a copy).
+struct SurfaceValues {
   std::vector<double> mass, unscaled_mass;
   std::vector<char> prescribed;
 };
 
-GatheredSurface gather_surface_values(const Model& model, const mesh::Mesh& contact_mesh,
-                                      const std::vector<double>& unscaled_mass) {
+SurfaceValues surface_values(const Model& model, const ContactFaces& faces, const std::vector<double>& unscaled_mass) {
   const auto& d = model.domain;
-  std::vector<int> nodes = contact_mesh.connectivity;
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   const std::vector<char> prescribed = prescribed_nodes(model);
-  const std::size_t ns = nodes.size();
+  const std::size_t ns = faces.global_node.size();
   std::vector<double> values(3 * ns, 0.0);  // mass, unscaled mass, prescribed
   for (std::size_t k = 0; k < ns; ++k) {
-    const auto it = std::lower_bound(d.global_node.begin(), d.global_node.end(), nodes[k]);
-    if (it == d.global_node.end() || *it != nodes[k]) continue;
+    const auto it = std::lower_bound(d.global_node.begin(), d.global_node.end(), faces.global_node[k]);
+    if (it == d.global_node.end() || *it != faces.global_node[k]) continue;
     const auto l = static_cast<std::size_t>(it - d.global_node.begin());
     if (!(d.owned[l] > 0.0)) continue;
     values[3 * k] = model.mass[l];
@@ -201,20 +197,17 @@ GatheredSurface gather_surface_values(const Model& model, const mesh::Mesh& cont
     values[3 * k + 2] = prescribed[l];
   }
   parallel::sum(values.data(), static_cast<int>(values.size()));
-  GatheredSurface g;
-  const auto gn = static_cast<std::size_t>(d.global_node_count);
-  g.mass.assign(gn, 0.0);
-  if (!unscaled_mass.empty()) g.unscaled_mass.assign(gn, 0.0);
-  g.prescribed.assign(gn, 0);
+  SurfaceValues v;
+  v.mass.resize(ns);
+  v.prescribed.resize(ns);
+  if (!unscaled_mass.empty()) v.unscaled_mass.resize(ns);
   for (std::size_t k = 0; k < ns; ++k) {
-    const auto n = static_cast<std::size_t>(nodes[k]);
-    g.mass[n] = values[3 * k];
-    if (!unscaled_mass.empty()) g.unscaled_mass[n] = values[3 * k + 1];
-    g.prescribed[n] = values[3 * k + 2] > 0.5;
+    v.mass[k] = values[3 * k];
+    if (!unscaled_mass.empty()) v.unscaled_mass[k] = values[3 * k + 1];
+    v.prescribed[k] = values[3 * k + 2] > 0.5;
   }
-  return g;
+  return v;
 }
-
 
 // Silent boundaries, accumulated per node over the faces (the rank's faces; summed over the ranks later).
 struct SilentSums {
@@ -222,22 +215,20 @@ struct SilentSums {
   std::vector<double> coefficients;  // [node][3] c_n, c_t, faces touching the node
 };
 
-Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part,
-               const mesh::Mesh* contact_mesh);
+Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part, const ContactFaces* faces);
 
 }  // namespace
 
 Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) { return assemble(deck, std::move(mesh), nullptr, nullptr); }
 
-Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const mesh::Mesh& contact_mesh) {
+Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const ContactFaces& contact_faces) {
   mesh::Mesh mesh = std::move(part.mesh);
-  return assemble(deck, std::move(mesh), &part, &contact_mesh);
+  return assemble(deck, std::move(mesh), &part, &contact_faces);
 }
 
 namespace {
 
-Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part,
-               const mesh::Mesh* contact_mesh) {
+Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part, const ContactFaces* faces) {
   const auto& region = deck.procedure.region;
   const inputs::FiniteElementModelSpec* fem = &model_spec(deck);
   Model model;
@@ -454,15 +445,13 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
     const auto& tc = deck.procedure.time_control;
     const double dt = std::min(tc.time_step_scale_factor * whole_model_stable_time_step(model).dt,
                                tc.maximum_time_step.value_or(INFINITY));
-    if (part) {
-      GatheredSurface g = gather_surface_values(model, *contact_mesh, unscaled_mass);
-      model.contact = build_contact(*region.contact, model, {*contact_mesh, g.mass, std::move(g.prescribed)}, dt,
-                                    &model.preflight, &model.setup);
-      unscaled_mass = std::move(g.unscaled_mass);
-    } else {
-      model.contact = build_contact(*region.contact, model, {m, model.mass, prescribed_nodes(model)}, dt,
-                                    &model.preflight, &model.setup);
-    }
+    const ContactFaces own = faces ? ContactFaces{} : contact_faces(m, *region.contact);
+    const ContactFaces& f = faces ? *faces : own;
+    SurfaceValues v = surface_values(model, f, unscaled_mass);
+    model.contact = build_contact(*region.contact, model, {f, v.mass, std::move(v.prescribed)}, dt, &model.preflight,
+                                  &model.setup);
+    model.contact_global_node = f.global_node;
+    unscaled_mass = std::move(v.unscaled_mass);
     if (model.mass_scaling.active) {
       model.contact->set_unscaled_penalty_reference(std::move(unscaled_mass), model.mass_scaling.unscaled_time_step);
       model.preflight.push_back(

@@ -12,6 +12,7 @@
 #include "contact/contact_manager.hpp"
 #include "inputs/deck.hpp"
 #include "mesh/mesh.hpp"
+#include "solver/contact_setup.hpp"
 #include "solver/element_block.hpp"
 #include "solver/guards/run_warning.hpp"
 #include "solver/mass_scaling.hpp"
@@ -76,6 +77,8 @@ struct Model {
   std::vector<int> block_body;
   /// Contact, when the region has a contact definition (set up by build_model).
   std::unique_ptr<contact::ContactManager> contact;
+  /// [surface node] the whole mesh's node of each node in the contact's numbering (contact_setup.hpp).
+  std::vector<int> contact_global_node;
   std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)
   SetupFindings setup;  // warnings and unsafe choices found at set-up, for the run guards (solver/guards/README.md)
   /// This rank's share of a parallel run (from its MeshPart); identity on one rank.
@@ -92,10 +95,10 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh);
 
 /// Collective, in a parallel run: this rank's model from its part of the mesh alone
 /// (parallel::distribute_mesh). Nodal values that sum over elements (lumped mass, added mass,
-/// silent-boundary coefficients) are summed over the ranks that share a node; `contact_mesh` is
-/// contact_surface_mesh of the whole mesh (the same on every rank; ignored without contact). An
-/// error found on some ranks only stops every rank with the lowest one's message.
-Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const mesh::Mesh& contact_mesh);
+/// silent-boundary coefficients) are summed over the ranks that share a node; `contact_faces` are
+/// those of the whole mesh (contact_faces on rank 0, broadcast; ignored without contact). An error
+/// found on some ranks only stops every rank with the lowest one's message.
+Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const ContactFaces& contact_faces);
 
 /// The mesh of the deck's region (its finite element model), as build_model(deck) builds it.
 mesh::Mesh build_mesh(const inputs::Deck& deck);

@@ -44,13 +44,13 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   f_ext_.assign(n3, 0.0);
   reaction_.assign(n3, 0.0);
   if (model.contact) {
-    const std::size_t g3 = 3 * static_cast<std::size_t>(model.domain.global_node_count);
-    x_.assign(g3, 0.0);
-    v_contact_.assign(g3, 0.0);
-    f_other_contact_.assign(g3, 0.0);
-    f_contact_.assign(g3, 0.0);
+    const std::size_t s3 = 3 * model.contact_global_node.size();
+    x_.assign(s3, 0.0);
+    v_contact_.assign(s3, 0.0);
+    f_other_contact_.assign(s3, 0.0);
+    f_contact_.assign(s3, 0.0);
     xl_ = model.mesh.coordinates;
-    model.domain.set_surface(model.contact->surface_nodes());
+    model.domain.set_surface(model.contact_global_node);
   }
   if (!model.silent.node.empty()) {
     silent_index_.assign(model.mass.size(), -1);
@@ -202,26 +202,29 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
   raise_pending_failure();
 
   if (model_.contact) {
-    // Every rank runs the whole contact on the gathered surface (global numbering) and adds the
-    // forces of the surface nodes it holds: the contact forces are never summed twice.
+    // Every rank runs the whole contact on the gathered surface (the contact's numbering, surface
+    // node k) and adds the forces of the surface nodes it holds: the contact forces are never summed twice.
     const auto contact_start = std::chrono::steady_clock::now();
     const auto& X = model_.mesh.coordinates;
-    const auto& surface = model_.contact->surface_nodes();
     const auto& local = model_.domain.surface_local();
-    for (std::size_t k = 0; k < surface.size(); ++k) {
+    for (std::size_t k = 0; k < local.size(); ++k) {
       const int l = local[k];
       if (l >= 0)
         for (int i = 0; i < 3; ++i) xl_[3 * l + i] = X[3 * l + i] + u_[3 * l + i];
-      for (int i = 0; i < 3; ++i) f_contact_[3 * surface[k] + i] = 0.0;
+      for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = 0.0;
     }
     // f_ (internal + applied, summed over the ranks, no contact yet) and the last step size let the
     // junction shear predict the slip of the coming velocity update (contact/contact_manager.hpp, step 5).
     model_.domain.gather_surface(xl_.data(), v_.data(), f_.data(), x_.data(), v_contact_.data(), f_other_contact_.data());
     contact_totals_ = model_.contact->compute_forces(x_.data(), v_contact_.data(), f_contact_.data(),
                                                      f_other_contact_.data(), dt_half_);
-    for (std::size_t k = 0; k < surface.size(); ++k)
+    for (std::size_t k = 0; k < local.size(); ++k)
       if (const int l = local[k]; l >= 0)
-        for (int i = 0; i < 3; ++i) f_[3 * l + i] += f_contact_[3 * surface[k] + i];
+        for (int i = 0; i < 3; ++i) f_[3 * l + i] += f_contact_[3 * k + i];
+    // The nodes the totals name, in the whole mesh's numbering.
+    const auto& whole = model_.contact_global_node;
+    if (contact_totals_.penetration_node >= 0) contact_totals_.penetration_node = whole[contact_totals_.penetration_node];
+    if (contact_totals_.motion_node >= 0) contact_totals_.motion_node = whole[contact_totals_.motion_node];
     contact_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
   }
 }
@@ -350,16 +353,14 @@ void CentralDifference::account_time_n() {
   // forces on the bodies, in the same pairing.
   double c_left = 0.0, c_right = 0.0;
   if (model_.contact) {
-    const auto& surface = model_.contact->surface_nodes();
     const auto& local = model_.domain.surface_local();
     const auto& surface_owned = model_.domain.surface_owned();
-    for (std::size_t k = 0; k < surface.size(); ++k) {
+    for (std::size_t k = 0; k < local.size(); ++k) {
       const int l = local[k];
       if (l < 0) continue;
-      const int node = surface[k];
       for (int i = 0; i < 3; ++i) {
-        c_left += surface_owned[k] * f_contact_[3 * node + i] * v_prev_[3 * l + i];
-        c_right += surface_owned[k] * f_contact_[3 * node + i] * v_[3 * l + i];
+        c_left += surface_owned[k] * f_contact_[3 * k + i] * v_prev_[3 * l + i];
+        c_right += surface_owned[k] * f_contact_[3 * k + i] * v_[3 * l + i];
       }
     }
   }

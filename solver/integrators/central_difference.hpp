@@ -121,9 +121,9 @@ class CentralDifference {
   double force_time_ = 0.0;           // the time of the last force pass (the material updates' dt)
   double silent_power_right_ = 0.0, damping_power_right_ = 0.0, viscous_power_right_ = 0.0;
   // Contact: current positions of surface nodes, contact forces, totals, lagged contact power.
-  // x_, v_contact_, f_other_contact_ (the summed non-contact forces) and f_contact_ are in global
-  // numbering (surface entries only), filled by the surface gather; xl_ holds X + u of this rank's
-  // surface nodes in local numbering.
+  // x_, v_contact_, f_other_contact_ (the summed non-contact forces) and f_contact_ are in the
+  // contact's numbering ([surface node][3], Model::contact_global_node), filled by the surface gather;
+  // xl_ holds X + u of this rank's surface nodes in local numbering.
   std::vector<double> x_, f_contact_, v_contact_, f_other_contact_, xl_;
   contact::ContactTotals contact_totals_;
   double momentum_[3] = {0, 0, 0};

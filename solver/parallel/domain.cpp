@@ -149,12 +149,14 @@ void Domain::set_surface(const std::vector<int>& surface_nodes) {
 
 void Domain::gather_surface(const double* x, const double* v, const double* f, double* xg, double* vg, double* fg) {
   if (serial()) {
-    for (int node : surface_nodes_)
+    for (std::size_t k = 0; k < surface_nodes_.size(); ++k) {
+      const int node = surface_nodes_[k];
       for (int i = 0; i < 3; ++i) {
-        xg[3 * node + i] = x[3 * node + i];
-        vg[3 * node + i] = v[3 * node + i];
-        fg[3 * node + i] = f[3 * node + i];
+        xg[3 * k + i] = x[3 * node + i];
+        vg[3 * k + i] = v[3 * node + i];
+        fg[3 * k + i] = f[3 * node + i];
       }
+    }
     return;
   }
   const double start = now();
@@ -174,11 +176,11 @@ void Domain::gather_surface(const double* x, const double* v, const double* f, d
   traffic.surface_sent += mine * (ranks - 1);
   traffic.surface_received += static_cast<long long>(sizeof(double) * surface_recv_.size()) - mine;
   for (std::size_t j = 0; j < surface_order_.size(); ++j) {
-    const int node = surface_nodes_[surface_order_[j]];
+    const std::size_t k = static_cast<std::size_t>(surface_order_[j]);
     for (int i = 0; i < 3; ++i) {
-      xg[3 * node + i] = surface_recv_[K * j + i];
-      vg[3 * node + i] = surface_recv_[K * j + 3 + i];
-      fg[3 * node + i] = surface_recv_[K * j + 6 + i];
+      xg[3 * k + i] = surface_recv_[K * j + i];
+      vg[3 * k + i] = surface_recv_[K * j + 3 + i];
+      fg[3 * k + i] = surface_recv_[K * j + 6 + i];
     }
   }
   communication_seconds += now() - start;

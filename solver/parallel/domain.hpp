@@ -9,7 +9,7 @@
 //   - gather_surface: positions, velocities and summed non-contact forces of the contact-surface
 //     nodes to every rank (the junction shear predicts the slip from the forces)
 //     (MPI_Allgatherv over the surface nodes only), so that each rank runs the whole contact
-//     search and enforcement on global node numbers;
+//     search and enforcement on the contact's numbering (arrays sized by the surface nodes);
 // results.h5 is written collectively (each rank its owned nodes and its elements, parallel HDF5).
 // On one rank every map is the identity and no message is sent.
 #pragma once
@@ -58,13 +58,14 @@ class Domain {
   /// Sums a nodal [local node][width] vector (width 1..3) over the ranks that share each node.
   void sum_shared(double* nodal, int width = 3);
 
-  /// Contact surfaces: `surface_nodes` the sorted global nodes of all surfaces (same on every rank).
+  /// Contact surfaces: `surface_nodes` the sorted global nodes of all surfaces (same on every rank),
+  /// surface node k = the contact's node k (Model::contact_global_node).
   void set_surface(const std::vector<int>& surface_nodes);
   /// [k] local index of surface node k, -1 when this rank does not hold it.
   const std::vector<int>& surface_local() const { return surface_local_; }
   /// [k] 1 when this rank owns surface node k.
   const std::vector<double>& surface_owned() const { return surface_owned_; }
-  /// Writes x and v of every surface node into the global-numbered arrays (other entries untouched).
+  /// Writes x, v and f of every surface node k into [k][3] of the contact's arrays (xg, vg, fg).
   void gather_surface(const double* x_local, const double* v_local, const double* f_local, double* x_global,
                       double* v_global, double* f_global);
   static constexpr int kSurfaceValues = 9;  // x, v, f per surface node

@@ -9,67 +9,13 @@
 #include <utility>
 
 #include "solver/errors.hpp"
+#include "solver/parallel/bytes.hpp"
 #include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver::parallel {
 namespace {
 
-// Plain bytes: counts as 64-bit, then the values (the same machine and build on both sides).
-class Writer {
- public:
-  template <class T>
-  void values(const std::vector<T>& v) {
-    count(v.size());
-    append(v.data(), v.size() * sizeof(T));
-  }
-  void text(const std::string& s) {
-    count(s.size());
-    append(s.data(), s.size());
-  }
-  void count(std::size_t n) {
-    const long long c = static_cast<long long>(n);
-    append(&c, sizeof c);
-  }
-  std::vector<char> bytes;
-
- private:
-  void append(const void* p, std::size_t n) {
-    const char* c = static_cast<const char*>(p);
-    bytes.insert(bytes.end(), c, c + n);
-  }
-};
-
-class Reader {
- public:
-  explicit Reader(const std::vector<char>& b) : bytes_(b) {}
-  template <class T>
-  std::vector<T> values() {
-    std::vector<T> v(count());
-    take(v.data(), v.size() * sizeof(T));
-    return v;
-  }
-  std::string text() {
-    std::string s(count(), '\0');
-    take(s.data(), s.size());
-    return s;
-  }
-  std::size_t count() {
-    long long c = 0;
-    take(&c, sizeof c);
-    return static_cast<std::size_t>(c);
-  }
-
- private:
-  void take(void* p, std::size_t n) {
-    if (at_ + n > bytes_.size()) throw std::logic_error("set-up message shorter than its contents");
-    if (n) std::memcpy(p, bytes_.data() + at_, n);
-    at_ += n;
-  }
-  const std::vector<char>& bytes_;
-  std::size_t at_ = 0;
-};
-
-void write_mesh(Writer& w, const mesh::Mesh& m) {
+void write_mesh(ByteWriter& w, const mesh::Mesh& m) {
   w.values(m.coordinates);
   w.values(m.connectivity);
   w.count(m.blocks.size());
@@ -89,7 +35,7 @@ void write_mesh(Writer& w, const mesh::Mesh& m) {
   }
 }
 
-mesh::Mesh read_mesh(Reader& r) {
+mesh::Mesh read_mesh(ByteReader& r) {
   mesh::Mesh m;
   m.coordinates = r.values<double>();
   m.connectivity = r.values<int>();
@@ -112,7 +58,7 @@ mesh::Mesh read_mesh(Reader& r) {
   return m;
 }
 
-void write_sizes(Writer& w, const std::map<std::string, int>& sizes) {
+void write_sizes(ByteWriter& w, const std::map<std::string, int>& sizes) {
   w.count(sizes.size());
   for (const auto& [name, n] : sizes) {
     w.text(name);
@@ -120,7 +66,7 @@ void write_sizes(Writer& w, const std::map<std::string, int>& sizes) {
   }
 }
 
-std::map<std::string, int> read_sizes(Reader& r) {
+std::map<std::string, int> read_sizes(ByteReader& r) {
   std::map<std::string, int> sizes;
   for (std::size_t k = r.count(); k > 0; --k) {
     std::string name = r.text();
@@ -130,7 +76,7 @@ std::map<std::string, int> read_sizes(Reader& r) {
 }
 
 std::vector<char> pack_part(const MeshPart& p) {
-  Writer w;
+  ByteWriter w;
   write_mesh(w, p.mesh);
   w.values(p.global_node);
   w.values(p.global_element);
@@ -143,7 +89,7 @@ std::vector<char> pack_part(const MeshPart& p) {
 }
 
 MeshPart unpack_part(const std::vector<char>& bytes) {
-  Reader r(bytes);
+  ByteReader r(bytes);
   MeshPart p;
   p.mesh = read_mesh(r);
   p.global_node = r.values<int>();
@@ -270,30 +216,32 @@ MeshPart distribute_mesh(const mesh::Mesh* whole, const std::vector<int>* part, 
 }
 
 std::vector<char> pack_mesh(const mesh::Mesh& mesh) {
-  Writer w;
+  ByteWriter w;
   write_mesh(w, mesh);
   return std::move(w.bytes);
 }
 
 mesh::Mesh unpack_mesh(const std::vector<char>& bytes) {
-  Reader r(bytes);
+  ByteReader r(bytes);
   return read_mesh(r);
 }
 
 void broadcast_mesh(mesh::Mesh& mesh, int root) {
   if (size() == 1) return;
   std::vector<char> bytes;
-  long long n = 0;
-  if (rank() == root) {
-    bytes = pack_mesh(mesh);
-    n = static_cast<long long>(bytes.size());
-  }
+  if (rank() == root) bytes = pack_mesh(mesh);
+  broadcast_bytes(bytes, root);
+  if (rank() != root) mesh = unpack_mesh(bytes);
+}
+
+void broadcast_bytes(std::vector<char>& bytes, int root) {
+  if (size() == 1) return;
+  long long n = static_cast<long long>(bytes.size());
   MPI_Bcast(&n, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD);
   bytes.resize(static_cast<std::size_t>(n));
   constexpr std::size_t piece = std::size_t(1) << 30;
   for (std::size_t at = 0; at < bytes.size(); at += piece)
     MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(piece, bytes.size() - at)), MPI_BYTE, root, MPI_COMM_WORLD);
-  if (rank() != root) mesh = unpack_mesh(bytes);
 }
 
 }  // namespace tribex::solver::parallel

@@ -131,8 +131,8 @@ TEST(SplitMesh, MeshBytesRoundTrip) {
   EXPECT_EQ(back.side_sets, m.side_sets);
 }
 
-// build_model on a one-rank part (the parallel set-up's code: partial sums, the contact surfaces'
-// mesh and gathered masses) against the serial build_model: the same model bit for bit.
+// build_model on a one-rank part (the parallel set-up's code: partial sums, the contact faces given
+// and the surface masses summed from their owners) against the serial build_model: the same model bit for bit.
 class BuildModelOnAPart : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(BuildModelOnAPart, EqualsTheSerialModelOnOneRank) {
@@ -141,10 +141,9 @@ TEST_P(BuildModelOnAPart, EqualsTheSerialModelOnOneRank) {
   const mesh::Mesh whole = solver::build_mesh(deck);
   const std::vector<int> part(static_cast<std::size_t>(whole.element_count()), 0);
   const auto holders = solver::parallel::node_holders(whole, part);
-  const mesh::Mesh contact_mesh =
-      deck.procedure.region.contact ? solver::contact_surface_mesh(whole, *deck.procedure.region.contact) : mesh::Mesh{};
-  const solver::Model m =
-      solver::build_model(deck, solver::parallel::split_mesh(whole, part, holders, 0), contact_mesh);
+  const solver::ContactFaces faces =
+      deck.procedure.region.contact ? solver::contact_faces(whole, *deck.procedure.region.contact) : solver::ContactFaces{};
+  const solver::Model m = solver::build_model(deck, solver::parallel::split_mesh(whole, part, holders, 0), faces);
   EXPECT_EQ(m.mass, serial.mass);
   EXPECT_EQ(m.total_mass, serial.total_mass);
   EXPECT_EQ(m.initial_velocity, serial.initial_velocity);
@@ -175,6 +174,8 @@ TEST_P(BuildModelOnAPart, EqualsTheSerialModelOnOneRank) {
     for (std::size_t s = 0; s < m.contact->surfaces().size(); ++s)
       EXPECT_EQ(m.contact->surfaces()[s].face_count(), serial.contact->surfaces()[s].face_count());
     EXPECT_EQ(m.contact->surface_nodes(), serial.contact->surface_nodes());
+    EXPECT_EQ(m.contact_global_node, serial.contact_global_node);
+    EXPECT_FALSE(m.contact_global_node.empty());
   }
 }
 
