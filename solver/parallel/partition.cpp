@@ -14,11 +14,23 @@ std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts) {
   if (parts <= 1 || ne == 0) return part;
   if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
   idx_t n_elements = ne, n_nodes = mesh.node_count(), n_common = 4, numbering = 0;
-  std::vector<idx_t> eptr(static_cast<std::size_t>(ne) + 1), eind(mesh.connectivity.begin(), mesh.connectivity.end());
+  // The dual graph from the connectivity as it is where idx_t is int (METIS reads it, does not write
+  // it), else from a copy; the element offsets are freed before the partitioning, whose workspace is
+  // rank 0's peak memory in a parallel set-up (tools/bench/README.md "Counts per rank").
+  std::vector<idx_t> eptr(static_cast<std::size_t>(ne) + 1), copy;
   for (int e = 0; e <= ne; ++e) eptr[e] = 8 * e;
+  idx_t* eind = nullptr;
+  if constexpr (sizeof(idx_t) == sizeof(int)) {
+    eind = reinterpret_cast<idx_t*>(const_cast<int*>(mesh.connectivity.data()));
+  } else {
+    copy.assign(mesh.connectivity.begin(), mesh.connectivity.end());
+    eind = copy.data();
+  }
   idx_t *xadj = nullptr, *adjncy = nullptr;
-  if (METIS_MeshToDual(&n_elements, &n_nodes, eptr.data(), eind.data(), &n_common, &numbering, &xadj, &adjncy) != METIS_OK)
+  if (METIS_MeshToDual(&n_elements, &n_nodes, eptr.data(), eind, &n_common, &numbering, &xadj, &adjncy) != METIS_OK)
     throw std::runtime_error("METIS_MeshToDual failed");
+  eptr = {};
+  copy = {};
   idx_t n_constraints = 1, n_parts = parts, cut = 0;
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
