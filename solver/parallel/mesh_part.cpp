@@ -75,6 +75,10 @@ std::map<std::string, int> read_sizes(ByteReader& r) {
   return sizes;
 }
 
+constexpr int part_tag = 23;
+
+}  // namespace
+
 std::vector<char> pack_part(const MeshPart& p) {
   ByteWriter w;
   write_mesh(w, p.mesh);
@@ -103,10 +107,6 @@ MeshPart unpack_part(const std::vector<char>& bytes) {
   p.side_set_size = read_sizes(r);
   return p;
 }
-
-constexpr int part_tag = 23;
-
-}  // namespace
 
 NodeHolders node_holders(const mesh::Mesh& mesh, const std::vector<int>& part) {
   const int nn = mesh.node_count(), ne = mesh.element_count();
@@ -213,25 +213,6 @@ MeshPart distribute_mesh(const mesh::Mesh* whole, const std::vector<int>* part, 
     MPI_Recv(bytes.data() + at, static_cast<int>(std::min(piece, bytes.size() - at)), MPI_BYTE, 0, part_tag,
              MPI_COMM_WORLD, MPI_STATUS_IGNORE);
   return unpack_part(bytes);
-}
-
-std::vector<char> pack_mesh(const mesh::Mesh& mesh) {
-  ByteWriter w;
-  write_mesh(w, mesh);
-  return std::move(w.bytes);
-}
-
-mesh::Mesh unpack_mesh(const std::vector<char>& bytes) {
-  ByteReader r(bytes);
-  return read_mesh(r);
-}
-
-void broadcast_mesh(mesh::Mesh& mesh, int root) {
-  if (size() == 1) return;
-  std::vector<char> bytes;
-  if (rank() == root) bytes = pack_mesh(mesh);
-  broadcast_bytes(bytes, root);
-  if (rank() != root) mesh = unpack_mesh(bytes);
 }
 
 void broadcast_bytes(std::vector<char>& bytes, int root) {

@@ -46,11 +46,8 @@ MeshPart split_mesh(const mesh::Mesh& whole, const std::vector<int>& part, const
 /// receive theirs. Nothing in it throws on one rank only (node_holders, which checks the mesh, comes first).
 MeshPart distribute_mesh(const mesh::Mesh* whole, const std::vector<int>* part, const NodeHolders* holders);
 
-/// A mesh as bytes (point-to-point messages and broadcasts of set-up data), and back.
-std::vector<char> pack_mesh(const mesh::Mesh& mesh);
-mesh::Mesh unpack_mesh(const std::vector<char>& bytes);
-
-/// Collective: `mesh` (meaningful on `root` only) on every rank.
-void broadcast_mesh(mesh::Mesh& mesh, int root = 0);
+/// A part as bytes (the message distribute_mesh sends), and back.
+std::vector<char> pack_part(const MeshPart& part);
+MeshPart unpack_part(const std::vector<char>& bytes);
 
 }  // namespace tribex::solver::parallel

@@ -116,19 +116,29 @@ TEST(SplitMesh, ANodeInNoElementIsRefusedBeforeAnyPartIsSent) {
   }
 }
 
-TEST(SplitMesh, MeshBytesRoundTrip) {
-  const mesh::Mesh m = two_block_box();
-  const mesh::Mesh back = solver::parallel::unpack_mesh(solver::parallel::pack_mesh(m));
-  EXPECT_EQ(back.coordinates, m.coordinates);
-  EXPECT_EQ(back.connectivity, m.connectivity);
-  ASSERT_EQ(back.blocks.size(), m.blocks.size());
-  for (std::size_t b = 0; b < m.blocks.size(); ++b) {
-    EXPECT_EQ(back.blocks[b].name, m.blocks[b].name);
-    EXPECT_EQ(back.blocks[b].first_element, m.blocks[b].first_element);
-    EXPECT_EQ(back.blocks[b].element_count, m.blocks[b].element_count);
+TEST(SplitMesh, APartSurvivesItsMessage) {
+  const mesh::Mesh whole = two_block_box();
+  const std::vector<int> part = solver::parallel::partition_elements(whole, 2);
+  const MeshPart p = solver::parallel::split_mesh(whole, part, solver::parallel::node_holders(whole, part), 1);
+  const MeshPart back = solver::parallel::unpack_part(solver::parallel::pack_part(p));
+  EXPECT_EQ(back.mesh.coordinates, p.mesh.coordinates);
+  EXPECT_EQ(back.mesh.connectivity, p.mesh.connectivity);
+  ASSERT_EQ(back.mesh.blocks.size(), p.mesh.blocks.size());
+  for (std::size_t b = 0; b < p.mesh.blocks.size(); ++b) {
+    EXPECT_EQ(back.mesh.blocks[b].name, p.mesh.blocks[b].name);
+    EXPECT_EQ(back.mesh.blocks[b].first_element, p.mesh.blocks[b].first_element);
+    EXPECT_EQ(back.mesh.blocks[b].element_count, p.mesh.blocks[b].element_count);
   }
-  EXPECT_EQ(back.node_sets, m.node_sets);
-  EXPECT_EQ(back.side_sets, m.side_sets);
+  EXPECT_EQ(back.mesh.node_sets, p.mesh.node_sets);
+  EXPECT_EQ(back.mesh.side_sets, p.mesh.side_sets);
+  EXPECT_EQ(back.global_node, p.global_node);
+  EXPECT_EQ(back.global_element, p.global_element);
+  EXPECT_EQ(back.holder_offset, p.holder_offset);
+  EXPECT_EQ(back.holder_rank, p.holder_rank);
+  EXPECT_EQ(back.global_node_count, p.global_node_count);
+  EXPECT_EQ(back.global_element_count, p.global_element_count);
+  EXPECT_EQ(back.node_set_size, p.node_set_size);
+  EXPECT_EQ(back.side_set_size, p.side_set_size);
 }
 
 // build_model on a one-rank part (the parallel set-up's code: partial sums, the contact faces given
