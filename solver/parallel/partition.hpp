@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Element partition of a mesh for a parallel run: METIS k-way (METIS_PartGraphKway) on the
 // element dual graph (two hex8 elements are neighbours when they share a face, 4 nodes), with a
-// fixed seed so that every rank computes the same partition without communication.
+// fixed seed so that a run is partitioned the same way every time (rank 0 computes it and sends the
+// ranks their parts: parallel/mesh_part.hpp).
 #pragma once
 
 #include <vector>
