@@ -47,6 +47,10 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
     if (p.primary) primary_slave_nodes += surfaces_[p.slave].nodes.size();
   fit_r2_.reserve(primary_slave_nodes);
   fit_p2_.reserve(primary_slave_nodes);
+  plan_.reserve(passes_.size() + 2);
+  plan_.assign(passes_.size(), 0.0);
+  located_value_.assign(1 + 2 * passes_.size(), 0.0);
+  located_node_.assign(1 + 2 * passes_.size(), -1);
   for (const auto& s : surfaces_) all_nodes_.insert(all_nodes_.end(), s.nodes.begin(), s.nodes.end());
   std::sort(all_nodes_.begin(), all_nodes_.end());
   all_nodes_.erase(std::unique(all_nodes_.begin(), all_nodes_.end()), all_nodes_.end());
@@ -80,52 +84,70 @@ void ContactManager::set_axis(const double point[3], const double direction[3]) 
   axis_.set = true;
 }
 
-bool ContactManager::needs_search(const Pass& p, const double* x) const {
-  if (!p.searched) return true;
-  // Both surfaces move: a pair can close by twice the largest node motion.
-  const double limit = p.research_fraction * p.margin;
-  const double limit2 = limit * limit;
+// The largest squared motion of the pass's counted nodes since its last search, m^2 (both surfaces
+// move: a pair can close by twice the largest node motion).
+double ContactManager::motion_since_search(const Pass& p, const double* x) const {
+  double largest = 0.0;
   std::size_t k = 0;
   for (int s : {p.slave, p.master})
     for (int node : surfaces_[s].nodes) {
-      double d2 = 0.0;
-      for (int i = 0; i < 3; ++i) {
-        const double d = x[3 * node + i] - p.x_at_search[3 * k + i];
-        d2 += d * d;
+      if (counts(node)) {
+        double d2 = 0.0;
+        for (int i = 0; i < 3; ++i) {
+          const double d = x[3 * node + i] - p.x_at_search[3 * k + i];
+          d2 += d * d;
+        }
+        largest = std::max(largest, d2);
       }
-      if (d2 > limit2) return true;
       ++k;
     }
-  return false;
+  return largest;
+}
+
+bool ContactManager::plan_searches(const double* x) {
+  for (std::size_t i = 0; i < passes_.size(); ++i)
+    plan_[i] = passes_[i].searched ? motion_since_search(passes_[i], x) : INFINITY;
+  if (reductions_) reductions_->max(plan_.data(), static_cast<int>(plan_.size()));
+  bool any = false;
+  for (std::size_t i = 0; i < passes_.size(); ++i) {
+    const double limit = passes_[i].research_fraction * passes_[i].margin;
+    passes_[i].search_due = plan_[i] > limit * limit;
+    any = any || passes_[i].search_due;
+  }
+  // A distributed run refreshes its region when any pass searches: every pass then searches the new one.
+  if (any && reductions_)
+    for (auto& p : passes_) p.search_due = 1;
+  return any;
 }
 
 // One-step motion of the pass's surfaces against its capture distance (ContactTotals::motion_ratio). It
 // bounds the relative approach from the nodes' speeds alone, so it also sees a body that is still far
 // from the other one and would pass through it within the step (tunnelling).
-void ContactManager::track_motion(const Pass& p, const double* v, double dt, ContactTotals& totals) const {
-  double fastest[2] = {0.0, 0.0};
-  int node_of[2] = {-1, -1};
-  for (int side = 0; side < 2; ++side)
+void ContactManager::track_motion(Pass& p, const double* v) const {
+  for (int side = 0; side < 2; ++side) {
+    p.fastest[side] = 0.0;
+    p.fastest_node[side] = -1;
     for (int node : surfaces_[side == 0 ? p.slave : p.master].nodes) {
+      if (!counts(node)) continue;
       const double* vn = v + 3 * node;
       const double s2 = vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2];
-      if (s2 > fastest[side]) {
-        fastest[side] = s2;
-        node_of[side] = node;
+      if (s2 > p.fastest[side]) {
+        p.fastest[side] = s2;
+        p.fastest_node[side] = node;
       }
     }
-  const double capture = p.mortar && p.capture > 0.0 ? p.capture : p.margin;
-  const double ratio = dt * (std::sqrt(fastest[0]) + std::sqrt(fastest[1])) / capture;
-  if (ratio > totals.motion_ratio) {
-    totals.motion_ratio = ratio;
-    totals.motion_node = fastest[0] >= fastest[1] ? node_of[0] : node_of[1];
   }
 }
 
 void ContactManager::search(Pass& p, const double* x) {
-  if (p.mortar && p.capture == 0.0) p.capture = p.margin + 1.25 * max_face_diameter(surfaces_[p.slave], x);
+  const char* present = present_.empty() ? nullptr : present_.data();
+  if (p.mortar && p.capture == 0.0) {
+    double diameter = max_face_diameter(surfaces_[p.slave], x, present);
+    if (reductions_) reductions_->max(&diameter, 1);
+    p.capture = p.margin + 1.25 * diameter;
+  }
   bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.mortar ? p.capture : p.margin,
-                          p.candidate_offset, p.candidates);
+                          p.candidate_offset, p.candidates, present);
   if (p.mortar) {
     // Headroom for later searches (the wide mortar capture gives more candidates): no allocation in the loop.
     if (p.candidates.capacity() < p.candidates.size() + p.candidates.size() / 4)
@@ -162,23 +184,35 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
     status_[node] = 0.0;
     traction_[3 * node] = traction_[3 * node + 1] = traction_[3 * node + 2] = 0.0;
   }
+  if (std::any_of(passes_.begin(), passes_.end(), [](const Pass& p) { return p.search_due < 0; })) plan_searches(x);
   for (auto& p : passes_) {
-    if (needs_search(p, x)) {
+    if (p.search_due) {
       search(p, x);
       ++totals.searches;
     } else {
       ++work_.reuses;
     }
+    p.search_due = -1;
     if (!p.candidate_offset.empty()) work_.pairs += p.candidate_offset.back();
     p.gap.assign(surfaces_[p.slave].nodes.size(), NAN);
     p.stable_dt = INFINITY;
-    if (v) track_motion(p, v, dt, totals);
+    if (v) track_motion(p, v);
     if (p.mortar)
       apply_mortar(p, x, force, totals);
     else
       node_to_face(p, {x, v, other_force, dt, force}, totals, friction);
     if (axis_.set && p.primary) totals.radius_edge = edge_radius(p, x);
   }
+  reduce_totals(totals, friction);
+  if (v)
+    for (const auto& p : passes_) {
+      const double capture = p.mortar && p.capture > 0.0 ? p.capture : p.margin;
+      const double ratio = dt * (std::sqrt(p.fastest[0]) + std::sqrt(p.fastest[1])) / capture;
+      if (ratio > totals.motion_ratio) {
+        totals.motion_ratio = ratio;
+        totals.motion_node = p.fastest[0] >= p.fastest[1] ? p.fastest_node[0] : p.fastest_node[1];
+      }
+    }
   if (axis_.set) totals.radius_pressure_fit = pressure_fit_radius();
   totals.normal_force = totals.compressive_force - totals.adhesive_force;
   totals.tangential_force = std::sqrt(friction[0] * friction[0] + friction[1] * friction[1] + friction[2] * friction[2]);

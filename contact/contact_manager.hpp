@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_reductions.hpp"
 #include "contact/contact_totals.hpp"
 #include "contact/laws/contact_law.hpp"
 #include "contact/mortar/mortar_enforcement.hpp"
@@ -83,6 +84,33 @@ class ContactManager {
   void set_unscaled_penalty_reference(std::vector<double> unscaled_mass, double unscaled_dt);
   /// The largest k dt^2 / m_eff of a mass-scaled run's penalty (the cap above) for penalty scale `s`.
   static double scaled_penalty_cap(double s) { return s > 2.0 ? s : 2.0; }
+
+  /// Distributed runs (contact/README.md "Distributed contact", solver/parallel/contact_region.hpp):
+  /// this rank reports the totals, search decision and motion of the nodes with `counted` [node]
+  /// nonzero (the nodes it owns: every node is counted by one rank) and combines them with the other
+  /// ranks' through `reductions`; it projects only the slave nodes it holds (set_present). Every pass
+  /// searches afresh at the next step. `X` [node][3] the reference positions of every surface node, m.
+  void distribute(std::vector<char> counted, ContactReductions* reductions, const double* X);
+  /// The nodes whose positions this rank holds from the next search on ([node] nonzero: its own and
+  /// its region's ghosts): only these slave nodes are projected and only master faces of these nodes
+  /// searched. Set at a step whose plan_searches returned true, before compute_forces.
+  void set_present(const std::vector<char>& present);
+  /// Faces of every surface whose four nodes are present (all faces without set_present).
+  long long present_face_count() const;
+  /// Decides which passes search this step from the motion of the counted nodes since each pass's
+  /// last search (the largest over the ranks); true if any pass does. compute_forces decides itself
+  /// when this was not called before it.
+  bool plan_searches(const double* x);
+  /// How far from a rank's own surface nodes it must hold the others for its own nodes' contact forces
+  /// to be complete until the next search, m: the chain of dependencies of the passes (a penalty
+  /// force reaches one capture plus one face away; a tangential pass reads the normal forces and
+  /// master shares of its master nodes, two more such hops), plus the motion a search allows.
+  double region_reach() const;
+  /// Per-node state a rank must take from the node's owner when the node enters its region (the laws'
+  /// state of every pass where it is a slave node): node_state_width() doubles per node.
+  int node_state_width() const;
+  void get_node_state(int node, double* out) const;
+  void set_node_state(int node, const double* in);
 
   /// Contact axis the radii are measured from (radius_max, radius_edge, radius_pressure_fit): a point and a unit direction.
   void set_axis(const double point[3], const double direction[3]);
@@ -148,6 +176,9 @@ class ContactManager {
     std::vector<int> candidate_offset, candidates;
     std::vector<double> x_at_search;  // [slave node + master node][3] positions at the last search
     bool searched = false;
+    signed char search_due = -1;  // plan_searches' decision for this step (-1: not planned)
+    double fastest[2] = {0.0, 0.0};   // this step's largest squared speed of the counted slave, master nodes, m^2/s^2
+    int fastest_node[2] = {-1, -1};
     bool primary = true;
     std::vector<double> gap;  // [slave node] signed gap to the closest face over which it projects (NaN: none)
     std::vector<int> last_face;  // [slave node] face of the previous step (-1: none), tried first
@@ -172,9 +203,11 @@ class ContactManager {
   void apply_mortar(Pass& p, const double* x, double* force, ContactTotals& totals);  // mortar/mortar_pass.cpp
   double edge_radius(const Pass& p, const double* x) const;
   double pressure_fit_radius() const;
-  bool needs_search(const Pass& p, const double* x) const;
-  void track_motion(const Pass& p, const double* v, double dt, ContactTotals& totals) const;
+  double motion_since_search(const Pass& p, const double* x) const;
+  void track_motion(Pass& p, const double* v) const;
   void search(Pass& p, const double* x);
+  void reduce_totals(ContactTotals& totals, double friction[3]);
+  bool counts(int node) const { return counted_.empty() || counted_[node] != 0; }
 
   std::vector<ContactSurface> surfaces_;
   std::vector<Pass> passes_;
@@ -191,6 +224,14 @@ class ContactManager {
   std::vector<char> prescribed_;  // [node] velocity prescribed in x, y, z (set_prescribed_nodes)
   std::vector<double> master_share_;  // [node] sum of N_a over the junction pairs on a master node (zero between uses)
   std::vector<int> all_nodes_;
+  // Distributed runs only (distribute, set_present; empty otherwise): [node] counted here, present here.
+  std::vector<char> counted_, present_;
+  ContactReductions* reductions_ = nullptr;
+  UncountedTotals uncounted_;
+  std::vector<double> plan_;  // [pass] scratch of plan_searches (room for 2 more: reduce_totals)
+  std::vector<double> located_value_;  // [1 + 2 pass] scratch of reduce_totals
+  std::vector<int> located_node_;
+  double largest_face_diameter_ = 0.0;  // over every surface in the reference positions, m (region_reach)
   Axis axis_;
   long total_searches_ = 0;
   Work work_;

@@ -15,8 +15,9 @@ namespace tribex::contact {
 double ContactManager::edge_radius(const Pass& p, const double* x) const {
   const ContactSurface& slave = surfaces_[p.slave];
   double sum = 0.0;
-  int count = 0;
-  for (int f = 0; f < slave.face_count(); ++f)
+  double count = 0.0;
+  for (int f = 0; f < slave.face_count(); ++f) {
+    if (!counts(slave.face_nodes[4 * f])) continue;  // a face is reported by the rank counting its first node
     for (int e = 0; e < 4; ++e) {
       const int a = slave.face_nodes[4 * f + e], b = slave.face_nodes[4 * f + (e + 1) % 4];
       const double ga = p.gap[slave.face_local[4 * f + e]], gb = p.gap[slave.face_local[4 * f + (e + 1) % 4]];
@@ -27,7 +28,14 @@ double ContactManager::edge_radius(const Pass& p, const double* x) const {
       sum += axis_distance(crossing, axis_.point, axis_.direction);
       ++count;
     }
-  return count ? sum / count : 0.0;
+  }
+  if (reductions_) {
+    double both[2] = {sum, count};
+    reductions_->sum(both, 2);
+    sum = both[0];
+    count = both[1];
+  }
+  return count > 0.0 ? sum / count : 0.0;
 }
 
 // Contact radius from the nodal penalty pressures p_I = f_I / A_I of the contacting slave nodes: the
@@ -38,23 +46,28 @@ double ContactManager::edge_radius(const Pass& p, const double* x) const {
 // presumes that shape: for another pressure profile it is a shape-fitted, not a measured, radius.
 // The nodal forces (not the penetrations, whose penalty stiffness varies with the projection point)
 // carry the pressure. 0 with fewer than 3 nodes, all nodes at one radius, or a p^2 that does not fall with r.
+// Distributed runs: each rank holds the points of the nodes it counts; the means and then the centred
+// sums are summed over the ranks (two reductions), so the fit is the one-rank fit to round-off.
 double ContactManager::pressure_fit_radius() const {
-  const std::size_t n = fit_r2_.size();
-  if (n < 3) return 0.0;
-  double mean_r2 = 0.0, mean_p2 = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    mean_r2 += fit_r2_[i];
-    mean_p2 += fit_p2_[i];
+  const std::size_t local = fit_r2_.size();
+  double moments[3] = {double(local), 0.0, 0.0};  // n, sum r^2, sum p^2
+  for (std::size_t i = 0; i < local; ++i) {
+    moments[1] += fit_r2_[i];
+    moments[2] += fit_p2_[i];
   }
-  mean_r2 /= double(n);
-  mean_p2 /= double(n);
-  double srr = 0.0, srp = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    srr += (fit_r2_[i] - mean_r2) * (fit_r2_[i] - mean_r2);
-    srp += (fit_r2_[i] - mean_r2) * (fit_p2_[i] - mean_p2);
+  if (reductions_) reductions_->sum(moments, 3);
+  const double n = moments[0];
+  if (n < 3.0) return 0.0;
+  const double mean_r2 = moments[1] / n, mean_p2 = moments[2] / n;
+  double sums[2] = {0.0, 0.0};  // srr, srp
+  for (std::size_t i = 0; i < local; ++i) {
+    sums[0] += (fit_r2_[i] - mean_r2) * (fit_r2_[i] - mean_r2);
+    sums[1] += (fit_r2_[i] - mean_r2) * (fit_p2_[i] - mean_p2);
   }
+  if (reductions_) reductions_->sum(sums, 2);
+  const double srr = sums[0], srp = sums[1];
   // All nodes at one radius (to round-off): nothing to fit.
-  if (!(srr > 1e-12 * double(n) * mean_r2 * mean_r2) || !(srp < 0.0)) return 0.0;
+  if (!(srr > 1e-12 * n * mean_r2 * mean_r2) || !(srp < 0.0)) return 0.0;
   const double slope = srp / srr;  // -p0^2 / a^2
   const double a2 = mean_r2 - mean_p2 / slope;
   return a2 > 0.0 ? std::sqrt(a2) : 0.0;

@@ -451,6 +451,7 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
     model.contact = build_contact(*region.contact, model, {f, v.mass, std::move(v.prescribed)}, dt, &model.preflight,
                                   &model.setup);
     model.contact_global_node = f.global_node;
+    model.contact_reference = f.coordinates;
     unscaled_mass = std::move(v.unscaled_mass);
     if (model.mass_scaling.active) {
       model.contact->set_unscaled_penalty_reference(std::move(unscaled_mass), model.mass_scaling.unscaled_time_step);

@@ -79,6 +79,9 @@ struct Model {
   std::unique_ptr<contact::ContactManager> contact;
   /// [surface node] the whole mesh's node of each node in the contact's numbering (contact_setup.hpp).
   std::vector<int> contact_global_node;
+  /// [surface node][3] the reference positions of the contact's nodes, m (a distributed run's ghost
+  /// rows start from them, solver/parallel/contact_region.hpp).
+  std::vector<double> contact_reference;
   std::vector<std::string> preflight;  // lines for the pre-flight report (initial contact gaps, ...)
   SetupFindings setup;  // warnings and unsafe choices found at set-up, for the run guards (solver/guards/README.md)
   /// This rank's share of a parallel run (from its MeshPart); identity on one rank.

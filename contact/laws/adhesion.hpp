@@ -63,12 +63,12 @@ struct Adhesion {
   /// The adhesion at a point: potential energy, in-contact bookkeeping for 0 <= g <= g_j (area
   /// counted unless `count_area` is false), and the attraction for g >= 0.
   void adhere(const ContactPoint& p, PassView& view, bool count_area) const {
-    view.totals.adhesion_energy += view.factor * p.area * adhesive_energy(p.gap, lj);
+    view.totals_of(p.node).adhesion_energy += view.factor * p.area * adhesive_energy(p.gap, lj);
     if (p.gap <= gap_tolerance && p.gap >= 0.0) view.count_contact(p, count_area);  // g < 0: counted by the pass
     if (p.gap < 0.0) return;
     // Attraction: toward the master face, i.e. against its outward normal.
     const double fa = view.factor * adhesive_traction(p.gap, lj) * p.area;
-    view.totals.adhesive_force += fa;
+    view.totals_of(p.node).adhesive_force += fa;
     const double f[3] = {-fa * p.normal[0], -fa * p.normal[1], -fa * p.normal[2]};
     view.apply(p, f);
   }

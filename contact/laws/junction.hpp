@@ -71,7 +71,7 @@ struct Junction {
     int count = 0;  // keep the pairs that own contact area
     for (int j = 0; j < q.count; ++j) {
       const double share = q.share[q.slave[j]];
-      view.totals.area += view.factor * share;
+      view.totals_of(view.slave.nodes[q.slave[j]]).area += view.factor * share;
       if (!(share > 0.0)) continue;
       q.slave[count] = q.slave[j];
       q.face[count] = q.face[j];
@@ -82,7 +82,7 @@ struct Junction {
     q.count = count;
     shear_pairs(view, shear, [&](int j, double) {
       const double capacity = view.factor * shear.strength * q.share[q.slave[j]];
-      view.totals.junction_capacity += capacity;
+      view.totals_of(view.slave.nodes[q.slave[j]]).junction_capacity += capacity;
       return capacity;
     });
   }

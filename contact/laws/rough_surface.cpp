@@ -60,11 +60,12 @@ void add_shear(const ContactPoint& p, const JunctionLaw& law, PassView& view, do
   for (int i = 0; i < 3; ++i) {
     const double ft = view.factor * tau[i] * p.area;
     f[i] += ft;
-    view.friction[i] += sign * ft;
+    view.friction_of(p.node)[i] += sign * ft;
     power += ft * vt[i];
   }
-  view.totals.friction_power += std::abs(power);
-  view.totals.junction_capacity += view.factor * law.strength * p.area;
+  ContactTotals& totals = view.totals_of(p.node);
+  totals.friction_power += std::abs(power);
+  totals.junction_capacity += view.factor * law.strength * p.area;
 }
 
 }  // namespace
@@ -133,7 +134,7 @@ void RoughSurface::at_point(const ContactPoint& p, PassView& view) const {
   const double d = p.gap + mean_plane_offset;
   if (d >= law->reach()) return;
   const RoughSurfaceState s = law->evaluate(d);
-  ContactTotals& totals = view.totals;
+  ContactTotals& totals = view.totals_of(p.node);
   const double fn_mag = view.factor * s.pressure * p.area;
   double f[3];
   for (int i = 0; i < 3; ++i) f[i] = fn_mag * p.normal[i];
@@ -159,8 +160,9 @@ void RoughSurface::at_point(const ContactPoint& p, PassView& view) const {
   const double c_damper = view.factor * shear.strength * s.area_fraction * p.area / shear.reference_speed;
   if (k_spring > 0.0 || c_damper > 0.0) {
     const double m_eff = view.effective_mass(p);
-    if (k_spring > 0.0) view.stable_dt = std::min(view.stable_dt, 2.0 * std::sqrt(m_eff / k_spring));
-    if (c_damper > 0.0) view.stable_dt = std::min(view.stable_dt, 2.0 * m_eff / c_damper);
+    double& stable_dt = view.stable_dt_of(p.node);
+    if (k_spring > 0.0) stable_dt = std::min(stable_dt, 2.0 * std::sqrt(m_eff / k_spring));
+    if (c_damper > 0.0) stable_dt = std::min(stable_dt, 2.0 * m_eff / c_damper);
   }
 }
 

@@ -17,15 +17,18 @@ double mortar_penalty_per_area(const ContactSurface& slave, const ContactSurface
   return scale * (a * b / (a + b)) / (dt * dt);
 }
 
-double max_face_diameter(const ContactSurface& surface, const double* x) {
+double max_face_diameter(const ContactSurface& surface, const double* x, const char* present) {
   double d2 = 0.0;
-  for (int f = 0; f < surface.face_count(); ++f)
+  for (int f = 0; f < surface.face_count(); ++f) {
+    const int* fn = &surface.face_nodes[4 * f];
+    if (present && !(present[fn[0]] && present[fn[1]] && present[fn[2]] && present[fn[3]])) continue;
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b) {
         const double* p = x + 3 * surface.face_nodes[4 * f + a];
         const double* q = x + 3 * surface.face_nodes[4 * f + b];
         d2 = std::max(d2, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
       }
+  }
   return std::sqrt(d2);
 }
 
@@ -62,6 +65,8 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
     const int* sl = &slave.face_local[4 * f];
     const int k0 = sl[0];
     if (candidate_offset[k0 + 1] == candidate_offset[k0]) continue;
+    MortarTotals uncounted;
+    MortarTotals& face_totals = !settings.counted || settings.counted[sn[0]] ? totals : uncounted;
     double X[12];
     for (int a = 0; a < 4; ++a)
       for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * sn[a] + i];
@@ -127,10 +132,10 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
           const double* nm = q.master_normal[p];
           const double separation = -g * (plane.normal[0] * nm[0] + plane.normal[1] * nm[1] + plane.normal[2] * nm[2]);
           if (separation <= settings.law.capture_gap()) {
-            totals.adhesion_energy += factor * w * adhesive_energy(separation, settings.law);
+            face_totals.adhesion_energy += factor * w * adhesive_energy(separation, settings.law);
             const double sigma = adhesive_traction(separation, settings.law);  // 0 for g < 0 (penalty side)
             if (sigma != 0.0) {
-              totals.adhesive_force += factor * sigma * w;
+              face_totals.adhesive_force += factor * sigma * w;
               for (int a = 0; a < 4; ++a)
                 for (int i = 0; i < 3; ++i) {
                   // The slave point pulled toward the master (against n_m), the master point back.
@@ -161,7 +166,7 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
     mean_gap_[k] = overlap_area_[k] > 0.0 ? weighted_gap_[k] / overlap_area_[k] : NAN;
     if (overlap_area_[k] > 0.0 && mean_gap_[k] < 0.0 && -mean_gap_[k] <= settings.margin) {
       pressure_[k] = factor * settings.penalty_per_area * (-mean_gap_[k]);
-      totals.compressive_force += pressure_[k] * overlap_area_[k];
+      if (!settings.counted || settings.counted[slave.nodes[k]]) totals.compressive_force += pressure_[k] * overlap_area_[k];
     }
   }
   // Sweep 2: f_i = -n_s sum_j M_ij p_j + sum_j G_ij p_j on the slave, f_k = +n_s sum_j D_kj p_j - sum_j H_kj p_j

@@ -37,6 +37,9 @@ struct MortarSettings {
   double penalty_per_area = 0.0;   // k_A, Pa/m
   bool adhesion = false;           // add the Lennard-Jones traction at the integration points
   AdhesionLaw law;
+  // Distributed runs: [node] nonzero for the nodes whose totals this rank reports (a slave face's
+  // adhesion by its first node); nullptr: all (ContactManager::distribute).
+  const char* counted = nullptr;
 };
 
 /// Totals of one pass (forces on the slave side, N; energy J).
@@ -55,8 +58,9 @@ double mortar_penalty_per_area(const ContactSurface& slave, const ContactSurface
 
 /// Largest distance between two nodes of one face (m): the search capture of a mortar pass is
 /// the margin plus this, so that every master face overlapping a slave face is a candidate of
-/// each of that face's nodes.
-double max_face_diameter(const ContactSurface& surface, const double* x);
+/// each of that face's nodes. `present` [node] (nullptr: every node): only the faces whose four nodes
+/// this rank holds (contact_manager.hpp, distribute).
+double max_face_diameter(const ContactSurface& surface, const double* x, const char* present = nullptr);
 
 class MortarEnforcement {
  public:

@@ -19,6 +19,7 @@ void ContactManager::apply_mortar(Pass& p, const double* x, double* force, Conta
   const Adhesion* adhesion = adhesion_of(p.law);
   settings.adhesion = adhesion != nullptr;
   if (adhesion) settings.law = adhesion->lj;
+  if (!counted_.empty()) settings.counted = counted_.data();
   const MortarTotals t = p.mortar->apply(x, slave, surfaces_[p.master], p.candidate_offset, p.candidates, settings,
                                          force, traction_.data());
   totals.compressive_force += t.compressive_force;
@@ -34,6 +35,7 @@ void ContactManager::apply_mortar(Pass& p, const double* x, double* force, Conta
     if (!(pressure[k] > 0.0 || mean_gap[k] <= tolerance)) continue;
     const int node = slave.nodes[k];
     status_[node] = 1.0;
+    if (!counts(node)) continue;
     totals.area += p.factor * area[k];
     if (p.primary) ++totals.nodes;
     totals.max_penetration = std::max(totals.max_penetration, -mean_gap[k]);

@@ -22,7 +22,8 @@ void ContactManager::node_to_face_with(const Law& law, Pass& p, const StepInputs
   const ContactSurface& master = surfaces_[p.master];
   PassView view{slave,    master,         in.x,         in.v,     in.other_force, in.dt,   mass_, prescribed_,
                 in.force, traction_.data(), status_.data(), totals, friction,     p.factor, p.primary,
-                p.margin, axis_,          p.pairs,      master_share_, p.gap,     p.law_state.data(), p.stable_dt};
+                p.margin, axis_,          p.pairs,      master_share_, p.gap,     p.law_state.data(), p.stable_dt,
+                counted_.empty() ? nullptr : counted_.data(), &uncounted_};
   constexpr bool has_point_hook = requires(ContactPoint& q) { law.at_point(q, view); };
   constexpr bool area_from_shares = requires { Law::area_from_shares; };
   for (int k = 0; k < slave.node_count(); ++k) {
@@ -59,16 +60,17 @@ void ContactManager::node_to_face_with(const Law& law, Pass& p, const StepInputs
         traction_[3 * node + i] += fn_mag * n[i] / point.area;
       }
       status_[node] = 1.0;
-      totals.normal_force += fn_mag;
-      totals.compressive_force += fn_mag;
-      if constexpr (!area_from_shares) totals.area += p.factor * point.area;
-      totals.max_penetration = std::max(totals.max_penetration, -best.proj.gap);
-      note_penetration(totals, -best.proj.gap, point.area, node);
-      if (p.primary) ++totals.nodes;
+      ContactTotals& t = view.totals_of(node);
+      t.normal_force += fn_mag;
+      t.compressive_force += fn_mag;
+      if constexpr (!area_from_shares) t.area += p.factor * point.area;
+      t.max_penetration = std::max(t.max_penetration, -best.proj.gap);
+      note_penetration(t, -best.proj.gap, point.area, node);
+      if (p.primary) ++t.nodes;
       if (axis_.set) {
         const double r2 = axis_distance_squared(xs, axis_.point, axis_.direction);
-        totals.radius_max = std::max(totals.radius_max, std::sqrt(r2));
-        if (p.primary) {
+        t.radius_max = std::max(t.radius_max, std::sqrt(r2));
+        if (p.primary && view.counts(node)) {
           const double pressure = fn_mag / (p.factor * point.area);
           fit_r2_.push_back(r2);
           fit_p2_.push_back(pressure * pressure);

@@ -56,6 +56,13 @@ inline double effective_mass(const std::vector<double>& mass, const ContactPoint
   return ms * mM / (ms + mM);
 }
 
+/// Scratch that takes the totals of the slave nodes another rank reports (PassView::totals_of).
+struct UncountedTotals {
+  ContactTotals totals;
+  double friction[3] = {0.0, 0.0, 0.0};
+  double stable_dt = 0.0;
+};
+
 struct PassView {
   const ContactSurface& slave;
   const ContactSurface& master;
@@ -79,6 +86,16 @@ struct PassView {
   std::span<const double> gap;  // [slave node] this pass's gaps (NaN: no projection)
   double* state;                // the law's state [slave node][state_size] (n -> n+1 in place)
   double& stable_dt;            // the pass's critical time step (min over the law's contributions), s
+  // Distributed runs (ContactManager::distribute): the slave nodes whose totals, friction and stable
+  // step this rank reports; the others' go to `uncounted` and are dropped. nullptr: every node counts.
+  const char* counted;          // [node]
+  UncountedTotals* uncounted;
+
+  bool counts(int node) const { return counted == nullptr || counted[node] != 0; }
+  /// Where a contribution of slave node `node` to the totals goes.
+  ContactTotals& totals_of(int node) const { return counts(node) ? totals : uncounted->totals; }
+  double* friction_of(int node) const { return counts(node) ? friction : uncounted->friction; }
+  double& stable_dt_of(int node) const { return counts(node) ? stable_dt : uncounted->stable_dt; }
 
   /// Force f [3] on the slave node and -N_a f on the master face nodes; the node's traction.
   void apply(const ContactPoint& p, const double f[3]) const {

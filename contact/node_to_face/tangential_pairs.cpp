@@ -27,9 +27,10 @@ void TangentialPairs::record(const ContactPoint& p) {
 
 void PassView::count_contact(const ContactPoint& p, bool count_area) const {
   status[p.node] = 1.0;
-  if (count_area) totals.area += factor * p.area;
-  if (primary) ++totals.nodes;
-  if (axis.set) totals.radius_max = std::max(totals.radius_max, axis_distance(x + 3 * p.node, axis.point, axis.direction));
+  ContactTotals& t = totals_of(p.node);
+  if (count_area) t.area += factor * p.area;
+  if (primary) ++t.nodes;
+  if (axis.set) t.radius_max = std::max(t.radius_max, axis_distance(x + 3 * p.node, axis.point, axis.direction));
 }
 
 void predict_pair_velocities(PassView& view) {
@@ -92,9 +93,9 @@ void apply_pair_update(PassView& view, int j, const JunctionUpdate& up) {
     view.force[3 * node + i] += up.force[i];
     for (int a = 0; a < 4; ++a) view.force[3 * fn[a] + i] -= N[a] * up.force[i];
     view.traction[3 * node + i] += up.force[i] / view.slave.node_area[k];
-    view.friction[i] += sign * up.force[i];
+    view.friction_of(node)[i] += sign * up.force[i];
   }
-  view.totals.friction_power += up.power;
+  view.totals_of(node).friction_power += up.power;
 }
 
 void end_pairs(PassView& view) {

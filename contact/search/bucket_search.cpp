@@ -7,17 +7,25 @@
 namespace tribex::contact {
 
 void BucketSearch::find_candidates(const double* x, const ContactSurface& slave, const ContactSurface& master,
-                                   double capture, std::vector<int>& offset, std::vector<int>& faces) {
+                                   double capture, std::vector<int>& offset, std::vector<int>& faces,
+                                   const char* present) {
   const int nf = master.face_count();
   box_.resize(6 * static_cast<std::size_t>(nf));
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   double extent_sum = 0.0;
+  int active = 0;  // faces taking part
+  auto face_present = [&](int f) {
+    const int* fn = &master.face_nodes[4 * f];
+    return !present || (present[fn[0]] && present[fn[1]] && present[fn[2]] && present[fn[3]]);
+  };
   for (int f = 0; f < nf; ++f) {
     double* b = &box_[6 * f];
     for (int i = 0; i < 3; ++i) {
       b[i] = INFINITY;
       b[3 + i] = -INFINITY;
     }
+    if (!face_present(f)) continue;  // an empty box: never binned, never a candidate
+    ++active;
     for (int a = 0; a < 4; ++a)
       for (int i = 0; i < 3; ++i) {
         const double c = x[3 * master.face_nodes[4 * f + a] + i];
@@ -34,13 +42,18 @@ void BucketSearch::find_candidates(const double* x, const ContactSurface& slave,
   }
   // Bucket size: the mean inflated box extent, so a box overlaps about 2^dim buckets; grid capped
   // at a few buckets per face so that a sparse surface does not make an enormous grid.
-  cell_ = nf ? extent_sum / (3.0 * nf) : 1.0;
+  if (active == 0) {  // none of the master surface here: no candidates
+    offset.assign(static_cast<std::size_t>(slave.node_count()) + 1, 0);
+    faces.clear();
+    return;
+  }
+  cell_ = extent_sum / (3.0 * active);
   for (;;) {
     for (int i = 0; i < 3; ++i) origin_[i] = lo[i];
     nx_ = std::max(1, static_cast<int>(std::ceil((hi[0] - lo[0]) / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil((hi[1] - lo[1]) / cell_)));
     nz_ = std::max(1, static_cast<int>(std::ceil((hi[2] - lo[2]) / cell_)));
-    if (static_cast<double>(nx_) * ny_ * nz_ <= 8.0 * nf + 64) break;
+    if (static_cast<double>(nx_) * ny_ * nz_ <= 8.0 * active + 64) break;
     cell_ *= 1.5;
   }
   auto index = [&](double c, int i, int n) {
@@ -55,6 +68,7 @@ void BucketSearch::find_candidates(const double* x, const ContactSurface& slave,
     }
     for (int f = 0; f < nf; ++f) {
       const double* b = &box_[6 * f];
+      if (b[0] > b[3]) continue;  // not present
       const int i0 = index(b[0], 0, nx_), i1 = index(b[3], 0, nx_);
       const int j0 = index(b[1], 1, ny_), j1 = index(b[4], 1, ny_);
       const int k0 = index(b[2], 2, nz_), k1 = index(b[5], 2, nz_);
@@ -73,7 +87,7 @@ void BucketSearch::find_candidates(const double* x, const ContactSurface& slave,
   for (int k = 0; k < slave.node_count(); ++k) {
     const int node = slave.nodes[k];
     const double* p = x + 3 * node;
-    const bool outside = p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2] || p[2] > hi[2];
+    const bool outside = (present && !present[node]) || p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2] || p[2] > hi[2];
     if (!outside) {
       const int cell = (index(p[2], 2, nz_) * ny_ + index(p[1], 1, ny_)) * nx_ + index(p[0], 0, nx_);
       for (int c = cell_offset_[cell]; c < cell_offset_[cell + 1]; ++c) {

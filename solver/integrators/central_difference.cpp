@@ -45,12 +45,18 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   reaction_.assign(n3, 0.0);
   if (model.contact) {
     const std::size_t s3 = 3 * model.contact_global_node.size();
-    x_.assign(s3, 0.0);
+    x_ = model.contact_reference;
+    x_.resize(s3, 0.0);
     v_contact_.assign(s3, 0.0);
     f_other_contact_.assign(s3, 0.0);
     f_contact_.assign(s3, 0.0);
-    xl_ = model.mesh.coordinates;
     model.domain.set_surface(model.contact_global_node);
+    if (!model.domain.serial()) {
+      // Distributed contact: this rank counts the surface nodes it owns and holds its region's.
+      contact_region_ = std::make_unique<parallel::ContactRegion>(model.domain, model.contact->region_reach());
+      const auto& owned = model.domain.surface_owned();
+      model.contact->distribute(std::vector<char>(owned.begin(), owned.end()), contact_region_.get(), x_.data());
+    }
   }
   if (!model.silent.node.empty()) {
     silent_index_.assign(model.mass.size(), -1);
@@ -202,20 +208,30 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
   raise_pending_failure();
 
   if (model_.contact) {
-    // Every rank runs the whole contact on the gathered surface (the contact's numbering, surface
-    // node k) and adds the forces of the surface nodes it holds: the contact forces are never summed twice.
+    // The contact runs in its own numbering (surface node k) on this rank's rows and, in a
+    // distributed run, the ghost rows of its region (parallel/contact_region.hpp); each rank adds the
+    // contact forces of the surface nodes it holds, complete there by the region's reach.
     const auto contact_start = std::chrono::steady_clock::now();
     const auto& X = model_.mesh.coordinates;
     const auto& local = model_.domain.surface_local();
-    for (std::size_t k = 0; k < local.size(); ++k) {
-      const int l = local[k];
-      if (l >= 0)
-        for (int i = 0; i < 3; ++i) xl_[3 * l + i] = X[3 * l + i] + u_[3 * l + i];
-      for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = 0.0;
-    }
     // f_ (internal + applied, summed over the ranks, no contact yet) and the last step size let the
     // junction shear predict the slip of the coming velocity update (contact/contact_manager.hpp, step 5).
-    model_.domain.gather_surface(xl_.data(), v_.data(), f_.data(), x_.data(), v_contact_.data(), f_other_contact_.data());
+    for (std::size_t k = 0; k < local.size(); ++k) {
+      if (const int l = local[k]; l >= 0)
+        for (int i = 0; i < 3; ++i) {
+          x_[3 * k + i] = X[3 * l + i] + u_[3 * l + i];
+          v_contact_[3 * k + i] = v_[3 * l + i];
+          f_other_contact_[3 * k + i] = f_[3 * l + i];
+        }
+      for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = 0.0;
+    }
+    if (contact_region_) {
+      if (model_.contact->plan_searches(x_.data())) {
+        contact_region_->refresh(x_.data(), *model_.contact);
+        model_.contact->set_present(contact_region_->present());
+      }
+      contact_region_->fill_ghosts(x_.data(), v_contact_.data(), f_other_contact_.data());
+    }
     contact_totals_ = model_.contact->compute_forces(x_.data(), v_contact_.data(), f_contact_.data(),
                                                      f_other_contact_.data(), dt_half_);
     for (std::size_t k = 0; k < local.size(); ++k)

@@ -20,12 +20,14 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "inputs/deck.hpp"
 #include "solver/energy.hpp"
 #include "solver/model.hpp"
+#include "solver/parallel/contact_region.hpp"
 #include "solver/stable_time_step.hpp"
 
 namespace tribex::solver {
@@ -122,9 +124,10 @@ class CentralDifference {
   double silent_power_right_ = 0.0, damping_power_right_ = 0.0, viscous_power_right_ = 0.0;
   // Contact: current positions of surface nodes, contact forces, totals, lagged contact power.
   // x_, v_contact_, f_other_contact_ (the summed non-contact forces) and f_contact_ are in the
-  // contact's numbering ([surface node][3], Model::contact_global_node), filled by the surface gather;
-  // xl_ holds X + u of this rank's surface nodes in local numbering.
-  std::vector<double> x_, f_contact_, v_contact_, f_other_contact_, xl_;
+  // contact's numbering ([surface node][3], Model::contact_global_node): this rank's rows, and in a
+  // distributed run its region's ghost rows (contact_region_; other rows keep stale values).
+  std::vector<double> x_, f_contact_, v_contact_, f_other_contact_;
+  std::unique_ptr<parallel::ContactRegion> contact_region_;
   contact::ContactTotals contact_totals_;
   double momentum_[3] = {0, 0, 0};
   double contact_seconds_ = 0.0;

@@ -54,6 +54,7 @@ void CentralDifference::save_state(StateArchive& a) const {
     a.put("contact_status", s.status);
     a.put_integer("contact_total_searches", s.total_searches);
     a.put_integer("contact_passes", static_cast<long long>(s.passes.size()));
+    if (contact_region_) a.put_ints("contact_region", contact_region_->lists());
     for (std::size_t k = 0; k < s.passes.size(); ++k) {
       const std::string p = "contact_pass_" + std::to_string(k) + "_";
       a.put_ints(p + "candidate_offset", s.passes[k].candidate_offset);
@@ -134,9 +135,18 @@ void CentralDifference::restore_state(const StateArchive& a) {
       s.passes[k].searched = a.integer(q + "searched") != 0;
       s.passes[k].stable_dt = a.array(q + "stable_dt").at(0);
       if (a.has(q + "law_state")) s.passes[k].law_state = a.array(q + "law_state");
+      // A distributed run's candidates belong to its region: without the region's lists (a file of
+      // the replicated contact) every pass searches a new region at the first step.
+      if (contact_region_ && !a.has("contact_region")) s.passes[k].searched = false;
     }
     try {
       model_.contact->restore(s);
+      if (contact_region_ && a.has("contact_region")) {
+        std::vector<int> lists;
+        a.get_ints("contact_region", lists);
+        contact_region_->restore_lists(lists);
+        model_.contact->set_present(contact_region_->present());
+      }
     } catch (const std::invalid_argument& e) {
       throw SetupError(std::string("the restart file does not fit the deck's contact definition: ") + e.what());
     }

@@ -108,11 +108,9 @@ void Domain::sum_shared(double* f, int width) {
 }
 
 void Domain::set_surface(const std::vector<int>& surface_nodes) {
-  surface_nodes_ = surface_nodes;
   const std::size_t ns = surface_nodes.size();
   surface_local_.assign(ns, -1);
   surface_owned_.assign(ns, 0.0);
-  surface_send_index_.clear();
   // local index of a global node: global_node is ascending
   for (std::size_t k = 0; k < ns; ++k) {
     auto it = std::lower_bound(global_node.begin(), global_node.end(), surface_nodes[k]);
@@ -120,70 +118,16 @@ void Domain::set_surface(const std::vector<int>& surface_nodes) {
       const int l = static_cast<int>(it - global_node.begin());
       surface_local_[k] = l;
       surface_owned_[k] = owned[l];
-      if (owned[l] > 0.0) surface_send_index_.push_back(l);
     }
   }
-  // The gathered buffer holds each rank's owned surface nodes in turn, ascending k within a rank.
-  std::vector<int> mine;
-  for (std::size_t k = 0; k < ns; ++k)
-    if (surface_owned_[k] > 0.0) mine.push_back(static_cast<int>(k));
-  surface_counts_.assign(static_cast<std::size_t>(ranks), 0);
-  surface_displs_.assign(static_cast<std::size_t>(ranks), 0);
-  surface_order_ = mine;
-  if (!serial()) {
-    std::vector<int> count(static_cast<std::size_t>(ranks)), at(static_cast<std::size_t>(ranks), 0);
-    int n_mine = static_cast<int>(mine.size());
-    MPI_Allgather(&n_mine, 1, MPI_INT, count.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    for (int r = 1; r < ranks; ++r) at[r] = at[r - 1] + count[r - 1];
-    surface_order_.assign(static_cast<std::size_t>(at.back() + count.back()), 0);
-    MPI_Allgatherv(mine.data(), n_mine, MPI_INT, surface_order_.data(), count.data(), at.data(), MPI_INT, MPI_COMM_WORLD);
-    for (int r = 0; r < ranks; ++r) {
-      surface_counts_[r] = kSurfaceValues * count[r];
-      surface_displs_[r] = kSurfaceValues * at[r];
-    }
-  }
-  if (surface_order_.size() != ns) throw std::logic_error("surface ownership disagrees between ranks");
-  surface_send_.assign(kSurfaceValues * surface_send_index_.size(), 0.0);
-  surface_recv_.assign(kSurfaceValues * ns, 0.0);
 }
 
-void Domain::gather_surface(const double* x, const double* v, const double* f, double* xg, double* vg, double* fg) {
-  if (serial()) {
-    for (std::size_t k = 0; k < surface_nodes_.size(); ++k) {
-      const int node = surface_nodes_[k];
-      for (int i = 0; i < 3; ++i) {
-        xg[3 * k + i] = x[3 * node + i];
-        vg[3 * k + i] = v[3 * node + i];
-        fg[3 * k + i] = f[3 * node + i];
-      }
-    }
-    return;
-  }
-  const double start = now();
-  constexpr int K = kSurfaceValues;
-  for (std::size_t j = 0; j < surface_send_index_.size(); ++j) {
-    const int l = surface_send_index_[j];
-    for (int i = 0; i < 3; ++i) {
-      surface_send_[K * j + i] = x[3 * l + i];
-      surface_send_[K * j + 3 + i] = v[3 * l + i];
-      surface_send_[K * j + 6 + i] = f[3 * l + i];
-    }
-  }
-  MPI_Allgatherv(surface_send_.data(), static_cast<int>(surface_send_.size()), MPI_DOUBLE, surface_recv_.data(),
-                 surface_counts_.data(), surface_displs_.data(), MPI_DOUBLE, MPI_COMM_WORLD);
-  ++traffic.surface_gathers;
-  const long long mine = static_cast<long long>(sizeof(double) * surface_send_.size());
-  traffic.surface_sent += mine * (ranks - 1);
-  traffic.surface_received += static_cast<long long>(sizeof(double) * surface_recv_.size()) - mine;
-  for (std::size_t j = 0; j < surface_order_.size(); ++j) {
-    const std::size_t k = static_cast<std::size_t>(surface_order_[j]);
-    for (int i = 0; i < 3; ++i) {
-      xg[3 * k + i] = surface_recv_[K * j + i];
-      vg[3 * k + i] = surface_recv_[K * j + 3 + i];
-      fg[3 * k + i] = surface_recv_[K * j + 6 + i];
-    }
-  }
-  communication_seconds += now() - start;
+bool Domain::shares_with(int local_node, int other_rank) const {
+  const auto q = std::lower_bound(neighbours_.begin(), neighbours_.end(), other_rank);
+  if (q == neighbours_.end() || *q != other_rank) return false;
+  const std::size_t k = static_cast<std::size_t>(q - neighbours_.begin());
+  const auto first = neighbour_nodes_.begin() + neighbour_offset_[k], last = neighbour_nodes_.begin() + neighbour_offset_[k + 1];
+  return std::binary_search(first, last, local_node);
 }
 
 }  // namespace tribex::solver::parallel

@@ -6,10 +6,7 @@
 //   - sum_shared: partial nodal forces of shared nodes summed with the neighbour ranks
 //     (MPI_Isend/Irecv into buffers sized once), added in ascending rank order on every rank so
 //     that all copies of a shared node hold bit-identical sums;
-//   - gather_surface: positions, velocities and summed non-contact forces of the contact-surface
-//     nodes to every rank (the junction shear predicts the slip from the forces)
-//     (MPI_Allgatherv over the surface nodes only), so that each rank runs the whole contact
-//     search and enforcement on the contact's numbering (arrays sized by the surface nodes);
+//   - the contact's ghost nodes: ContactRegion (contact_region.hpp) on the surface maps set here;
 // results.h5 is written collectively (each rank its owned nodes and its elements, parallel HDF5).
 // On one rank every map is the identity and no message is sent.
 #pragma once
@@ -31,17 +28,15 @@ class Domain {
   std::vector<double> owned;        // [local node] 1 owned here, 0 owned by a lower rank
 
   bool serial() const { return ranks == 1; }
-  /// Wall time spent in sum_shared and gather_surface (messages and waiting), s; 0 on one rank.
+  /// Wall time spent in sum_shared and the contact region's exchanges (messages and waiting), s; 0 on one rank.
   double communication_seconds = 0.0;
-  /// Payload bytes this rank moved in sum_shared and gather_surface since set-up (summary.json
-  /// rank_counts). Halo: the doubles of each MPI_Isend / MPI_Irecv. Surface gather (MPI_Allgatherv):
-  /// sent = this rank's block x (ranks - 1), the copies the other ranks receive of it; received =
-  /// the other ranks' blocks. Payload, not wire bytes: Open MPI's allgather algorithm may forward
-  /// blocks through intermediate ranks. Plain increments: nothing allocated in the loop.
+  /// Payload bytes this rank moved in sum_shared and the contact region's ghost exchange since set-up
+  /// (summary.json rank_counts): the doubles of each MPI_Isend / MPI_Irecv (the region's refreshes,
+  /// at searches, are not counted). Plain increments: nothing allocated in the loop.
   struct Traffic {
     long long halo_sent = 0, halo_received = 0;        // bytes
-    long long surface_sent = 0, surface_received = 0;  // bytes
-    long long halo_exchanges = 0, surface_gathers = 0;  // calls that sent messages (one per force evaluation)
+    long long surface_sent = 0, surface_received = 0;  // bytes of contact ghost rows
+    long long halo_exchanges = 0, surface_gathers = 0;  // calls (one per force evaluation; surface: the contact ghost exchanges)
   };
   Traffic traffic;
   /// Nodes held by more than one rank (each holder counts them).
@@ -65,10 +60,8 @@ class Domain {
   const std::vector<int>& surface_local() const { return surface_local_; }
   /// [k] 1 when this rank owns surface node k.
   const std::vector<double>& surface_owned() const { return surface_owned_; }
-  /// Writes x, v and f of every surface node k into [k][3] of the contact's arrays (xg, vg, fg).
-  void gather_surface(const double* x_local, const double* v_local, const double* f_local, double* x_global,
-                      double* v_global, double* f_global);
-  static constexpr int kSurfaceValues = 9;  // x, v, f per surface node
+  /// Whether `other_rank` holds this rank's local node `local_node` too (a neighbour sharing it).
+  bool shares_with(int local_node, int other_rank) const;
 
  private:
   int owned_nodes_ = 0;
@@ -80,13 +73,9 @@ class Domain {
   std::vector<int> shared_nodes_;      // local nodes held by more than one rank, ascending
   std::vector<double> send_, recv_, sum_;
   std::vector<MPI_Request> requests_;
-  // contact surface gather
-  std::vector<int> surface_nodes_, surface_local_;
+  // contact surface maps
+  std::vector<int> surface_local_;
   std::vector<double> surface_owned_;
-  std::vector<int> surface_send_index_;                  // local nodes of the owned surface nodes
-  std::vector<int> surface_order_;                       // [position in the gathered buffer] surface index k
-  std::vector<int> surface_counts_, surface_displs_;     // in doubles (6 per node)
-  std::vector<double> surface_send_, surface_recv_;
   std::vector<int> owned_local_nodes_;  // ascending
 };
 

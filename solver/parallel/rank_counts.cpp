@@ -36,8 +36,8 @@ RankCounts count_rank(const Model& model, const inputs::ContactSpec* spec, long 
   c.contact_bytes_sent = d.traffic.surface_sent;
   c.contact_bytes_received = d.traffic.surface_received;
   if (model.contact) {
-    // Replicated contact: the manager holds every face of every surface on every rank.
-    for (const auto& s : model.contact->surfaces()) c.contact_faces += s.face_count();
+    // The faces of this rank's contact region (every face on one rank).
+    c.contact_faces = model.contact->present_face_count();
     long long own = 0;
     if (spec)
       for (const auto& s : spec->surfaces)

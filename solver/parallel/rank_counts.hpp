@@ -27,7 +27,7 @@ struct RankCounts {
   long long nodes = 0;         // nodes held (owned + held by a lower rank too)
   long long owned_nodes = 0;   // nodes this rank owns (shared ones: the lowest holder)
   long long shared_nodes = 0;  // held nodes that other ranks hold too
-  long long contact_faces = 0; // contact-surface faces the contact search on this rank sees
+  long long contact_faces = 0; // contact-surface faces of this rank's contact region (all four nodes held or ghost)
   long long ghost_faces = 0;   // ... of which the element belongs to another rank
   long long halo_exchanges = 0, halo_bytes_sent = 0, halo_bytes_received = 0;
   long long surface_gathers = 0, contact_bytes_sent = 0, contact_bytes_received = 0;
@@ -42,7 +42,7 @@ long long peak_rss_bytes();
 
 /// This rank's counts from its model at the close. `spec` the deck's contact definition (nullptr:
 /// none): a surface face is owned here when its side-set entry is in this rank's part (its element is
-/// this rank's); every other face the replicated contact holds is a ghost face.
+/// this rank's); every other face of its contact region is a ghost face.
 RankCounts count_rank(const Model& model, const inputs::ContactSpec* spec, long long peak_rss_setup);
 
 /// Every rank's counts on rank 0, in rank order (other ranks: empty). Collective; one rank: {mine}.

@@ -113,6 +113,16 @@ def agree(a):
             print(f"results.h5: {len(names)} datasets, largest relative difference {fworst:.3e}")
             if fworst > a.rtol:
                 sys.exit("FAIL: results.h5 differs beyond the tolerance")
+    if a.strict_region:
+        import json
+        with open(os.path.join(serial, "summary.json")) as f:
+            whole = json.load(f)["rank_counts"][0]["contact_faces"]
+        with open(os.path.join(parallel, "summary.json")) as f:
+            faces = [r["contact_faces"] for r in json.load(f)["rank_counts"]]
+        print(f"contact region faces per rank {faces} of {whole}")
+        if min(faces) >= whole:
+            sys.exit("FAIL: every rank's contact region holds the whole surfaces; the test does not exercise the "
+                     "distributed contact")
     print("PASS")
 
 
@@ -258,6 +268,9 @@ def main():
     ap.add_argument("--expect", default="")
     ap.add_argument("--serial-restart-at", type=int, default=-1)
     ap.add_argument("--termination", default="")
+    ap.add_argument("--strict-region", action="store_true",
+                    help="agree: also require that some rank's contact region holds fewer faces than the whole "
+                         "surfaces (summary.json rank_counts contact_faces), so the distributed contact is exercised")
     a = ap.parse_args()
     {"agree": agree, "restart": restart, "sigterm": sigterm, "failure": failure}[a.mode](a)
 

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// ContactManager in a distributed run (contact/README.md "Distributed contact"): which nodes this
+// rank counts and holds, how far its region must reach, the per-node state a node brings into a
+// region, and the totals combined over the ranks.
+#include <algorithm>
+#include <cmath>
+
+#include "contact/contact_manager.hpp"
+#include "contact/mortar/mortar_enforcement.hpp"
+
+namespace tribex::contact {
+
+void ContactManager::distribute(std::vector<char> counted, ContactReductions* reductions, const double* X) {
+  counted_ = std::move(counted);
+  reductions_ = reductions;
+  largest_face_diameter_ = 0.0;
+  for (const auto& s : surfaces_) largest_face_diameter_ = std::max(largest_face_diameter_, max_face_diameter(s, X));
+  for (auto& p : passes_) p.searched = false;
+}
+
+void ContactManager::set_present(const std::vector<char>& present) { present_.assign(present.begin(), present.end()); }
+
+long long ContactManager::present_face_count() const {
+  long long count = 0;
+  for (const auto& s : surfaces_)
+    for (int f = 0; f < s.face_count(); ++f) {
+      const int* fn = &s.face_nodes[4 * f];
+      count += present_.empty() || (present_[fn[0]] && present_[fn[1]] && present_[fn[2]] && present_[fn[3]]);
+    }
+  return count;
+}
+
+// One hop: a slave node's force reaches the nodes of the master face it projects on (within the
+// capture, plus the face's extent, faces deforming up to half their size between searches), and the
+// same back. A node's contact force is complete when every slave node within one hop is projected
+// correctly, which needs the master faces within one more hop: two hops. A pass with tangential
+// pairs reads the normal forces and master shares of its master nodes (both one hop further) and
+// a later pass reads the forces of the earlier ones: two hops more per such pass. Between searches
+// every node moves at most research_fraction x margin, and two nodes close by twice that, per hop.
+double ContactManager::region_reach() const {
+  double hop = 0.0;
+  int hops = 2;
+  for (const auto& p : passes_) {
+    const double capture = p.mortar ? p.margin + 1.25 * largest_face_diameter_ : p.margin;
+    hop = std::max(hop, capture + 1.5 * largest_face_diameter_ + 2.0 * p.research_fraction * p.margin);
+    if (has_tangential_pairs(p.law)) hops += 2;
+  }
+  return hops * hop;
+}
+
+int ContactManager::node_state_width() const {
+  int width = 0;
+  for (const auto& p : passes_) width += law_state_size(p.law);
+  return width;
+}
+
+// Per pass with state: the node's rows of law_state where it is a slave node (zeros elsewhere).
+void ContactManager::get_node_state(int node, double* out) const {
+  for (const auto& p : passes_) {
+    const int size = law_state_size(p.law);
+    if (size == 0) continue;
+    const auto& nodes = surfaces_[p.slave].nodes;
+    const auto it = std::lower_bound(nodes.begin(), nodes.end(), node);
+    const bool slave = it != nodes.end() && *it == node;
+    for (int i = 0; i < size; ++i)
+      out[i] = slave ? p.law_state[static_cast<std::size_t>(it - nodes.begin()) * size + i] : 0.0;
+    out += size;
+  }
+}
+
+void ContactManager::set_node_state(int node, const double* in) {
+  for (auto& p : passes_) {
+    const int size = law_state_size(p.law);
+    if (size == 0) continue;
+    const auto& nodes = surfaces_[p.slave].nodes;
+    const auto it = std::lower_bound(nodes.begin(), nodes.end(), node);
+    if (it != nodes.end() && *it == node)
+      for (int i = 0; i < size; ++i) p.law_state[static_cast<std::size_t>(it - nodes.begin()) * size + i] = in[i];
+    in += size;
+  }
+}
+
+// The sums, maxima and minima of this step over the ranks: each rank summed only the nodes it counts.
+void ContactManager::reduce_totals(ContactTotals& t, double friction[3]) {
+  if (!reductions_) return;
+  double sums[] = {t.normal_force, t.compressive_force, t.adhesive_force, t.adhesion_energy, t.junction_capacity,
+                   t.friction_power, t.area, double(t.nodes), t.real_area, t.asperity_contacts, t.nominal_area,
+                   friction[0], friction[1], friction[2]};
+  reductions_->sum(sums, static_cast<int>(std::size(sums)));
+  double* s = sums;
+  for (double* field : {&t.normal_force, &t.compressive_force, &t.adhesive_force, &t.adhesion_energy,
+                        &t.junction_capacity, &t.friction_power, &t.area})
+    *field = *s++;
+  t.nodes = static_cast<int>(std::lround(*s++));
+  for (double* field : {&t.real_area, &t.asperity_contacts, &t.nominal_area, &friction[0], &friction[1], &friction[2]})
+    *field = *s++;
+  // Maxima: penetration, radius, and the passes' stable steps as their negatives.
+  plan_.resize(2 + passes_.size());  // capacity from construction's passes + 2 (reserve below)
+  plan_[0] = t.max_penetration;
+  plan_[1] = t.radius_max;
+  for (std::size_t i = 0; i < passes_.size(); ++i) plan_[2 + i] = -passes_[i].stable_dt;
+  reductions_->max(plan_.data(), static_cast<int>(plan_.size()));
+  t.max_penetration = plan_[0];
+  t.radius_max = plan_[1];
+  for (std::size_t i = 0; i < passes_.size(); ++i) passes_[i].stable_dt = -plan_[2 + i];
+  plan_.resize(passes_.size());
+  // Located maxima: the penetration ratio and each pass's fastest slave and master speeds.
+  located_value_[0] = t.max_penetration_ratio;
+  located_node_[0] = t.penetration_node;
+  for (std::size_t i = 0; i < passes_.size(); ++i)
+    for (int side = 0; side < 2; ++side) {
+      located_value_[1 + 2 * i + side] = passes_[i].fastest[side];
+      located_node_[1 + 2 * i + side] = passes_[i].fastest_node[side];
+    }
+  reductions_->max_at(located_value_.data(), located_node_.data(), static_cast<int>(located_value_.size()));
+  t.max_penetration_ratio = located_value_[0];
+  t.penetration_node = located_node_[0];
+  for (std::size_t i = 0; i < passes_.size(); ++i)
+    for (int side = 0; side < 2; ++side) {
+      passes_[i].fastest[side] = located_value_[1 + 2 * i + side];
+      passes_[i].fastest_node[side] = located_node_[1 + 2 * i + side];
+    }
+}
+
+}  // namespace tribex::contact
