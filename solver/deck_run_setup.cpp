@@ -67,15 +67,15 @@ void DeckRun::build_parts() {
   if (root_) {
     try {
       whole.emplace(build_mesh(deck_));
+      if (region_.contact) contact = contact_faces(*whole, *region_.contact);
       try {
-        part = parallel::partition_elements(*whole, ranks_);
+        part = parallel::partition_elements(*whole, ranks_, contact_surface_elements(*whole, region_.contact ? &*region_.contact : nullptr));
       } catch (const std::runtime_error& e) {
         throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
                          "; run with fewer ranks (mpirun -np N)");
       }
       holders = parallel::node_holders(*whole, part);
       mesh_hash_ = mesh_sha256(*whole);
-      if (region_.contact) contact = contact_faces(*whole, *region_.contact);
       report_partition(*whole, part, holders);
     } catch (...) {
       error = std::current_exception();
@@ -100,9 +100,10 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
   for (int p : part) ++rank_elements[p];
   const auto [fewest, most] = std::minmax_element(rank_elements.begin(), rank_elements.end());
-  log_.say(format("parallel: %d ranks, METIS k-way partition of the element graph; %d-%d elements per rank; %d nodes "
+  log_.say(format("parallel: %d ranks, METIS k-way partition of the element graph%s; %d-%d elements per rank; %d nodes "
                   "on partition boundaries; every rank builds only its part",
-                  ranks_, *fewest, *most, shared));
+                  ranks_, region_.contact ? " sharing out the elements under each contact surface" : "", *fewest, *most,
+                  shared));
 }
 
 void DeckRun::report_mesh(const Model& model) {

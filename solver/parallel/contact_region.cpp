@@ -15,15 +15,31 @@ constexpr int kRowValues = 9;  // x, v, f of a ghost row
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
 
-ContactRegion::ContactRegion(Domain& domain, double reach)
-    : domain_(domain), reach_(reach), boxes_(6 * static_cast<std::size_t>(domain.ranks)) {
-  send_offset_.assign(static_cast<std::size_t>(domain.ranks) + 1, 0);
-  recv_offset_.assign(static_cast<std::size_t>(domain.ranks) + 1, 0);
-  present_.assign(domain.surface_local().size(), 0);
+ContactRegion::ContactRegion(Domain& domain, double reach) : domain_(domain), reach_(reach) {
+  const auto& local = domain.surface_local();
+  const bool holds_surface = std::any_of(local.begin(), local.end(), [](int l) { return l >= 0; });
+  MPI_Comm_split(MPI_COMM_WORLD, holds_surface ? 0 : MPI_UNDEFINED, domain.rank, &comm_);
+  if (comm_ != MPI_COMM_NULL) {
+    MPI_Comm_size(comm_, &members_);
+    MPI_Comm_rank(comm_, &me_);
+    world_rank_.assign(static_cast<std::size_t>(members_), 0);
+    MPI_Allgather(&domain.rank, 1, MPI_INT, world_rank_.data(), 1, MPI_INT, comm_);
+  }
+  boxes_.assign(6 * static_cast<std::size_t>(members_), 0.0);
+  send_offset_.assign(static_cast<std::size_t>(members_) + 1, 0);
+  recv_offset_.assign(static_cast<std::size_t>(members_) + 1, 0);
+  present_.assign(local.size(), 0);
   located_.reserve(64);
 }
 
+ContactRegion::~ContactRegion() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (comm_ != MPI_COMM_NULL && !finalized) MPI_Comm_free(&comm_);
+}
+
 void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) {
+  if (comm_ == MPI_COMM_NULL) return;  // no surface node here: an empty region
   const double start = now();
   const auto& local = domain_.surface_local();
   const auto& owned = domain_.surface_owned();
@@ -34,22 +50,22 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
         box[i] = std::min(box[i], xg[3 * k + i]);
         box[3 + i] = std::max(box[3 + i], xg[3 * k + i]);
       }
-  MPI_Allgather(box, 6, MPI_DOUBLE, boxes_.data(), 6, MPI_DOUBLE, MPI_COMM_WORLD);
-  // Send lists: rank by rank, ascending surface node.
+  MPI_Allgather(box, 6, MPI_DOUBLE, boxes_.data(), 6, MPI_DOUBLE, comm_);
+  // Send lists: member by member, ascending surface node.
   send_node_.clear();
-  for (int q = 0; q < domain_.ranks; ++q) {
+  for (int q = 0; q < members_; ++q) {
     send_offset_[q] = static_cast<int>(send_node_.size());
     const double* b = &boxes_[6 * static_cast<std::size_t>(q)];
-    if (q == domain_.rank || b[0] > b[3]) continue;  // itself, or a rank without surface nodes
+    if (q == me_) continue;
     for (std::size_t k = 0; k < local.size(); ++k) {
-      if (!(owned[k] > 0.0) || domain_.shares_with(local[k], q)) continue;
+      if (!(owned[k] > 0.0) || domain_.shares_with(local[k], world_rank_[q])) continue;
       const double* p = xg + 3 * k;
       bool inside = true;
       for (int i = 0; i < 3; ++i) inside = inside && p[i] >= b[i] - reach_ && p[i] <= b[3 + i] + reach_;
       if (inside) send_node_.push_back(static_cast<int>(k));
     }
   }
-  send_offset_[domain_.ranks] = static_cast<int>(send_node_.size());
+  send_offset_[members_] = static_cast<int>(send_node_.size());
   exchange_node_numbers();
   size_buffers();
   // The laws' state of the nodes entering the other ranks' regions: the owner's.
@@ -66,15 +82,15 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
 }
 
 void ContactRegion::exchange_node_numbers() {
-  const int n = domain_.ranks;
+  const int n = members_;
   std::vector<int> send_count(static_cast<std::size_t>(n)), recv_count(static_cast<std::size_t>(n));
   for (int q = 0; q < n; ++q) send_count[q] = send_offset_[q + 1] - send_offset_[q];
-  MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1, MPI_INT, comm_);
   recv_offset_[0] = 0;
   for (int q = 0; q < n; ++q) recv_offset_[q + 1] = recv_offset_[q] + recv_count[q];
   recv_node_.assign(static_cast<std::size_t>(recv_offset_[n]), 0);
   MPI_Alltoallv(send_node_.data(), send_count.data(), send_offset_.data(), MPI_INT, recv_node_.data(),
-                recv_count.data(), recv_offset_.data(), MPI_INT, MPI_COMM_WORLD);
+                recv_count.data(), recv_offset_.data(), MPI_INT, comm_);
 }
 
 void ContactRegion::size_buffers() {
@@ -83,29 +99,30 @@ void ContactRegion::size_buffers() {
   for (int k : recv_node_) present_[static_cast<std::size_t>(k)] = 1;
   send_.assign(kRowValues * send_node_.size(), 0.0);
   recv_.assign(kRowValues * recv_node_.size(), 0.0);
-  requests_.reserve(2 * static_cast<std::size_t>(domain_.ranks));
+  requests_.reserve(2 * static_cast<std::size_t>(members_));
 }
 
 void ContactRegion::exchange(int width) {
   requests_.clear();
-  for (int q = 0; q < domain_.ranks; ++q) {
+  for (int q = 0; q < members_; ++q) {
     const int count = recv_offset_[q + 1] - recv_offset_[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Irecv(&recv_[static_cast<std::size_t>(width) * recv_offset_[q]], width * count, MPI_DOUBLE, q, 7, MPI_COMM_WORLD,
+    MPI_Irecv(&recv_[static_cast<std::size_t>(width) * recv_offset_[q]], width * count, MPI_DOUBLE, q, 7, comm_,
               &requests_.back());
   }
-  for (int q = 0; q < domain_.ranks; ++q) {
+  for (int q = 0; q < members_; ++q) {
     const int count = send_offset_[q + 1] - send_offset_[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Isend(&send_[static_cast<std::size_t>(width) * send_offset_[q]], width * count, MPI_DOUBLE, q, 7, MPI_COMM_WORLD,
+    MPI_Isend(&send_[static_cast<std::size_t>(width) * send_offset_[q]], width * count, MPI_DOUBLE, q, 7, comm_,
               &requests_.back());
   }
   MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
 }
 
 void ContactRegion::fill_ghosts(double* xg, double* vg, double* fg) {
+  if (comm_ == MPI_COMM_NULL) return;
   const double start = now();
   constexpr int K = kRowValues;
   for (std::size_t j = 0; j < send_node_.size(); ++j) {
@@ -138,7 +155,8 @@ std::vector<int> ContactRegion::lists() const {
 }
 
 void ContactRegion::restore_lists(const std::vector<int>& lists) {
-  const std::size_t n = static_cast<std::size_t>(domain_.ranks) + 1;
+  if (comm_ == MPI_COMM_NULL) return;
+  const std::size_t n = static_cast<std::size_t>(members_) + 1;
   if (lists.size() < n || lists.size() != n + static_cast<std::size_t>(lists[n - 1]))
     throw std::invalid_argument("the contact region lists do not fit this run's ranks");
   send_offset_.assign(lists.begin(), lists.begin() + static_cast<std::ptrdiff_t>(n));

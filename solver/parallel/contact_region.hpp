@@ -4,16 +4,16 @@
 // ContactManager::region_reach of them, and keeps the contact forces of the nodes it holds. The
 // region is a band, not the whole surface: the contact work and the bytes per rank fall with the
 // rank count once the contact zone spans several ranks.
-//   - refresh (at a step where any pass searches): the ranks exchange the boxes of the surface nodes
-//     they hold (MPI_Allgather, six doubles a rank); each rank sends every other rank its owned
-//     surface nodes inside that rank's box grown by the reach and not already held there
-//     (MPI_Alltoall of the counts, MPI_Alltoallv of the node numbers), and the laws' per-node state
-//     of those nodes (the owner's is the reference);
+//   - refresh (at a step where any pass searches), within a sub-communicator of the ranks that hold
+//     surface nodes: the ranks exchange the boxes of the surface nodes they hold (MPI_Allgather, six
+//     doubles a rank); each rank sends every other rank its owned surface nodes inside that rank's
+//     box grown by the reach and not already held there (MPI_Alltoall of the counts, MPI_Alltoallv
+//     of the node numbers), and the laws' per-node state of those nodes (the owner's is the reference);
 //   - fill_ghosts (every force evaluation): positions, velocities and non-contact forces of the
 //     ghost nodes from their owners, point to point into buffers sized at the refresh;
 //   - the ContactReductions the manager combines its totals with (MPI_Allreduce).
-// Every rank takes part, also one without surface nodes (its box is empty): the totals are wanted on
-// rank 0, which writes the history.
+// The reductions take every rank (MPI_COMM_WORLD): the totals are wanted on rank 0, which writes the
+// history, and by every rank's run guards.
 #pragma once
 
 #include <mpi.h>
@@ -31,6 +31,9 @@ class ContactRegion final : public contact::ContactReductions {
  public:
   /// After Domain::set_surface; `reach` (m) from ContactManager::region_reach.
   ContactRegion(Domain& domain, double reach);
+  ~ContactRegion() override;
+  ContactRegion(const ContactRegion&) = delete;
+  ContactRegion& operator=(const ContactRegion&) = delete;
 
   /// The region of the positions `xg` [surface node][3] (this rank's rows current): ghost lists,
   /// present(), and the laws' state of the nodes sent, from `manager` to the other ranks' managers.
@@ -57,9 +60,14 @@ class ContactRegion final : public contact::ContactReductions {
 
   Domain& domain_;
   double reach_;
-  std::vector<double> boxes_;            // [rank][6] min xyz, max xyz of the held surface nodes
-  std::vector<int> send_offset_, send_node_;  // [rank + 1], surface nodes this rank sends each rank
-  std::vector<int> recv_offset_, recv_node_;  // [rank + 1], ghost nodes from each rank
+  // The ranks holding surface nodes (MPI_COMM_NULL on the others, which have no region); "member" below
+  // is a rank of this communicator.
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int members_ = 0, me_ = -1;
+  std::vector<int> world_rank_;          // [member] its rank in MPI_COMM_WORLD
+  std::vector<double> boxes_;            // [member][6] min xyz, max xyz of the held surface nodes
+  std::vector<int> send_offset_, send_node_;  // [member + 1], surface nodes this rank sends each member
+  std::vector<int> recv_offset_, recv_node_;  // [member + 1], ghost nodes from each member
   std::vector<char> present_;
   std::vector<double> send_, recv_;
   std::vector<MPI_Request> requests_;

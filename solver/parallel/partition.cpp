@@ -8,7 +8,7 @@
 
 namespace tribex::solver::parallel {
 
-std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts) {
+std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std::vector<std::vector<char>>& balanced) {
   const int ne = mesh.element_count();
   std::vector<int> part(static_cast<std::size_t>(ne), 0);
   if (parts <= 1 || ne == 0) return part;
@@ -31,13 +31,30 @@ std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts) {
     throw std::runtime_error("METIS_MeshToDual failed");
   eptr = {};
   copy = {};
-  idx_t n_constraints = 1, n_parts = parts, cut = 0;
+  // Vertex weights: 1 per element for the work, and per balanced set 1 on its elements (multi-constraint
+  // k-way: every part gets about 1/parts of each).
+  std::vector<const std::vector<char>*> sets;
+  for (const auto& set : balanced) {
+    long marked = 0;
+    for (char c : set) marked += c != 0;
+    if (set.size() == static_cast<std::size_t>(ne) && marked >= parts) sets.push_back(&set);
+  }
+  idx_t n_constraints = 1 + static_cast<idx_t>(sets.size()), n_parts = parts, cut = 0;
+  std::vector<idx_t> weights;
+  if (!sets.empty()) {
+    weights.assign(static_cast<std::size_t>(ne) * n_constraints, 0);
+    for (int e = 0; e < ne; ++e) {
+      weights[static_cast<std::size_t>(e) * n_constraints] = 1;
+      for (std::size_t c = 0; c < sets.size(); ++c)
+        weights[static_cast<std::size_t>(e) * n_constraints + 1 + c] = (*sets[c])[e] != 0;
+    }
+  }
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = 1;         // the same partition on every rank and every run
   std::vector<idx_t> result(static_cast<std::size_t>(ne));
-  const int status = METIS_PartGraphKway(&n_elements, &n_constraints, xadj, adjncy, nullptr, nullptr, nullptr, &n_parts,
-                                         nullptr, nullptr, options, &cut, result.data());
+  const int status = METIS_PartGraphKway(&n_elements, &n_constraints, xadj, adjncy, weights.empty() ? nullptr : weights.data(),
+                                         nullptr, nullptr, &n_parts, nullptr, nullptr, options, &cut, result.data());
   METIS_Free(xadj);
   METIS_Free(adjncy);
   if (status != METIS_OK) throw std::runtime_error("METIS_PartGraphKway failed (status " + std::to_string(status) + ")");

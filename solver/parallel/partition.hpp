@@ -12,7 +12,10 @@
 namespace tribex::solver::parallel {
 
 /// [element] the part (rank) that owns it, in [0, parts). One part: all zeros (METIS not called).
-/// Throws std::runtime_error when METIS fails.
-std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts);
+/// `balanced` [set][element] nonzero marks elements each part should hold an equal share of, besides
+/// an equal share of all elements (one more METIS constraint per set): the elements under each
+/// contact surface, so that a small contact zone is shared by several ranks (issue 25). A set
+/// with fewer elements than parts is left out. Throws std::runtime_error when METIS fails.
+std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std::vector<std::vector<char>>& balanced = {});
 
 }  // namespace tribex::solver::parallel
