@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "solver/parallel/domain.hpp"
@@ -38,31 +39,101 @@ ContactRegion::~ContactRegion() {
   if (comm_ != MPI_COMM_NULL && !finalized) MPI_Comm_free(&comm_);
 }
 
+// A grid over the members' surface nodes with cells no smaller than half the reach, so that every
+// node within the reach of a node lies within two cells of that node's cell (the 5 x 5 x 5 block);
+// at most kMaxCells cells per axis (coarser cells only widen the region).
+namespace {
+constexpr int kMaxCells = 64;
+constexpr int kReachCells = 2;  // the reach in cells
+struct Grid {
+  double lo[3] = {0, 0, 0};
+  double cell = 1.0;
+  int n[3] = {1, 1, 1};
+  int index(const double* p, int dx = 0, int dy = 0, int dz = 0) const {
+    const int d[3] = {dx, dy, dz};
+    int c[3];
+    for (int i = 0; i < 3; ++i) {
+      c[i] = static_cast<int>(std::floor((p[i] - lo[i]) / cell)) + d[i];
+      if (c[i] < 0 || c[i] >= n[i]) return -1;
+    }
+    return (c[2] * n[1] + c[1]) * n[0] + c[0];
+  }
+};
+}  // namespace
+
 void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) {
   if (comm_ == MPI_COMM_NULL) return;  // no surface node here: an empty region
   const double start = now();
   const auto& local = domain_.surface_local();
   const auto& owned = domain_.surface_owned();
-  double box[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+  // The members' box (minima of the lower corner and of the negated upper one), then the grid.
+  double box[6] = {INFINITY, INFINITY, INFINITY, INFINITY, INFINITY, INFINITY};
   for (std::size_t k = 0; k < local.size(); ++k)
     if (local[k] >= 0)
       for (int i = 0; i < 3; ++i) {
         box[i] = std::min(box[i], xg[3 * k + i]);
-        box[3 + i] = std::max(box[3 + i], xg[3 * k + i]);
+        box[3 + i] = std::min(box[3 + i], -xg[3 * k + i]);
       }
-  MPI_Allgather(box, 6, MPI_DOUBLE, boxes_.data(), 6, MPI_DOUBLE, comm_);
-  // Send lists: member by member, ascending surface node.
+  MPI_Allreduce(MPI_IN_PLACE, box, 6, MPI_DOUBLE, MPI_MIN, comm_);
+  Grid grid;
+  double extent = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    grid.lo[i] = box[i];
+    extent = std::max(extent, -box[3 + i] - box[i]);
+  }
+  grid.cell = std::max(reach_ / kReachCells, extent / kMaxCells);
+  if (!(grid.cell > 0.0)) grid.cell = 1.0;
+  for (int i = 0; i < 3; ++i)
+    grid.n[i] = std::clamp(static_cast<int>(std::floor((-box[3 + i] - box[i]) / grid.cell)) + 1, 1, kMaxCells + 1);
+  const int cells = grid.n[0] * grid.n[1] * grid.n[2];
+  const int words = (cells + 63) / 64;
+  // Each member's box of its surface nodes, and the cells they occupy (MPI_Allgather of a bit set).
+  double held_box[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+  for (std::size_t k = 0; k < local.size(); ++k)
+    if (local[k] >= 0)
+      for (int i = 0; i < 3; ++i) {
+        held_box[i] = std::min(held_box[i], xg[3 * k + i]);
+        held_box[3 + i] = std::max(held_box[3 + i], xg[3 * k + i]);
+      }
+  MPI_Allgather(held_box, 6, MPI_DOUBLE, boxes_.data(), 6, MPI_DOUBLE, comm_);
+  std::vector<std::uint64_t> mine(static_cast<std::size_t>(words), 0), occupied(static_cast<std::size_t>(words) * members_);
+  for (std::size_t k = 0; k < local.size(); ++k)
+    if (local[k] >= 0) {
+      const int c = grid.index(xg + 3 * k);
+      mine[static_cast<std::size_t>(c) / 64] |= std::uint64_t{1} << (c % 64);
+    }
+  MPI_Allgather(mine.data(), words, MPI_UINT64_T, occupied.data(), words, MPI_UINT64_T, comm_);
+  // The cells within the reach of each owned surface node (-1: outside the grid).
+  constexpr int side = 2 * kReachCells + 1, block = side * side * side;
+  std::vector<int> around;
+  std::vector<int> owned_nodes;
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    if (!(owned[k] > 0.0)) continue;
+    owned_nodes.push_back(static_cast<int>(k));
+    for (int dz = -kReachCells; dz <= kReachCells; ++dz)
+      for (int dy = -kReachCells; dy <= kReachCells; ++dy)
+        for (int dx = -kReachCells; dx <= kReachCells; ++dx) around.push_back(grid.index(xg + 3 * k, dx, dy, dz));
+  }
+  // Send lists: member by member, ascending surface node: the owned nodes within the reach of the
+  // member's box and near a cell it occupies (each test alone takes in every node within the reach
+  // of the member's nodes), unless it holds them itself.
   send_node_.clear();
   for (int q = 0; q < members_; ++q) {
     send_offset_[q] = static_cast<int>(send_node_.size());
-    const double* b = &boxes_[6 * static_cast<std::size_t>(q)];
     if (q == me_) continue;
-    for (std::size_t k = 0; k < local.size(); ++k) {
-      if (!(owned[k] > 0.0) || domain_.shares_with(local[k], world_rank_[q])) continue;
+    const std::uint64_t* bits = &occupied[static_cast<std::size_t>(words) * q];
+    const double* b = &boxes_[6 * static_cast<std::size_t>(q)];
+    for (std::size_t j = 0; j < owned_nodes.size(); ++j) {
+      const int k = owned_nodes[j];
       const double* p = xg + 3 * k;
-      bool inside = true;
-      for (int i = 0; i < 3; ++i) inside = inside && p[i] >= b[i] - reach_ && p[i] <= b[3 + i] + reach_;
-      if (inside) send_node_.push_back(static_cast<int>(k));
+      bool near = true;
+      for (int i = 0; i < 3; ++i) near = near && p[i] >= b[i] - reach_ && p[i] <= b[3 + i] + reach_;
+      bool occupied_near = false;
+      for (int a = 0; a < block && near && !occupied_near; ++a) {
+        const int c = around[static_cast<std::size_t>(block) * j + a];
+        occupied_near = c >= 0 && (bits[c / 64] >> (c % 64) & 1U);
+      }
+      if (occupied_near && !domain_.shares_with(local[static_cast<std::size_t>(k)], world_rank_[q])) send_node_.push_back(k);
     }
   }
   send_offset_[members_] = static_cast<int>(send_node_.size());

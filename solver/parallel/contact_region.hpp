@@ -5,10 +5,15 @@
 // region is a band, not the whole surface: the contact work and the bytes per rank fall with the
 // rank count once the contact zone spans several ranks.
 //   - refresh (at a step where any pass searches), within a sub-communicator of the ranks that hold
-//     surface nodes: the ranks exchange the boxes of the surface nodes they hold (MPI_Allgather, six
-//     doubles a rank); each rank sends every other rank its owned surface nodes inside that rank's
-//     box grown by the reach and not already held there (MPI_Alltoall of the counts, MPI_Alltoallv
-//     of the node numbers), and the laws' per-node state of those nodes (the owner's is the reference);
+//     surface nodes: a grid over their surface nodes with cells of half the reach (at most 64 a
+//     side); the ranks exchange the box of their surface nodes and which cells they occupy
+//     (MPI_Allgather of six doubles and of a bit set, as OpenRadioss's voxel occupancy), and each
+//     rank sends every other rank its owned surface nodes within the reach of that rank's box and
+//     within two cells of a cell it occupies, not already held there (MPI_Alltoall of the counts,
+//     MPI_Alltoallv of the node numbers), with the laws' per-node state of those nodes (the owner's
+//     is the reference). The cells because a rank's surface nodes often lie in two patches (a piece
+//     of each surface), whose common box would take in much of both surfaces; the box because it is
+//     the tighter test where the cells are coarse against the model (small models);
 //   - fill_ghosts (every force evaluation): positions, velocities and non-contact forces of the
 //     ghost nodes from their owners, point to point into buffers sized at the refresh;
 //   - the ContactReductions the manager combines its totals with (MPI_Allreduce).
@@ -65,7 +70,7 @@ class ContactRegion final : public contact::ContactReductions {
   MPI_Comm comm_ = MPI_COMM_NULL;
   int members_ = 0, me_ = -1;
   std::vector<int> world_rank_;          // [member] its rank in MPI_COMM_WORLD
-  std::vector<double> boxes_;            // [member][6] min xyz, max xyz of the held surface nodes
+  std::vector<double> boxes_;            // [member][6] min xyz, max xyz of its surface nodes at the refresh
   std::vector<int> send_offset_, send_node_;  // [member + 1], surface nodes this rank sends each member
   std::vector<int> recv_offset_, recv_node_;  // [member + 1], ghost nodes from each member
   std::vector<char> present_;

@@ -52,8 +52,8 @@ def main():
     serial_rss = max(r["peak_rss_bytes"] for r in serial["rank_counts"]) if serial else None
     print("| ranks | elements per rank (max) | nodes per rank (max) | ghost faces (max) | peak RSS set-up, max (MB) "
           "| peak RSS, max (MB) | target 1.3 x serial/N + 100 MB | halo B/step (max sent) | contact B/step (max sent + received) "
-          "| contact pairs/step per rank | full searches per rank |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+          "| contact faces per rank (min-max) | contact pairs/step per rank (min-max) | contact pairs/step, all ranks | full searches per rank |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n, s in rows:
         rc = s["rank_counts"]
         big = lambda k: max(r[k] for r in rc)  # noqa: E731
@@ -61,9 +61,12 @@ def main():
         contact = max(r["contact_bytes_sent_per_step"] + r["contact_bytes_received_per_step"] for r in rc)
         pairs = sorted({r["contact_pairs_per_step"] for r in rc})
         pairs_text = f"{pairs[0]:.0f}" if len(pairs) == 1 else f"{pairs[0]:.0f}-{pairs[-1]:.0f}"
+        faces = [r["contact_faces"] for r in rc]
+        faces_text = f"{min(faces)}-{max(faces)}"
+        pairs_total = sum(r["contact_pairs_per_step"] for r in rc)
         print(f"| {n} | {big('elements')} | {big('nodes')} | {big('ghost_faces')} | {big('peak_rss_setup_bytes') / MB:.0f} "
               f"| {big('peak_rss_bytes') / MB:.0f} | {target} | {big('halo_bytes_sent_per_step'):.0f} | {contact:.0f} "
-              f"| {pairs_text} | {big('searches')} |")
+              f"| {faces_text} | {pairs_text} | {pairs_total:.0f} | {big('searches')} |")
 
 
 if __name__ == "__main__":

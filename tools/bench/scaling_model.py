@@ -1,23 +1,27 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """Scaling model of a parallel tribex run (issue 25): time and memory per rank per step against the
-rank count, for today's replicated set-up and contact and for the distributed design of issue 25,
+rank count, for the replicated set-up and contact (before issue 25) and for the distributed design as built,
 from measured inputs (tools/bench/README.md "Scaling model to 1,024 ranks" lists them and their
 commands). A model, not a measurement: it says where each design stops scaling and why.
 
 Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nodes per cube side):
   elements      E/N x c_el                                   (c_el: ns per element per step)
   halo          6 neighbours x (latency + 24 B x (K / N^(1/3))^2 / bandwidth)   (cube subdomains)
-  contact       replicated: S x c_node on every rank; distributed: S / min(N, N_c) x c_node, N_c the
-                ranks a contact-weighted partition spreads the zone over (S / 16 by default)
+  contact       replicated: S x c_node on every rank; distributed: the slave nodes of the rank's
+                region x c_node: its share S / min(N, N_c) of the zone (N_c the ranks the contact-weighted
+                partition spreads the zone over, S / 16 by default) as a square patch grown by the
+                region's reach h (node spacings) on every side, (sqrt(share) + 2 h)^2, at most S: the
+                as-built region computes the slave nodes within the reach redundantly (h = 0: the ideal,
+                every slave node computed once)
   surface data  replicated: MPI_Allgatherv of 72 B x all surface nodes to every rank
                 (recursive doubling: log2 N latencies + the whole surface over the link);
-                distributed: ghost faces within the margin from <= 8 neighbouring contact ranks
+                distributed: the ghost rows of the region (both surfaces, 72 B each) from <= 8 neighbours
   reductions    the stable step every 10 steps: one MPI_Allreduce, log2 N latencies
 Memory per rank: replicated set-up holds the whole model on every rank (M_1, measured);
 distributed: (M_1 - M_0) / N + M_0, M_0 the part that does not divide (code, libraries, MPI buffers).
 
-usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--ns-element C] [--ns-slave-node C]
+usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--halo-nodes h] [--ns-element C] [--ns-slave-node C]
                         [--serial-rss-mb M] [--surface-nodes NS] [--latency-us L] [--bandwidth-gbs B]
                         [--rank-memory-gb G] [--csv FILE]
 """
@@ -39,11 +43,12 @@ def step_costs(n, a):
     contact_rep = a.slave_nodes * a.ns_slave_node * 1e-9
     gather = 0.0 if n == 1 else math.ceil(math.log2(n)) * lat + 72 * a.surface_nodes / bw
     # Distributed: the contact zone shared by at most n ranks (a contact-weighted partition), each
-    # taking its slave nodes and the ghost faces of at most 8 neighbours within the margin (a strip
-    # of the zone's share's perimeter, 4 sqrt(S/n) nodes x 72 B).
+    # computing the slave nodes of its region (its share grown by the reach) and receiving the region's
+    # ghost rows of both surfaces from at most 8 neighbours.
     share = a.slave_nodes / min(n, max(1.0, a.slave_nodes / a.slave_nodes_per_rank))
-    contact_dist = share * a.ns_slave_node * 1e-9
-    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 4 * math.sqrt(share) * 72 / bw
+    region = a.slave_nodes if n == 1 else min(a.slave_nodes, (math.sqrt(share) + 2 * a.halo_nodes) ** 2)
+    contact_dist = region * a.ns_slave_node * 1e-9
+    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 2 * (region - share) * 72 / bw
     mem_rep = a.serial_rss_mb * 1e6
     mem_dist = (a.serial_rss_mb - a.fixed_rss_mb) * 1e6 / n + a.fixed_rss_mb * 1e6
     rep = {"elements": elements, "halo": halo, "reductions": reduce, "contact": contact_rep, "surface": gather}
@@ -57,6 +62,8 @@ def main():
     ap.add_argument("--slave-nodes", type=float, default=961, help="S: slave nodes in the contact zone")
     ap.add_argument("--slave-nodes-per-rank", type=float, default=16,
                     help="the fewest slave nodes a contact-weighted partition gives a contact rank")
+    ap.add_argument("--halo-nodes", type=float, default=7.2,
+                    help="h: the contact region's reach in slave-node spacings (counts_indenter.i: 7.2 nm / 1 nm)")
     ap.add_argument("--surface-nodes", type=float, default=11_162, help="contact surface nodes (both surfaces)")
     ap.add_argument("--ns-element", type=float, default=85.0, help="c_el, ns per element per step")
     ap.add_argument("--ns-slave-node", type=float, default=340.0, help="c_node, ns per slave node per step")
