@@ -23,8 +23,9 @@ import argparse
 import json
 import os
 import shutil
-import subprocess
 import sys
+
+import parallel_check  # the launcher and run of the other parallel tests (same folder)
 
 
 def main():
@@ -37,13 +38,7 @@ def main():
     shutil.rmtree(a.out, ignore_errors=True)
 
     def run(out, ranks):
-        cmd = [a.tribex, "run", a.deck, "-o", out, "--quiet"]
-        if ranks > 1:
-            cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + (["--allow-run-as-root"] if os.geteuid() == 0 else []) + cmd
-        env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
-        p = subprocess.run(cmd, capture_output=True, text=True, env=env)
-        if p.returncode != 0:
-            sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
+        parallel_check.run(a.tribex, a.deck, out, ranks)  # exits with the command's output on failure
         with open(os.path.join(out, "summary.json")) as f:
             return json.load(f)
 
