@@ -147,7 +147,7 @@ void ContactManager::search(Pass& p, const double* x) {
     p.capture = p.margin + 1.25 * diameter;
   }
   bucket_.find_candidates(x, surfaces_[p.slave], surfaces_[p.master], p.mortar ? p.capture : p.margin,
-                          p.candidate_offset, p.candidates, present);
+                          p.candidate_offset, p.candidates, present, owner_computes_ ? projected_.data() : nullptr);
   if (p.mortar) {
     // Headroom for later searches (the wide mortar capture gives more candidates): no allocation in the loop.
     if (p.candidates.capacity() < p.candidates.size() + p.candidates.size() / 4)

@@ -106,6 +106,11 @@ class ContactManager {
   /// force reaches one capture plus one face away; a tangential pass reads the normal forces and
   /// master shares of its master nodes, two more such hops), plus the motion a search allows.
   double region_reach() const;
+  /// Whether each slave node is computed on its owner only (a distributed run whose passes are all
+  /// node to face without tangential pairs): the forces on other ranks' nodes are then partial sums
+  /// the solver completes (the reverse ghost exchange and the shared-node sum). Otherwise every rank
+  /// computes every slave node of its region, and its own nodes' forces are complete.
+  bool owner_computes() const { return owner_computes_; }
   /// Per-node state a rank must take from the node's owner when the node enters its region (the laws'
   /// state of every pass where it is a slave node): node_state_width() doubles per node.
   int node_state_width() const;
@@ -226,6 +231,10 @@ class ContactManager {
   std::vector<int> all_nodes_;
   // Distributed runs only (distribute, set_present; empty otherwise): [node] counted here, present here.
   std::vector<char> counted_, present_;
+  // owner_computes(): [node] the slave nodes this rank projects, its counted ones and the nodes of
+  // slave faces with a counted node (their gaps only, for the edge radius when an axis is set).
+  bool owner_computes_ = false;
+  std::vector<char> projected_;
   ContactReductions* reductions_ = nullptr;
   UncountedTotals uncounted_;
   std::vector<double> plan_;  // [pass] scratch of plan_searches (room for 2 more: reduce_totals)

@@ -16,6 +16,22 @@ void ContactManager::distribute(std::vector<char> counted, ContactReductions* re
   largest_face_diameter_ = 0.0;
   for (const auto& s : surfaces_) largest_face_diameter_ = std::max(largest_face_diameter_, max_face_diameter(s, X));
   for (auto& p : passes_) p.searched = false;
+  owner_computes_ = reductions != nullptr && std::none_of(passes_.begin(), passes_.end(), [](const Pass& p) {
+    return p.mortar != nullptr || has_tangential_pairs(p.law);
+  });
+  projected_.clear();
+  if (owner_computes_) {
+    projected_ = counted_;
+    if (axis_.set)
+      for (const auto& p : passes_) {
+        const ContactSurface& s = surfaces_[p.slave];
+        for (int f = 0; f < s.face_count(); ++f) {
+          const int* fn = &s.face_nodes[4 * f];
+          if (counted_[fn[0]] || counted_[fn[1]] || counted_[fn[2]] || counted_[fn[3]])
+            for (int a = 0; a < 4; ++a) projected_[fn[a]] = 1;
+        }
+      }
+  }
 }
 
 void ContactManager::set_present(const std::vector<char>& present) { present_.assign(present.begin(), present.end()); }
@@ -37,6 +53,8 @@ long long ContactManager::present_face_count() const {
 // pairs reads the normal forces and master shares of its master nodes (both one hop further) and
 // a later pass reads the forces of the earlier ones: two hops more per such pass. Between searches
 // every node moves at most research_fraction x margin, and two nodes close by twice that, per hop.
+// Owner-computes runs (every slave node computed once, the forces summed back) need only the master
+// faces of their own slave nodes and of the slave faces around them: one hop plus a face.
 double ContactManager::region_reach() const {
   double hop = 0.0;
   int hops = 2;
@@ -45,7 +63,7 @@ double ContactManager::region_reach() const {
     hop = std::max(hop, capture + 1.5 * largest_face_diameter_ + 2.0 * p.research_fraction * p.margin);
     if (has_tangential_pairs(p.law)) hops += 2;
   }
-  return hops * hop;
+  return owner_computes_ ? hop + 1.5 * largest_face_diameter_ : hops * hop;
 }
 
 int ContactManager::node_state_width() const {

@@ -34,6 +34,7 @@ void ContactManager::node_to_face_with(const Law& law, Pass& p, const StepInputs
     const BestFace best = closest_face(in.x, master, &p.candidates[p.candidate_offset[k]], count, xs, p.last_face[k]);
     p.last_face[k] = best.face >= 0 && best.proj.interior ? best.face : -1;
     if (best.usable) p.gap[k] = best.proj.gap;
+    if (owner_computes_ && !view.counts(node)) continue;  // another rank's node: its gap only (edge radius)
     ContactPoint point{k, node, best.face, &master.face_nodes[4 * std::max(best.face, 0)], best.proj.shape,
                        best.proj.normal, best.proj.gap, slave.node_area[k]};
     if constexpr (!Law::penalty) {

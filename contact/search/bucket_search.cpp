@@ -8,7 +8,8 @@ namespace tribex::contact {
 
 void BucketSearch::find_candidates(const double* x, const ContactSurface& slave, const ContactSurface& master,
                                    double capture, std::vector<int>& offset, std::vector<int>& faces,
-                                   const char* present) {
+                                   const char* present, const char* slaves) {
+  if (!slaves) slaves = present;
   const int nf = master.face_count();
   box_.resize(6 * static_cast<std::size_t>(nf));
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
@@ -87,7 +88,7 @@ void BucketSearch::find_candidates(const double* x, const ContactSurface& slave,
   for (int k = 0; k < slave.node_count(); ++k) {
     const int node = slave.nodes[k];
     const double* p = x + 3 * node;
-    const bool outside = (present && !present[node]) || p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2] || p[2] > hi[2];
+    const bool outside = (slaves && !slaves[node]) || p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2] || p[2] > hi[2];
     if (!outside) {
       const int cell = (index(p[2], 2, nz_) * ny_ + index(p[1], 1, ny_)) * nx_ + index(p[0], 0, nx_);
       for (int c = cell_offset_[cell]; c < cell_offset_[cell + 1]; ++c) {

@@ -16,9 +16,11 @@ class BucketSearch {
   /// Candidates of every node of `slave` among the faces of `master` at positions `x` [node][3]:
   /// faces whose box, inflated by `capture` (m), contains the node. A face touching the node itself
   /// is never a candidate (self-contact of one surface). `present` [node] (nullptr: every node): only
-  /// slave nodes present and faces whose four nodes are present take part (a distributed run's region).
+  /// faces whose four nodes are present take part (a distributed run's region), and only slave nodes
+  /// with `slaves` [node] nonzero (nullptr: the present ones).
   void find_candidates(const double* x, const ContactSurface& slave, const ContactSurface& master, double capture,
-                       std::vector<int>& offset, std::vector<int>& faces, const char* present = nullptr);
+                       std::vector<int>& offset, std::vector<int>& faces, const char* present = nullptr,
+                       const char* slaves = nullptr);
 
   int bucket_count() const { return nx_ * ny_ * nz_; }
 

@@ -173,23 +173,40 @@ void ContactRegion::size_buffers() {
   requests_.reserve(2 * static_cast<std::size_t>(members_));
 }
 
-void ContactRegion::exchange(int width) {
+void ContactRegion::exchange(int width, bool reverse) {
+  // Forward: send_ (by send lists) -> recv_ (by receive lists); reverse: recv_ -> send_.
+  double* out = reverse ? recv_.data() : send_.data();
+  double* in = reverse ? send_.data() : recv_.data();
+  const std::vector<int>& out_offset = reverse ? recv_offset_ : send_offset_;
+  const std::vector<int>& in_offset = reverse ? send_offset_ : recv_offset_;
   requests_.clear();
   for (int q = 0; q < members_; ++q) {
-    const int count = recv_offset_[q + 1] - recv_offset_[q];
+    const int count = in_offset[q + 1] - in_offset[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Irecv(&recv_[static_cast<std::size_t>(width) * recv_offset_[q]], width * count, MPI_DOUBLE, q, 7, comm_,
-              &requests_.back());
+    MPI_Irecv(in + static_cast<std::size_t>(width) * in_offset[q], width * count, MPI_DOUBLE, q, 7, comm_, &requests_.back());
   }
   for (int q = 0; q < members_; ++q) {
-    const int count = send_offset_[q + 1] - send_offset_[q];
+    const int count = out_offset[q + 1] - out_offset[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Isend(&send_[static_cast<std::size_t>(width) * send_offset_[q]], width * count, MPI_DOUBLE, q, 7, comm_,
+    MPI_Isend(out + static_cast<std::size_t>(width) * out_offset[q], width * count, MPI_DOUBLE, q, 7, comm_,
               &requests_.back());
   }
   MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
+}
+
+void ContactRegion::return_ghost_forces(double* fg) {
+  if (comm_ == MPI_COMM_NULL) return;
+  const double start = now();
+  for (std::size_t j = 0; j < recv_node_.size(); ++j)
+    for (int i = 0; i < 3; ++i) recv_[3 * j + i] = fg[3 * static_cast<std::size_t>(recv_node_[j]) + i];
+  exchange(3, true);
+  for (std::size_t j = 0; j < send_node_.size(); ++j)
+    for (int i = 0; i < 3; ++i) fg[3 * static_cast<std::size_t>(send_node_[j]) + i] += send_[3 * j + i];
+  domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * 3 * recv_node_.size());
+  domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * 3 * send_node_.size());
+  domain_.communication_seconds += now() - start;
 }
 
 void ContactRegion::fill_ghosts(double* xg, double* vg, double* fg) {

@@ -45,6 +45,9 @@ class ContactRegion final : public contact::ContactReductions {
   void refresh(const double* xg, contact::ContactManager& manager);
   /// Ghost rows of xg, vg, fg [surface node][3] from their owners (this rank's own rows current).
   void fill_ghosts(double* xg, double* vg, double* fg);
+  /// Owner-computes contact (ContactManager::owner_computes): the forces fg [surface node][3] this rank
+  /// put on its ghost nodes go back to their owners, who add them to their rows (in member order).
+  void return_ghost_forces(double* fg);
   /// [surface node] 1 for the nodes of this rank's region (held or ghost).
   const std::vector<char>& present() const { return present_; }
   int ghost_nodes() const { return static_cast<int>(recv_node_.size()); }
@@ -60,8 +63,9 @@ class ContactRegion final : public contact::ContactReductions {
  private:
   void exchange_node_numbers();  // receive lists from the send lists
   void size_buffers();
-  /// Sends `width` doubles per listed node from `send_` and receives into `recv_`.
-  void exchange(int width);
+  /// Sends `width` doubles per listed node from `send_` and receives into `recv_` (reverse: from
+  /// `recv_` back to the senders' `send_`).
+  void exchange(int width, bool reverse = false);
 
   Domain& domain_;
   double reach_;
