@@ -53,7 +53,7 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
     model.domain.set_surface(model.contact_global_node);
     if (!model.domain.serial()) {
       // Distributed contact: this rank counts the surface nodes it owns and holds its region's.
-      contact_region_ = std::make_unique<parallel::ContactRegion>(model.domain, model.contact->region_reach());
+      contact_region_ = std::make_unique<parallel::ContactRegion>(model.domain);
       const auto& owned = model.domain.surface_owned();
       model.contact->distribute(std::vector<char>(owned.begin(), owned.end()), contact_region_.get(), x_.data());
       if (model.contact->owner_computes()) contact_partial_.assign(n3, 0.0);
@@ -249,7 +249,8 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
 
 // Owner-computes contact: each slave node was computed on its owner only, so the forces on a node are
 // spread over the ranks whose slave nodes touch it. The ghost rows go back to their owners, then the
-// held rows of shared nodes are summed over their holders (the halo exchange), so every holder has
+// held rows of shared surface nodes are summed over their holders (the halo exchange restricted to
+// them), so every holder has
 // the whole force of its surface nodes.
 void CentralDifference::complete_contact_forces() {
   contact_region_->return_ghost_forces(f_contact_.data());
@@ -257,15 +258,7 @@ void CentralDifference::complete_contact_forces() {
   for (std::size_t k = 0; k < local.size(); ++k)
     if (const int l = local[k]; l >= 0)
       for (int i = 0; i < 3; ++i) contact_partial_[3 * l + i] = f_contact_[3 * k + i];
-  // The contact's use of the halo exchange counts as contact traffic (summary.json rank_counts).
-  auto& traffic = model_.domain.traffic;
-  const parallel::Domain::Traffic before = traffic;
-  model_.domain.sum_shared(contact_partial_.data());
-  traffic.surface_sent += traffic.halo_sent - before.halo_sent;
-  traffic.surface_received += traffic.halo_received - before.halo_received;
-  traffic.halo_sent = before.halo_sent;
-  traffic.halo_received = before.halo_received;
-  traffic.halo_exchanges = before.halo_exchanges;
+  model_.domain.sum_shared_surface(contact_partial_.data());
   for (std::size_t k = 0; k < local.size(); ++k)
     if (const int l = local[k]; l >= 0)
       for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = contact_partial_[3 * l + i];

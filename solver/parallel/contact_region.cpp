@@ -16,7 +16,7 @@ constexpr int kRowValues = 9;  // x, v, f of a ghost row
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
 
-ContactRegion::ContactRegion(Domain& domain, double reach) : domain_(domain), reach_(reach) {
+ContactRegion::ContactRegion(Domain& domain) : domain_(domain) {
   const auto& local = domain.surface_local();
   const bool holds_surface = std::any_of(local.begin(), local.end(), [](int l) { return l >= 0; });
   MPI_Comm_split(MPI_COMM_WORLD, holds_surface ? 0 : MPI_UNDEFINED, domain.rank, &comm_);
@@ -64,6 +64,7 @@ struct Grid {
 void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) {
   if (comm_ == MPI_COMM_NULL) return;  // no surface node here: an empty region
   const double start = now();
+  const double reach = manager.region_reach();
   const auto& local = domain_.surface_local();
   const auto& owned = domain_.surface_owned();
   // The members' box (minima of the lower corner and of the negated upper one), then the grid.
@@ -81,7 +82,7 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
     grid.lo[i] = box[i];
     extent = std::max(extent, -box[3 + i] - box[i]);
   }
-  grid.cell = std::max(reach_ / kReachCells, extent / kMaxCells);
+  grid.cell = std::max(reach / kReachCells, extent / kMaxCells);
   if (!(grid.cell > 0.0)) grid.cell = 1.0;
   for (int i = 0; i < 3; ++i)
     grid.n[i] = std::clamp(static_cast<int>(std::floor((-box[3 + i] - box[i]) / grid.cell)) + 1, 1, kMaxCells + 1);
@@ -127,7 +128,7 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
       const int k = owned_nodes[j];
       const double* p = xg + 3 * k;
       bool near = true;
-      for (int i = 0; i < 3; ++i) near = near && p[i] >= b[i] - reach_ && p[i] <= b[3 + i] + reach_;
+      for (int i = 0; i < 3; ++i) near = near && p[i] >= b[i] - reach && p[i] <= b[3 + i] + reach;
       bool occupied_near = false;
       for (int a = 0; a < block && near && !occupied_near; ++a) {
         const int c = around[static_cast<std::size_t>(block) * j + a];

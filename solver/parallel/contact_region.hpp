@@ -34,8 +34,9 @@ class Domain;
 
 class ContactRegion final : public contact::ContactReductions {
  public:
-  /// After Domain::set_surface; `reach` (m) from ContactManager::region_reach.
-  ContactRegion(Domain& domain, double reach);
+  /// After Domain::set_surface. The region's reach is the manager's (ContactManager::region_reach),
+  /// read at each refresh.
+  explicit ContactRegion(Domain& domain);
   ~ContactRegion() override;
   ContactRegion(const ContactRegion&) = delete;
   ContactRegion& operator=(const ContactRegion&) = delete;
@@ -68,7 +69,6 @@ class ContactRegion final : public contact::ContactReductions {
   void exchange(int width, bool reverse = false);
 
   Domain& domain_;
-  double reach_;
   // The ranks holding surface nodes (MPI_COMM_NULL on the others, which have no region); "member" below
   // is a rank of this communicator.
   MPI_Comm comm_ = MPI_COMM_NULL;

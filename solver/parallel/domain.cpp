@@ -46,23 +46,27 @@ void Domain::init_parallel(const MeshPart& part) {
     }
     if (last - first < 2) continue;
     for (int q = first; q < last; ++q)
-      if (part.holder_rank[q] != rank) with[part.holder_rank[q]].push_back(static_cast<int>(shared_nodes_.size()));
-    shared_nodes_.push_back(l);
+      if (part.holder_rank[q] != rank) with[part.holder_rank[q]].push_back(static_cast<int>(halo_.shared_nodes.size()));
+    halo_.shared_nodes.push_back(l);
   }
-  neighbour_offset_.push_back(0);
+  halo_.neighbour_offset.push_back(0);
   for (int r = 0; r < ranks; ++r) {
     if (with[r].empty()) continue;
-    neighbours_.push_back(r);
+    halo_.neighbours.push_back(r);
     for (int slot : with[r]) {
-      neighbour_nodes_.push_back(shared_nodes_[slot]);
-      neighbour_slot_.push_back(slot);
+      halo_.neighbour_nodes.push_back(halo_.shared_nodes[slot]);
+      halo_.neighbour_slot.push_back(slot);
     }
-    neighbour_offset_.push_back(static_cast<int>(neighbour_nodes_.size()));
+    halo_.neighbour_offset.push_back(static_cast<int>(halo_.neighbour_nodes.size()));
   }
-  send_.assign(3 * neighbour_nodes_.size(), 0.0);
-  recv_.assign(3 * neighbour_nodes_.size(), 0.0);
-  sum_.assign(3 * shared_nodes_.size(), 0.0);
-  requests_.assign(2 * neighbours_.size(), MPI_REQUEST_NULL);
+  halo_.size_buffers();
+}
+
+void Domain::Halo::size_buffers() {
+  send.assign(3 * neighbour_nodes.size(), 0.0);
+  recv.assign(3 * neighbour_nodes.size(), 0.0);
+  sum.assign(3 * shared_nodes.size(), 0.0);
+  requests.assign(2 * neighbours.size(), MPI_REQUEST_NULL);
 }
 
 namespace {
@@ -70,40 +74,49 @@ double now() { return std::chrono::duration<double>(std::chrono::steady_clock::n
 }  // namespace
 
 void Domain::sum_shared(double* f, int width) {
-  if (neighbours_.empty()) return;
-  const double start = now();
-  const int nk = static_cast<int>(neighbours_.size()), w = width;
+  if (halo_.neighbours.empty()) return;
   ++traffic.halo_exchanges;
+  sum_over(halo_, f, width, traffic.halo_sent, traffic.halo_received);
+}
+
+void Domain::sum_shared_surface(double* f) {
+  if (surface_halo_.neighbours.empty()) return;
+  sum_over(surface_halo_, f, 3, traffic.surface_sent, traffic.surface_received);
+}
+
+void Domain::sum_over(Halo& h, double* f, int width, long long& sent, long long& received) {
+  const double start = now();
+  const int nk = static_cast<int>(h.neighbours.size()), w = width;
   for (int k = 0; k < nk; ++k) {
-    const int b = neighbour_offset_[k], n = neighbour_offset_[k + 1] - b;
-    MPI_Irecv(&recv_[w * b], w * n, MPI_DOUBLE, neighbours_[k], 17, MPI_COMM_WORLD, &requests_[k]);
-    traffic.halo_received += static_cast<long long>(sizeof(double)) * w * n;
+    const int b = h.neighbour_offset[k], n = h.neighbour_offset[k + 1] - b;
+    MPI_Irecv(&h.recv[w * b], w * n, MPI_DOUBLE, h.neighbours[k], 17, MPI_COMM_WORLD, &h.requests[k]);
+    received += static_cast<long long>(sizeof(double)) * w * n;
   }
   for (int k = 0; k < nk; ++k) {
-    const int b = neighbour_offset_[k], n = neighbour_offset_[k + 1] - b;
+    const int b = h.neighbour_offset[k], n = h.neighbour_offset[k + 1] - b;
     for (int j = b; j < b + n; ++j)
-      for (int i = 0; i < w; ++i) send_[w * j + i] = f[w * neighbour_nodes_[j] + i];
-    MPI_Isend(&send_[w * b], w * n, MPI_DOUBLE, neighbours_[k], 17, MPI_COMM_WORLD, &requests_[nk + k]);
-    traffic.halo_sent += static_cast<long long>(sizeof(double)) * w * n;
+      for (int i = 0; i < w; ++i) h.send[w * j + i] = f[w * h.neighbour_nodes[j] + i];
+    MPI_Isend(&h.send[w * b], w * n, MPI_DOUBLE, h.neighbours[k], 17, MPI_COMM_WORLD, &h.requests[nk + k]);
+    sent += static_cast<long long>(sizeof(double)) * w * n;
   }
-  MPI_Waitall(2 * nk, requests_.data(), MPI_STATUSES_IGNORE);
+  MPI_Waitall(2 * nk, h.requests.data(), MPI_STATUSES_IGNORE);
   // Sum in ascending rank order (0 + f_r1 + f_r2 + ...): the same operations on every rank that
   // holds the node, so all copies stay bit-identical.
-  std::fill(sum_.begin(), sum_.end(), 0.0);
+  std::fill(h.sum.begin(), h.sum.end(), 0.0);
   bool mine_added = false;
   auto add_mine = [&]() {
-    for (std::size_t s = 0; s < shared_nodes_.size(); ++s)
-      for (int i = 0; i < w; ++i) sum_[w * s + i] += f[w * shared_nodes_[s] + i];
+    for (std::size_t s = 0; s < h.shared_nodes.size(); ++s)
+      for (int i = 0; i < w; ++i) h.sum[w * s + i] += f[w * h.shared_nodes[s] + i];
     mine_added = true;
   };
   for (int k = 0; k < nk; ++k) {
-    if (!mine_added && neighbours_[k] > rank) add_mine();
-    for (int j = neighbour_offset_[k]; j < neighbour_offset_[k + 1]; ++j)
-      for (int i = 0; i < w; ++i) sum_[w * neighbour_slot_[j] + i] += recv_[w * j + i];
+    if (!mine_added && h.neighbours[k] > rank) add_mine();
+    for (int j = h.neighbour_offset[k]; j < h.neighbour_offset[k + 1]; ++j)
+      for (int i = 0; i < w; ++i) h.sum[w * h.neighbour_slot[j] + i] += h.recv[w * j + i];
   }
   if (!mine_added) add_mine();
-  for (std::size_t s = 0; s < shared_nodes_.size(); ++s)
-    for (int i = 0; i < w; ++i) f[w * shared_nodes_[s] + i] = sum_[w * s + i];
+  for (std::size_t s = 0; s < h.shared_nodes.size(); ++s)
+    for (int i = 0; i < w; ++i) f[w * h.shared_nodes[s] + i] = h.sum[w * s + i];
   communication_seconds += now() - start;
 }
 
@@ -120,13 +133,40 @@ void Domain::set_surface(const std::vector<int>& surface_nodes) {
       surface_owned_[k] = owned[l];
     }
   }
+  // The halo restricted to the surface nodes (both sides keep the same order: ascending local node,
+  // which is ascending global node on every rank).
+  std::vector<char> on_surface(global_node.size(), 0);
+  for (int l : surface_local_)
+    if (l >= 0) on_surface[static_cast<std::size_t>(l)] = 1;
+  Halo& h = surface_halo_;
+  h = Halo{};
+  std::vector<int> slot_of(halo_.shared_nodes.size(), -1);
+  for (std::size_t s = 0; s < halo_.shared_nodes.size(); ++s)
+    if (on_surface[static_cast<std::size_t>(halo_.shared_nodes[s])]) {
+      slot_of[s] = static_cast<int>(h.shared_nodes.size());
+      h.shared_nodes.push_back(halo_.shared_nodes[s]);
+    }
+  h.neighbour_offset.push_back(0);
+  for (std::size_t k = 0; k < halo_.neighbours.size(); ++k) {
+    const std::size_t before = h.neighbour_nodes.size();
+    for (int j = halo_.neighbour_offset[k]; j < halo_.neighbour_offset[k + 1]; ++j)
+      if (slot_of[static_cast<std::size_t>(halo_.neighbour_slot[j])] >= 0) {
+        h.neighbour_nodes.push_back(halo_.neighbour_nodes[j]);
+        h.neighbour_slot.push_back(slot_of[static_cast<std::size_t>(halo_.neighbour_slot[j])]);
+      }
+    if (h.neighbour_nodes.size() == before) continue;
+    h.neighbours.push_back(halo_.neighbours[k]);
+    h.neighbour_offset.push_back(static_cast<int>(h.neighbour_nodes.size()));
+  }
+  h.size_buffers();
 }
 
 bool Domain::shares_with(int local_node, int other_rank) const {
-  const auto q = std::lower_bound(neighbours_.begin(), neighbours_.end(), other_rank);
-  if (q == neighbours_.end() || *q != other_rank) return false;
-  const std::size_t k = static_cast<std::size_t>(q - neighbours_.begin());
-  const auto first = neighbour_nodes_.begin() + neighbour_offset_[k], last = neighbour_nodes_.begin() + neighbour_offset_[k + 1];
+  const auto q = std::lower_bound(halo_.neighbours.begin(), halo_.neighbours.end(), other_rank);
+  if (q == halo_.neighbours.end() || *q != other_rank) return false;
+  const std::size_t k = static_cast<std::size_t>(q - halo_.neighbours.begin());
+  const auto first = halo_.neighbour_nodes.begin() + halo_.neighbour_offset[k],
+             last = halo_.neighbour_nodes.begin() + halo_.neighbour_offset[k + 1];
   return std::binary_search(first, last, local_node);
 }
 

@@ -40,7 +40,7 @@ class Domain {
   };
   Traffic traffic;
   /// Nodes held by more than one rank (each holder counts them).
-  int shared_node_count() const { return static_cast<int>(shared_nodes_.size()); }
+  int shared_node_count() const { return static_cast<int>(halo_.shared_nodes.size()); }
   /// The identity layout of a whole model on one rank (build_model sets it).
   void init_serial(int nodes, int elements);
   /// This rank's layout from its part of the mesh (parallel/mesh_part.hpp): owned flags (the lowest
@@ -52,6 +52,9 @@ class Domain {
 
   /// Sums a nodal [local node][width] vector (width 1..3) over the ranks that share each node.
   void sum_shared(double* nodal, int width = 3);
+  /// The same for the contact-surface nodes only (set_surface), [local node][3]; counted as contact
+  /// traffic (owner-computes contact: contact_region.hpp).
+  void sum_shared_surface(double* nodal);
 
   /// Contact surfaces: `surface_nodes` the sorted global nodes of all surfaces (same on every rank),
   /// surface node k = the contact's node k (Model::contact_global_node).
@@ -65,14 +68,21 @@ class Domain {
 
  private:
   int owned_nodes_ = 0;
-  // halo
-  std::vector<int> neighbours_;        // ascending
-  std::vector<int> neighbour_offset_;  // [k + 1] into neighbour_nodes_
-  std::vector<int> neighbour_nodes_;   // local nodes shared with neighbour k, ascending
-  std::vector<int> neighbour_slot_;    // their index into shared_nodes_
-  std::vector<int> shared_nodes_;      // local nodes held by more than one rank, ascending
-  std::vector<double> send_, recv_, sum_;
-  std::vector<MPI_Request> requests_;
+  /// Shared nodes and their neighbour lists, with the buffers of one exchange.
+  struct Halo {
+    std::vector<int> neighbours;        // ascending
+    std::vector<int> neighbour_offset;  // [k + 1] into neighbour_nodes
+    std::vector<int> neighbour_nodes;   // local nodes shared with neighbour k, ascending
+    std::vector<int> neighbour_slot;    // their index into shared_nodes
+    std::vector<int> shared_nodes;      // local nodes held by more than one rank, ascending
+    std::vector<double> send, recv, sum;
+    std::vector<MPI_Request> requests;
+    void size_buffers();
+  };
+  /// Sums f over `halo`'s shared nodes (in ascending rank order); adds the payload bytes to sent/received.
+  void sum_over(Halo& halo, double* f, int width, long long& sent, long long& received);
+  Halo halo_;          // every shared node
+  Halo surface_halo_;  // the shared contact-surface nodes (set_surface)
   // contact surface maps
   std::vector<int> surface_local_;
   std::vector<double> surface_owned_;
