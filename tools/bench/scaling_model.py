@@ -8,20 +8,22 @@ commands). A model, not a measurement: it says where each design stops scaling a
 Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nodes per cube side):
   elements      E/N x c_el                                   (c_el: ns per element per step)
   halo          6 neighbours x (latency + 24 B x (K / N^(1/3))^2 / bandwidth)   (cube subdomains)
-  contact       replicated: S x c_node on every rank; distributed: the slave nodes of the rank's
-                region x c_node: its share S / min(N, N_c) of the zone (N_c the ranks the contact-weighted
-                partition spreads the zone over, S / 16 by default) as a square patch grown by the
-                region's reach h (node spacings) on every side, (sqrt(share) + 2 h)^2, at most S: the
-                as-built region computes the slave nodes within the reach redundantly (h = 0: the ideal,
-                every slave node computed once)
+  contact       replicated: S x c_node on every rank; distributed (owner computes, the frictionless
+                and adhesive laws): its share S / min(N, N_c) x c_node (N_c the ranks the
+                contact-weighted partition spreads the zone over, S / 16 by default); with --redundant
+                (the tangential laws and mortar) every slave node of the region: the share as a square
+                patch grown by the region's reach h (node spacings) on every side,
+                (sqrt(share) + 2 h)^2, at most S
   surface data  replicated: MPI_Allgatherv of 72 B x all surface nodes to every rank
                 (recursive doubling: log2 N latencies + the whole surface over the link);
-                distributed: the ghost rows of the region (both surfaces, 72 B each) from <= 8 neighbours
+                distributed: the ghost rows of the region's band (both surfaces, 72 B each, and as much
+                again for the forces sent back) from <= 8 neighbours
   reductions    the stable step every 10 steps: one MPI_Allreduce, log2 N latencies
 Memory per rank: replicated set-up holds the whole model on every rank (M_1, measured);
 distributed: (M_1 - M_0) / N + M_0, M_0 the part that does not divide (code, libraries, MPI buffers).
 
-usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--halo-nodes h] [--ns-element C] [--ns-slave-node C]
+usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--halo-nodes h] [--redundant]
+                        [--ns-element C] [--ns-slave-node C]
                         [--serial-rss-mb M] [--surface-nodes NS] [--latency-us L] [--bandwidth-gbs B]
                         [--rank-memory-gb G] [--csv FILE]
 """
@@ -47,8 +49,8 @@ def step_costs(n, a):
     # ghost rows of both surfaces from at most 8 neighbours.
     share = a.slave_nodes / min(n, max(1.0, a.slave_nodes / a.slave_nodes_per_rank))
     region = a.slave_nodes if n == 1 else min(a.slave_nodes, (math.sqrt(share) + 2 * a.halo_nodes) ** 2)
-    contact_dist = region * a.ns_slave_node * 1e-9
-    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 2 * (region - share) * 72 / bw
+    contact_dist = (region if a.redundant else share) * a.ns_slave_node * 1e-9
+    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 2 * (region - share) * (72 if a.redundant else 96) / bw
     mem_rep = a.serial_rss_mb * 1e6
     mem_dist = (a.serial_rss_mb - a.fixed_rss_mb) * 1e6 / n + a.fixed_rss_mb * 1e6
     rep = {"elements": elements, "halo": halo, "reductions": reduce, "contact": contact_rep, "surface": gather}
@@ -62,8 +64,11 @@ def main():
     ap.add_argument("--slave-nodes", type=float, default=961, help="S: slave nodes in the contact zone")
     ap.add_argument("--slave-nodes-per-rank", type=float, default=16,
                     help="the fewest slave nodes a contact-weighted partition gives a contact rank")
-    ap.add_argument("--halo-nodes", type=float, default=7.2,
-                    help="h: the contact region's reach in slave-node spacings (counts_indenter.i: 7.2 nm / 1 nm)")
+    ap.add_argument("--halo-nodes", type=float, default=5.7,
+                    help="h: the contact region's reach in slave-node spacings (counts_indenter.i, owner computes: "
+                         "5.7 nm / 1 nm; a tangential law's redundant region about 4 hops of 3.6 nm)")
+    ap.add_argument("--redundant", action="store_true",
+                    help="the redundant region of the tangential laws and mortar (every slave node of the region computed)")
     ap.add_argument("--surface-nodes", type=float, default=11_162, help="contact surface nodes (both surfaces)")
     ap.add_argument("--ns-element", type=float, default=85.0, help="c_el, ns per element per step")
     ap.add_argument("--ns-slave-node", type=float, default=340.0, help="c_node, ns per slave node per step")
