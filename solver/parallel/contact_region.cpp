@@ -97,7 +97,13 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
         held_box[3 + i] = std::max(held_box[3 + i], xg[3 * k + i]);
       }
   MPI_Allgather(held_box, 6, MPI_DOUBLE, boxes_.data(), 6, MPI_DOUBLE, comm_);
-  std::vector<std::uint64_t> mine(static_cast<std::size_t>(words), 0), occupied(static_cast<std::size_t>(words) * members_);
+  // Scratch kept between refreshes: a refresh allocates only when the region grows.
+  auto& mine = scratch_.mine;
+  auto& occupied = scratch_.occupied;
+  auto& around = scratch_.around;
+  auto& owned_nodes = scratch_.owned_nodes;
+  mine.assign(static_cast<std::size_t>(words), 0);
+  occupied.assign(static_cast<std::size_t>(words) * members_, 0);
   for (std::size_t k = 0; k < local.size(); ++k)
     if (local[k] >= 0) {
       const int c = grid.index(xg + 3 * k);
@@ -106,8 +112,8 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
   MPI_Allgather(mine.data(), words, MPI_UINT64_T, occupied.data(), words, MPI_UINT64_T, comm_);
   // The cells within the reach of each owned surface node (-1: outside the grid).
   constexpr int side = 2 * kReachCells + 1, block = side * side * side;
-  std::vector<int> around;
-  std::vector<int> owned_nodes;
+  around.clear();
+  owned_nodes.clear();
   for (std::size_t k = 0; k < local.size(); ++k) {
     if (!(owned[k] > 0.0)) continue;
     owned_nodes.push_back(static_cast<int>(k));
@@ -155,7 +161,10 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
 
 void ContactRegion::exchange_node_numbers() {
   const int n = members_;
-  std::vector<int> send_count(static_cast<std::size_t>(n)), recv_count(static_cast<std::size_t>(n));
+  auto& send_count = scratch_.send_count;
+  auto& recv_count = scratch_.recv_count;
+  send_count.assign(static_cast<std::size_t>(n), 0);
+  recv_count.assign(static_cast<std::size_t>(n), 0);
   for (int q = 0; q < n; ++q) send_count[q] = send_offset_[q + 1] - send_offset_[q];
   MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1, MPI_INT, comm_);
   recv_offset_[0] = 0;

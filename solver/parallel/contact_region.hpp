@@ -23,6 +23,7 @@
 
 #include <mpi.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "contact/contact_manager.hpp"
@@ -85,6 +86,11 @@ class ContactRegion final : public contact::ContactReductions {
     int node;
   };
   std::vector<Located> located_;
+  struct Scratch {  // refresh's working arrays, kept so that a refresh allocates only when they grow
+    std::vector<std::uint64_t> mine, occupied;  // occupied cells: this rank's, every member's
+    std::vector<int> around, owned_nodes;       // cells near each owned surface node; those nodes
+    std::vector<int> send_count, recv_count;    // [member]
+  } scratch_;
 };
 
 }  // namespace tribex::solver::parallel
