@@ -52,7 +52,6 @@ class ContactRegion final : public contact::ContactReductions {
   void return_ghost_forces(double* fg);
   /// [surface node] 1 for the nodes of this rank's region (held or ghost).
   const std::vector<char>& present() const { return present_; }
-  int ghost_nodes() const { return static_cast<int>(recv_node_.size()); }
 
   /// The lists of the last refresh, for restart files; restore_lists rebuilds the region from them.
   std::vector<int> lists() const;
