@@ -47,8 +47,8 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
     if (p.primary) primary_slave_nodes += surfaces_[p.slave].nodes.size();
   fit_r2_.reserve(primary_slave_nodes);
   fit_p2_.reserve(primary_slave_nodes);
-  plan_.reserve(passes_.size() + 2);
   plan_.assign(passes_.size(), 0.0);
+  maxima_.assign(2 + passes_.size(), 0.0);
   located_value_.assign(1 + 2 * passes_.size(), 0.0);
   located_node_.assign(1 + 2 * passes_.size(), -1);
   for (const auto& s : surfaces_) all_nodes_.insert(all_nodes_.end(), s.nodes.begin(), s.nodes.end());
@@ -180,6 +180,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
   double friction[3] = {0.0, 0.0, 0.0};  // vector sum of shear forces on the (first) slave surfaces, N
   fit_r2_.clear();
   fit_p2_.clear();
+  uncounted_ = UncountedTotals{};  // scratch: what other ranks report
   for (int node : all_nodes_) {
     status_[node] = 0.0;
     traction_[3 * node] = traction_[3 * node + 1] = traction_[3 * node + 2] = 0.0;

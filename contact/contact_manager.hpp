@@ -237,7 +237,8 @@ class ContactManager {
   std::vector<char> projected_;
   ContactReductions* reductions_ = nullptr;
   UncountedTotals uncounted_;
-  std::vector<double> plan_;  // [pass] scratch of plan_searches (room for 2 more: reduce_totals)
+  std::vector<double> plan_;    // [pass] scratch of plan_searches
+  std::vector<double> maxima_;  // [2 + pass] scratch of reduce_totals
   std::vector<double> located_value_;  // [1 + 2 pass] scratch of reduce_totals
   std::vector<int> located_node_;
   double largest_face_diameter_ = 0.0;  // over every surface in the reference positions, m (region_reach)

@@ -113,15 +113,13 @@ void ContactManager::reduce_totals(ContactTotals& t, double friction[3]) {
   for (double* field : {&t.real_area, &t.asperity_contacts, &t.nominal_area, &friction[0], &friction[1], &friction[2]})
     *field = *s++;
   // Maxima: penetration, radius, and the passes' stable steps as their negatives.
-  plan_.resize(2 + passes_.size());  // capacity from construction's passes + 2 (reserve below)
-  plan_[0] = t.max_penetration;
-  plan_[1] = t.radius_max;
-  for (std::size_t i = 0; i < passes_.size(); ++i) plan_[2 + i] = -passes_[i].stable_dt;
-  reductions_->max(plan_.data(), static_cast<int>(plan_.size()));
-  t.max_penetration = plan_[0];
-  t.radius_max = plan_[1];
-  for (std::size_t i = 0; i < passes_.size(); ++i) passes_[i].stable_dt = -plan_[2 + i];
-  plan_.resize(passes_.size());
+  maxima_[0] = t.max_penetration;
+  maxima_[1] = t.radius_max;
+  for (std::size_t i = 0; i < passes_.size(); ++i) maxima_[2 + i] = -passes_[i].stable_dt;
+  reductions_->max(maxima_.data(), static_cast<int>(maxima_.size()));
+  t.max_penetration = maxima_[0];
+  t.radius_max = maxima_[1];
+  for (std::size_t i = 0; i < passes_.size(); ++i) passes_[i].stable_dt = -maxima_[2 + i];
   // Located maxima: the penetration ratio and each pass's fastest slave and master speeds.
   located_value_[0] = t.max_penetration_ratio;
   located_node_[0] = t.penetration_node;
