@@ -111,6 +111,17 @@ class ContactManager {
   /// the solver completes (the reverse ghost exchange and the shared-node sum). Otherwise every rank
   /// computes every slave node of its region, and its own nodes' forces are complete.
   bool owner_computes() const { return owner_computes_; }
+  /// Whether this rank's region must reach around `node` (a node it holds): owner_computes(): the
+  /// slave nodes it counts (a node it only holds, or a master node, needs no neighbours here: the
+  /// ranks computing the slave nodes near it hold it as a ghost); otherwise every node it holds.
+  bool seeds_region(int node) const { return !owner_computes_ || seeds_[node] != 0; }
+  /// What the passes read of a node besides its position, so what a distributed run's ghost rows
+  /// carry: its velocity (a law that reads velocities, or tangential pairs), its non-contact force
+  /// (tangential pairs: the junction's slip prediction, contact/README.md).
+  struct GhostFields {
+    bool velocity = true, other_force = true;
+  };
+  GhostFields ghost_fields() const;
   /// Per-node state a rank must take from the node's owner when the node enters its region (the laws'
   /// state of every pass where it is a slave node): node_state_width() doubles per node.
   int node_state_width() const;
@@ -235,6 +246,7 @@ class ContactManager {
   // slave faces with a counted node (their gaps only, for the edge radius when an axis is set).
   bool owner_computes_ = false;
   std::vector<char> projected_;
+  std::vector<char> seeds_;  // owner_computes(): [node] counted slave nodes (seeds_region)
   ContactReductions* reductions_ = nullptr;
   UncountedTotals uncounted_;
   std::vector<double> plan_;    // [pass] scratch of plan_searches

@@ -20,8 +20,12 @@ void ContactManager::distribute(std::vector<char> counted, ContactReductions* re
     return p.mortar != nullptr || has_tangential_pairs(p.law);
   });
   projected_.clear();
+  seeds_.clear();
   if (owner_computes_) {
     projected_ = counted_;
+    seeds_.assign(counted_.size(), 0);
+    for (const auto& p : passes_)
+      for (int node : surfaces_[p.slave].nodes) seeds_[node] = counted_[node];
     if (axis_.set)
       for (const auto& p : passes_) {
         const ContactSurface& s = surfaces_[p.slave];
@@ -64,6 +68,15 @@ double ContactManager::region_reach() const {
     if (has_tangential_pairs(p.law)) hops += 2;
   }
   return owner_computes_ ? hop + 1.5 * largest_face_diameter_ : hops * hop;
+}
+
+ContactManager::GhostFields ContactManager::ghost_fields() const {
+  GhostFields fields{false, false};
+  for (const auto& p : passes_) {
+    fields.velocity = fields.velocity || reads_velocity(p.law) || has_tangential_pairs(p.law);
+    fields.other_force = fields.other_force || has_tangential_pairs(p.law);
+  }
+  return fields;
 }
 
 int ContactManager::node_state_width() const {

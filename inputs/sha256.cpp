@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "inputs/sha256.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <fstream>
@@ -53,33 +54,53 @@ void compress(std::array<std::uint32_t, 8>& H, const unsigned char* block) {
 
 }  // namespace
 
-std::string sha256_hex(std::string_view bytes) {
-  std::array<std::uint32_t, 8> H = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-                                    0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};  // section 5.3.3
+Sha256& Sha256::update(std::string_view bytes) {
   const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
   std::size_t n = bytes.size();
-  for (; n >= 64; n -= 64, p += 64) compress(H, p);
+  length_ += n;
+  if (pending_size_ > 0) {  // complete the pending block first
+    const std::size_t take = std::min(n, 64 - pending_size_);
+    std::copy(p, p + take, pending_ + pending_size_);
+    pending_size_ += take;
+    p += take;
+    n -= take;
+    if (pending_size_ < 64) return *this;
+    compress(H_, pending_);
+    pending_size_ = 0;
+  }
+  for (; n >= 64; n -= 64, p += 64) compress(H_, p);
+  std::copy(p, p + n, pending_);
+  pending_size_ = n;
+  return *this;
+}
+
+std::string Sha256::hex() {
   // Padding (section 5.1.1): 0x80, zeros, then the message length in bits, big-endian, in 64 bits.
   unsigned char tail[128] = {};
-  for (std::size_t i = 0; i < n; ++i) tail[i] = p[i];
-  tail[n] = 0x80;
-  const std::size_t tail_size = n < 56 ? 64 : 128;
-  const std::uint64_t bits = std::uint64_t(bytes.size()) * 8;
+  std::copy(pending_, pending_ + pending_size_, tail);
+  tail[pending_size_] = 0x80;
+  const std::size_t tail_size = pending_size_ < 56 ? 64 : 128;
+  const std::uint64_t bits = length_ * 8;
   for (int i = 0; i < 8; ++i) tail[tail_size - 1 - i] = static_cast<unsigned char>(bits >> (8 * i));
-  for (std::size_t off = 0; off < tail_size; off += 64) compress(H, tail + off);
-  static const char* hex = "0123456789abcdef";
+  for (std::size_t off = 0; off < tail_size; off += 64) compress(H_, tail + off);
+  static const char* digits = "0123456789abcdef";
   std::string out;
   out.reserve(64);
-  for (std::uint32_t word : H)
-    for (int shift = 28; shift >= 0; shift -= 4) out += hex[(word >> shift) & 0xf];
+  for (std::uint32_t word : H_)
+    for (int shift = 28; shift >= 0; shift -= 4) out += digits[(word >> shift) & 0xf];
   return out;
 }
+
+std::string sha256_hex(std::string_view bytes) { return Sha256().update(bytes).hex(); }
 
 std::string sha256_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path + " to hash it");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return sha256_hex(bytes);
+  Sha256 hash;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) hash.update({buffer, static_cast<std::size_t>(in.gcount())});
+  if (in.bad()) throw std::runtime_error("cannot read " + path + " to hash it");
+  return hash.hex();
 }
 
 }  // namespace tribex::inputs

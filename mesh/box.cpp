@@ -37,9 +37,44 @@ std::vector<double> axis_coordinates(double origin, double length, int n, double
   return x;
 }
 
+// Every set a grid NAME makes (node sets: these and NAME_all; side sets: these).
+std::vector<std::string> set_names(const std::string& name) {
+  std::vector<std::string> names;
+  for (const char* f : face_names) names.push_back(name + "_" + f);
+  return names;
+}
+
+// A grid added to a mesh must not reuse a block or set name (as append).
+void check_new_names(const Mesh& into, const std::vector<std::string>& blocks, const std::vector<std::string>& sets) {
+  for (const auto& b : blocks)
+    if (into.find_block(b)) throw MeshError("append: both meshes have a block named '" + b + "'; rename one of them");
+  std::vector<std::string> node_sets = sets;
+  node_sets.push_back(blocks.front() + "_all");
+  for (const auto& s : node_sets)
+    if (into.node_sets.count(s)) throw MeshError("append: both meshes have a node set named '" + s + "'; rename one of them");
+  for (const auto& s : sets)
+    if (into.side_sets.count(s)) throw MeshError("append: both meshes have a side set named '" + s + "'; rename one of them");
+}
+
 }  // namespace
 
 Mesh generate_box(const BoxSpec& spec) {
+  Mesh mesh;
+  add_box(mesh, spec);
+  return mesh;
+}
+
+std::array<long long, 2> box_size(const BoxSpec& spec) {
+  long long nodes = 1, elements = 1;
+  for (int n : spec.intervals) {
+    if (n < 1) return {0, 0};
+    nodes *= n + 1LL;
+    elements *= n;
+  }
+  return {nodes, elements};
+}
+
+void add_box(Mesh& into, const BoxSpec& spec) {
   const std::string source = "generated box '" + spec.name + "'";
   if (spec.name.empty()) throw MeshError("generated box: the block name is empty; give the box a name");
   const char* axis = "xyz";
@@ -69,10 +104,16 @@ Mesh generate_box(const BoxSpec& spec) {
   for (int d = 0; d < 3; ++d)
     axes[d] = axis_coordinates(spec.origin[d], spec.size[d], spec.intervals[d], spec.grading_ratio,
                                graded_face == 2 * d, graded_face == 2 * d + 1);
-  return generate_grid(spec.name, axes);
+  add_grid(into, spec.name, axes);
 }
 
 Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes) {
+  Mesh mesh;
+  add_grid(mesh, name, axes);
+  return mesh;
+}
+
+void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<double>, 3>& axes) {
   const std::string source = "structured grid '" + name + "'";
   for (int d = 0; d < 3; ++d) {
     if (axes[d].size() < 2) throw MeshError(source + ": an axis needs at least 2 coordinates");
@@ -84,16 +125,18 @@ Mesh generate_grid(const std::string& name, const std::array<std::vector<double>
   const std::int64_t node_count = (nx + 1) * (ny + 1) * (nz + 1);
   const std::int64_t element_count = nx * ny * nz;
   // Arrays are indexed by int: keep 8 * elements and 3 * nodes below INT_MAX.
-  if (element_count > std::numeric_limits<int>::max() / 8 || node_count > std::numeric_limits<int>::max() / 3)
-    throw MeshError(source + ": " + std::to_string(element_count) +
+  const std::int64_t node_offset = mesh.node_count(), element_offset = mesh.element_count();
+  if (element_offset + element_count > std::numeric_limits<int>::max() / 8 ||
+      node_offset + node_count > std::numeric_limits<int>::max() / 3)
+    throw MeshError(source + ": " + std::to_string(element_offset + element_count) +
                     " elements exceed the int index range; use fewer intervals");
+  check_new_names(mesh, {name}, set_names(name));
 
-  Mesh mesh;
-  mesh.coordinates.resize(static_cast<std::size_t>(node_count) * 3);
+  mesh.coordinates.resize(static_cast<std::size_t>(node_offset + node_count) * 3);
   const auto node = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
-    return static_cast<int>(i + (nx + 1) * (j + (ny + 1) * k));
+    return static_cast<int>(node_offset + i + (nx + 1) * (j + (ny + 1) * k));
   };
-  std::size_t p = 0;
+  std::size_t p = static_cast<std::size_t>(node_offset) * 3;
   for (std::int64_t k = 0; k <= nz; ++k)
     for (std::int64_t j = 0; j <= ny; ++j)
       for (std::int64_t i = 0; i <= nx; ++i) {
@@ -102,8 +145,8 @@ Mesh generate_grid(const std::string& name, const std::array<std::vector<double>
         mesh.coordinates[p++] = axes[2][k];
       }
 
-  mesh.connectivity.resize(static_cast<std::size_t>(element_count) * 8);
-  p = 0;
+  mesh.connectivity.resize(static_cast<std::size_t>(element_offset + element_count) * 8);
+  p = static_cast<std::size_t>(element_offset) * 8;
   for (std::int64_t k = 0; k < nz; ++k)
     for (std::int64_t j = 0; j < ny; ++j)
       for (std::int64_t i = 0; i < nx; ++i) {
@@ -118,7 +161,7 @@ Mesh generate_grid(const std::string& name, const std::array<std::vector<double>
         c[7] = node(i, j + 1, k + 1);
         p += 8;
       }
-  mesh.blocks.push_back({name, 0, static_cast<int>(element_count)});
+  mesh.blocks.push_back({name, static_cast<int>(element_offset), static_cast<int>(element_count)});
 
   // Boundary sets. For face f, loop the two in-plane axes; the element and node indices follow
   // from fixing the normal axis at its min or max.
@@ -137,7 +180,7 @@ Mesh generate_grid(const std::string& name, const std::array<std::vector<double>
         ijk[d] = at_max ? n_el[d] - 1 : 0;
         ijk[a] = u;
         ijk[b] = v;
-        sides.push_back({static_cast<int>(ijk[0] + nx * (ijk[1] + ny * ijk[2])), box_face_to_local[f]});
+        sides.push_back({static_cast<int>(element_offset + ijk[0] + nx * (ijk[1] + ny * ijk[2])), box_face_to_local[f]});
       }
     for (std::int64_t u = 0; u <= n_el[a]; ++u)
       for (std::int64_t v = 0; v <= n_el[b]; ++v) {
@@ -151,8 +194,7 @@ Mesh generate_grid(const std::string& name, const std::array<std::vector<double>
   }
   std::vector<int>& all = mesh.node_sets[name + "_all"];
   all.resize(static_cast<std::size_t>(node_count));
-  for (int n = 0; n < static_cast<int>(node_count); ++n) all[n] = n;
-  return mesh;
+  for (int n = 0; n < static_cast<int>(node_count); ++n) all[n] = static_cast<int>(node_offset) + n;
 }
 
 }  // namespace tribex::mesh

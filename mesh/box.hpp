@@ -25,10 +25,19 @@ struct BoxSpec {
 /// NAME_zmin, NAME_zmax; node set NAME_all. Elements are numbered x fastest, then y, then z.
 /// Throws MeshError for a bad spec (intervals < 1, size <= 0, unknown face, ratio < 1).
 Mesh generate_box(const BoxSpec& spec);
+/// The same box added to `into` in place, as append(into, generate_box(spec)) would, without the
+/// copy: its nodes and elements numbered after those already there (reserve room beforehand and a
+/// large box is written once; rank 0's peak memory in a parallel set-up). A block or set name
+/// already in `into` is an error (MeshError), as for append.
+void add_box(Mesh& into, const BoxSpec& spec);
+/// Nodes and elements of the box of `spec` (for reserving room), or zeros for a bad spec.
+std::array<long long, 2> box_size(const BoxSpec& spec);
 
 /// The structured grid behind generate_box: nodes on the tensor product of three strictly
 /// increasing coordinate lists (m), one block NAME and the same sets. Generators that map a grid
 /// (the asperity's spherical tip, AFM surfaces) start from it.
 Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes);
+/// The same grid added to `into` in place (see add_box).
+void add_grid(Mesh& into, const std::string& name, const std::array<std::vector<double>, 3>& axes);
 
 }  // namespace tribex::mesh

@@ -181,19 +181,6 @@ ContactFaces contact_faces(const mesh::Mesh& mesh, const inputs::ContactSpec& sp
   return faces;
 }
 
-std::vector<std::vector<char>> contact_surface_elements(const mesh::Mesh& mesh, const inputs::ContactSpec* spec) {
-  std::vector<std::vector<char>> sets;
-  if (!spec) return sets;
-  for (const auto& s : spec->surfaces) {
-    std::vector<char> marked(static_cast<std::size_t>(mesh.element_count()), 0);
-    for (const auto& set : s.side_sets)
-      if (auto it = mesh.side_sets.find(set); it != mesh.side_sets.end())
-        for (const auto& side : it->second) marked[static_cast<std::size_t>(side.element)] = 1;
-    sets.push_back(std::move(marked));
-  }
-  return sets;
-}
-
 void broadcast_contact_faces(ContactFaces& faces) {
   if (parallel::size() == 1) return;
   std::vector<char> bytes;

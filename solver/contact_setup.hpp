@@ -31,10 +31,6 @@ struct ContactFaces {
 /// The contact faces of `mesh` (the whole mesh: a serial run's, or rank 0's in a parallel run).
 ContactFaces contact_faces(const mesh::Mesh& mesh, const inputs::ContactSpec& spec);
 
-/// [surface][element] 1 for the elements with a face in each contact surface of `spec` (none: empty),
-/// for the partition to share out (parallel/partition.hpp).
-std::vector<std::vector<char>> contact_surface_elements(const mesh::Mesh& mesh, const inputs::ContactSpec* spec);
-
 /// Collective: rank 0's `faces` on every rank.
 void broadcast_contact_faces(ContactFaces& faces);
 

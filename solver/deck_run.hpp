@@ -138,6 +138,7 @@ class DeckRun {
   std::optional<RestartOutput> restart_output_;
   // stage 4
   Clock::time_point loop_start_;
+  double loop_start_time_ = 0.0;  // s of simulated time at loop_start_ (the restart time on a resume)
   bool closing_ = false;
   std::vector<double> row_;
   std::vector<double> globals_;  // results.exo: step, then row_

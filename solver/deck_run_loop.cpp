@@ -42,9 +42,11 @@ void DeckRun::write_restart() {
 std::string DeckRun::progress_text(long n, double t, double error) const {
   const double span = tc_.termination_time - tc_.start_time;
   const double frac = span > 0 ? (t - tc_.start_time) / span : 1.0;
-  const double elapsed = seconds_since(loop_start_);
+  // The rate of this process's loop: a resumed run has covered only t - loop_start_time_ in `elapsed`.
+  const double elapsed = seconds_since(loop_start_), covered = t - loop_start_time_;
   return format("step %ld | t %.4g s | %5.1f%% | ETA %s | dt %.3g s | energy error %.2e", n, t, 100.0 * frac,
-                human_seconds(frac > 0 ? elapsed * (1 - frac) / frac : NAN).c_str(), integrator_->dt(), error);
+                human_seconds(covered > 0 ? elapsed * (tc_.termination_time - t) / covered : NAN).c_str(), integrator_->dt(),
+                error);
 }
 
 void DeckRun::fill_history_row(double t) {
@@ -190,6 +192,7 @@ void DeckRun::loop() {
   contact_seconds_before_ = integrator_->contact_seconds();
   log_.say("running ...");
   loop_start_ = Clock::now();
+  loop_start_time_ = integrator_->time();
   bool stopped_at_step = false;
   try {
     if (!resume_) integrator_->init();

@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "mesh/mesh_error.hpp"
+#include "solver/contact_partition.hpp"
 #include "solver/contact_setup.hpp"
 #include "solver/deck_run.hpp"
 #include "solver/errors.hpp"
@@ -69,7 +70,9 @@ void DeckRun::build_parts() {
       whole.emplace(build_mesh(deck_));
       if (region_.contact) contact = contact_faces(*whole, *region_.contact);
       try {
-        part = parallel::partition_elements(*whole, ranks_, contact_surface_elements(*whole, region_.contact ? &*region_.contact : nullptr));
+        const inputs::ContactSpec* spec = region_.contact ? &*region_.contact : nullptr;
+        part = parallel::partition_elements(*whole, ranks_, contact_surface_elements(*whole, spec),
+                                            contact_element_links(*whole, spec));
       } catch (const std::runtime_error& e) {
         throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
                          "; run with fewer ranks (mpirun -np N)");
@@ -100,10 +103,13 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
   for (int p : part) ++rank_elements[p];
   const auto [fewest, most] = std::minmax_element(rank_elements.begin(), rank_elements.end());
-  log_.say(format("parallel: %d ranks, METIS k-way partition of the element graph%s; %d-%d elements per rank; %d nodes "
-                  "on partition boundaries; every rank builds only its part",
-                  ranks_, region_.contact ? " sharing out the elements under each contact surface" : "", *fewest, *most,
-                  shared));
+  const int cluster = parallel::partition_cluster_size(whole.element_count(), ranks_);
+  const std::string graph = cluster > 1 ? format("graph of k-d clusters of up to %d elements", cluster) : "element graph";
+  log_.say(format("parallel: %d ranks, METIS k-way partition of the %s%s; %d-%d elements per rank; %d nodes on partition "
+                  "boundaries; every rank builds only its part",
+                  ranks_, graph.c_str(),
+                  region_.contact ? " sharing out the elements under each contact surface and keeping facing ones together" : "",
+                  *fewest, *most, shared));
 }
 
 void DeckRun::report_mesh(const Model& model) {

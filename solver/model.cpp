@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "inputs/did_you_mean.hpp"
@@ -91,16 +92,27 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
     m = mesh::read_exodus(spec.database_path);
   } else {
     if (spec.afm_surface) m = build_afm_surface_mesh(*spec.afm_surface);
+    std::vector<mesh::BoxSpec> boxes;
+    long long nodes = m.node_count(), elements = m.element_count();
     for (const auto& box : spec.boxes) {
-      mesh::BoxSpec b;
+      mesh::BoxSpec& b = boxes.emplace_back();
       b.name = box.block_name;
       b.origin = box.origin;
       b.size = box.size;
       b.intervals = box.intervals;
       b.grade_toward = box.grade_toward;
       b.grading_ratio = box.grading_ratio;
-      mesh::append(m, mesh::generate_box(b));
+      const auto [box_nodes, box_elements] = mesh::box_size(b);
+      nodes += box_nodes;
+      elements += box_elements;
     }
+    // The boxes written in place into room reserved for all of them: a large mesh is never copied
+    // (rank 0's peak memory in a parallel set-up, tools/bench/README.md "Counts per rank").
+    if (!boxes.empty() && nodes < std::numeric_limits<int>::max() / 3 && elements < std::numeric_limits<int>::max() / 8) {
+      m.coordinates.reserve(static_cast<std::size_t>(3 * nodes));
+      m.connectivity.reserve(static_cast<std::size_t>(8 * elements));
+    }
+    for (const auto& b : boxes) mesh::add_box(m, b);
     if (spec.asperity) {
       const auto& a = *spec.asperity;
       mesh::AsperitySpec g;

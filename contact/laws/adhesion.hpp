@@ -34,6 +34,7 @@ struct Adhesion {
   static constexpr bool penalty = true;
   static constexpr bool mortar = true;
   static constexpr int state_size = 0;
+  static constexpr bool reads_velocity = false;
 
   static std::optional<LawProblem> check(const LawValues& v) {
     const auto cutoff = v.find("adhesion cutoff"), z0 = v.find("equilibrium separation");

@@ -135,6 +135,20 @@ inline const Adhesion* adhesion_of(const ContactLaw& law) {
       },
       law);
 }
+/// Whether the law reads the velocities of its nodes (PassView::v): every law that does not declare
+/// `static constexpr bool reads_velocity = false`. A distributed run sends its ghost nodes' velocities
+/// only for such laws (ContactManager::ghost_fields).
+inline bool reads_velocity(const ContactLaw& law) {
+  return std::visit(
+      [](const auto& l) {
+        using L = std::decay_t<decltype(l)>;
+        if constexpr (requires { L::reads_velocity; })
+          return L::reads_velocity;
+        else
+          return true;
+      },
+      law);
+}
 /// Whether the law records tangential pairs (has an end_pass hook).
 inline bool has_tangential_pairs(const ContactLaw& law) {
   return std::visit([](const auto& l) { return requires(PassView& view) { l.end_pass(view); }; }, law);

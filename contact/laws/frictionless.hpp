@@ -17,6 +17,7 @@ struct Frictionless {
   static constexpr bool penalty = true;    // penalty normal contact for g < 0
   static constexpr bool mortar = true;     // also with enforcement = mortar
   static constexpr int state_size = 0;     // doubles of state per slave node
+  static constexpr bool reads_velocity = false;  // positions only (reads_velocity in contact_law.hpp)
   static std::optional<LawProblem> check(const LawValues&) { return std::nullopt; }
   static Frictionless make(const LawValues&) { return {}; }
   std::string describe() const { return "frictionless penalty contact"; }

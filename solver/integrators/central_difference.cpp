@@ -56,6 +56,7 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
       contact_region_ = std::make_unique<parallel::ContactRegion>(model.domain);
       const auto& owned = model.domain.surface_owned();
       model.contact->distribute(std::vector<char>(owned.begin(), owned.end()), contact_region_.get(), x_.data());
+      contact_region_->set_fields(model.contact->ghost_fields());
       if (model.contact->owner_computes()) contact_partial_.assign(n3, 0.0);
     }
   }

@@ -12,7 +12,6 @@
 namespace tribex::solver::parallel {
 
 namespace {
-constexpr int kRowValues = 9;  // x, v, f of a ghost row
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
 
@@ -31,6 +30,12 @@ ContactRegion::ContactRegion(Domain& domain) : domain_(domain) {
   recv_offset_.assign(static_cast<std::size_t>(members_) + 1, 0);
   present_.assign(local.size(), 0);
   located_.reserve(64);
+}
+
+void ContactRegion::set_fields(contact::ContactManager::GhostFields fields) {
+  fields_ = fields;
+  row_values_ = 3 + (fields.velocity ? 3 : 0) + (fields.other_force ? 3 : 0);
+  size_buffers();
 }
 
 ContactRegion::~ContactRegion() {
@@ -88,10 +93,12 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
     grid.n[i] = std::clamp(static_cast<int>(std::floor((-box[3 + i] - box[i]) / grid.cell)) + 1, 1, kMaxCells + 1);
   const int cells = grid.n[0] * grid.n[1] * grid.n[2];
   const int words = (cells + 63) / 64;
-  // Each member's box of its surface nodes, and the cells they occupy (MPI_Allgather of a bit set).
+  // Each member's box of the surface nodes its region grows from (ContactManager::seeds_region: in
+  // owner-computes runs its counted slave nodes, else every node it holds), and the cells they occupy
+  // (MPI_Allgather of a bit set).
   double held_box[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
   for (std::size_t k = 0; k < local.size(); ++k)
-    if (local[k] >= 0)
+    if (local[k] >= 0 && manager.seeds_region(static_cast<int>(k)))
       for (int i = 0; i < 3; ++i) {
         held_box[i] = std::min(held_box[i], xg[3 * k + i]);
         held_box[3 + i] = std::max(held_box[3 + i], xg[3 * k + i]);
@@ -105,7 +112,7 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
   mine.assign(static_cast<std::size_t>(words), 0);
   occupied.assign(static_cast<std::size_t>(words) * members_, 0);
   for (std::size_t k = 0; k < local.size(); ++k)
-    if (local[k] >= 0) {
+    if (local[k] >= 0 && manager.seeds_region(static_cast<int>(k))) {
       const int c = grid.index(xg + 3 * k);
       mine[static_cast<std::size_t>(c) / 64] |= std::uint64_t{1} << (c % 64);
     }
@@ -178,8 +185,8 @@ void ContactRegion::size_buffers() {
   const auto& local = domain_.surface_local();
   for (std::size_t k = 0; k < local.size(); ++k) present_[k] = local[k] >= 0;
   for (int k : recv_node_) present_[static_cast<std::size_t>(k)] = 1;
-  send_.assign(kRowValues * send_node_.size(), 0.0);
-  recv_.assign(kRowValues * recv_node_.size(), 0.0);
+  send_.assign(static_cast<std::size_t>(row_values_) * send_node_.size(), 0.0);
+  recv_.assign(static_cast<std::size_t>(row_values_) * recv_node_.size(), 0.0);
   requests_.reserve(2 * static_cast<std::size_t>(members_));
 }
 
@@ -222,23 +229,23 @@ void ContactRegion::return_ghost_forces(double* fg) {
 void ContactRegion::fill_ghosts(double* xg, double* vg, double* fg) {
   if (comm_ == MPI_COMM_NULL) return;
   const double start = now();
-  constexpr int K = kRowValues;
+  // A row: x, then v and f where the passes read them.
+  const std::size_t K = static_cast<std::size_t>(row_values_);
+  double* fields[3] = {xg, fields_.velocity ? vg : nullptr, fields_.other_force ? fg : nullptr};
   for (std::size_t j = 0; j < send_node_.size(); ++j) {
     const std::size_t k = static_cast<std::size_t>(send_node_[j]);
-    for (int i = 0; i < 3; ++i) {
-      send_[K * j + i] = xg[3 * k + i];
-      send_[K * j + 3 + i] = vg[3 * k + i];
-      send_[K * j + 6 + i] = fg[3 * k + i];
-    }
+    double* row = &send_[K * j];
+    for (const double* field : fields)
+      if (field)
+        for (int i = 0; i < 3; ++i) *row++ = field[3 * k + i];
   }
-  exchange(K);
+  exchange(row_values_);
   for (std::size_t j = 0; j < recv_node_.size(); ++j) {
     const std::size_t k = static_cast<std::size_t>(recv_node_[j]);
-    for (int i = 0; i < 3; ++i) {
-      xg[3 * k + i] = recv_[K * j + i];
-      vg[3 * k + i] = recv_[K * j + 3 + i];
-      fg[3 * k + i] = recv_[K * j + 6 + i];
-    }
+    const double* row = &recv_[K * j];
+    for (double* field : fields)
+      if (field)
+        for (int i = 0; i < 3; ++i) field[3 * k + i] = *row++;
   }
   ++domain_.traffic.surface_gathers;
   domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * send_.size());

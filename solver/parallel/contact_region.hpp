@@ -14,8 +14,9 @@
 //     is the reference). The cells because a rank's surface nodes often lie in two patches (a piece
 //     of each surface), whose common box would take in much of both surfaces; the box because it is
 //     the tighter test where the cells are coarse against the model (small models);
-//   - fill_ghosts (every force evaluation): positions, velocities and non-contact forces of the
-//     ghost nodes from their owners, point to point into buffers sized at the refresh;
+//   - fill_ghosts (every force evaluation): positions of the ghost nodes from their owners, and their
+//     velocities and non-contact forces where the passes read them (ContactManager::ghost_fields),
+//     point to point into buffers sized at the refresh;
 //   - the ContactReductions the manager combines its totals with (MPI_Allreduce).
 // The reductions take every rank (MPI_COMM_WORLD): the totals are wanted on rank 0, which writes the
 // history, and by every rank's run guards.
@@ -42,10 +43,13 @@ class ContactRegion final : public contact::ContactReductions {
   ContactRegion(const ContactRegion&) = delete;
   ContactRegion& operator=(const ContactRegion&) = delete;
 
+  /// What a ghost row carries besides the position (from the manager, after its distribute).
+  void set_fields(contact::ContactManager::GhostFields fields);
   /// The region of the positions `xg` [surface node][3] (this rank's rows current): ghost lists,
   /// present(), and the laws' state of the nodes sent, from `manager` to the other ranks' managers.
   void refresh(const double* xg, contact::ContactManager& manager);
-  /// Ghost rows of xg, vg, fg [surface node][3] from their owners (this rank's own rows current).
+  /// Ghost rows of xg, and of vg and fg where set_fields asked for them, [surface node][3], from their
+  /// owners (this rank's own rows current).
   void fill_ghosts(double* xg, double* vg, double* fg);
   /// Owner-computes contact (ContactManager::owner_computes): the forces fg [surface node][3] this rank
   /// put on its ghost nodes go back to their owners, who add them to their rows (in member order).
@@ -69,6 +73,8 @@ class ContactRegion final : public contact::ContactReductions {
   void exchange(int width, bool reverse = false);
 
   Domain& domain_;
+  contact::ContactManager::GhostFields fields_;
+  int row_values_ = 9;  // doubles per ghost row: x, and v and f where fields_ asks
   // The ranks holding surface nodes (MPI_COMM_NULL on the others, which have no region); "member" below
   // is a rank of this communicator.
   MPI_Comm comm_ = MPI_COMM_NULL;

@@ -3,20 +3,34 @@
 
 #include <metis.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
-namespace tribex::solver::parallel {
+#include "solver/parallel/element_clusters.hpp"
 
-std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std::vector<std::vector<char>>& balanced) {
+namespace tribex::solver::parallel {
+namespace {
+
+// Above this many elements the partition is computed on clusters of elements (element_clusters.hpp)
+// rather than on the element graph, whose METIS workspace would be rank 0's peak memory; the
+// clusters are sized for a graph of about kClusterGraph vertices, at least kClustersPerPart per part.
+constexpr int kClusterAbove = 262144;
+constexpr int kClusterGraph = 65536;
+constexpr int kClustersPerPart = 16;
+
+// The graph METIS partitions: CSR, optional vertex weights [vertex][constraint] and edge weights.
+struct Graph {
+  idx_t vertices = 0, constraints = 1;
+  std::vector<idx_t> xadj, adjncy, vertex_weight, edge_weight;
+};
+
+// The element dual graph (neighbours share a face, 4 nodes) with each link added as an edge both
+// ways, unless its elements already are neighbours.
+Graph element_graph(const mesh::Mesh& mesh, const std::vector<int>& links) {
   const int ne = mesh.element_count();
-  std::vector<int> part(static_cast<std::size_t>(ne), 0);
-  if (parts <= 1 || ne == 0) return part;
-  if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
   idx_t n_elements = ne, n_nodes = mesh.node_count(), n_common = 4, numbering = 0;
-  // The dual graph from the connectivity as it is where idx_t is int (METIS reads it, does not write
-  // it), else from a copy; the element offsets are freed before the partitioning, whose workspace is
-  // rank 0's peak memory in a parallel set-up (tools/bench/README.md "Counts per rank").
+  // The connectivity as it is where idx_t is int (METIS reads it, does not write it), else a copy.
   std::vector<idx_t> eptr(static_cast<std::size_t>(ne) + 1), copy;
   for (int e = 0; e <= ne; ++e) eptr[e] = 8 * e;
   idx_t* eind = nullptr;
@@ -31,34 +45,90 @@ std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std
     throw std::runtime_error("METIS_MeshToDual failed");
   eptr = {};
   copy = {};
-  // Vertex weights: 1 per element for the work, and per balanced set 1 on its elements (multi-constraint
-  // k-way: every part gets about 1/parts of each).
-  std::vector<const std::vector<char>*> sets;
-  for (const auto& set : balanced) {
-    long marked = 0;
-    for (char c : set) marked += c != 0;
-    if (set.size() == static_cast<std::size_t>(ne) && marked >= parts) sets.push_back(&set);
+  std::vector<int> extra_offset(static_cast<std::size_t>(ne) + 1, 0), extra;
+  auto neighbours = [&](int a, int b) { return std::find(adjncy + xadj[a], adjncy + xadj[a + 1], b) != adjncy + xadj[a + 1]; };
+  for (std::size_t k = 0; k + 1 < links.size(); k += 2)
+    if (!neighbours(links[k], links[k + 1])) {
+      ++extra_offset[links[k] + 1];
+      ++extra_offset[links[k + 1] + 1];
+    }
+  for (int e = 0; e < ne; ++e) extra_offset[e + 1] += extra_offset[e];
+  extra.assign(static_cast<std::size_t>(extra_offset[ne]), 0);
+  std::vector<int> fill(extra_offset.begin(), extra_offset.end() - 1);
+  for (std::size_t k = 0; k + 1 < links.size(); k += 2)
+    if (!neighbours(links[k], links[k + 1])) {
+      extra[fill[links[k]]++] = links[k + 1];
+      extra[fill[links[k + 1]]++] = links[k];
+    }
+  Graph g;
+  g.vertices = ne;
+  g.xadj.assign(static_cast<std::size_t>(ne) + 1, 0);
+  g.adjncy.reserve(static_cast<std::size_t>(xadj[ne]) + extra.size());
+  for (int e = 0; e < ne; ++e) {
+    g.adjncy.insert(g.adjncy.end(), adjncy + xadj[e], adjncy + xadj[e + 1]);
+    g.adjncy.insert(g.adjncy.end(), extra.begin() + extra_offset[e], extra.begin() + extra_offset[e + 1]);
+    g.xadj[e + 1] = static_cast<idx_t>(g.adjncy.size());
   }
-  idx_t n_constraints = 1 + static_cast<idx_t>(sets.size()), n_parts = parts, cut = 0;
-  std::vector<idx_t> weights;
-  if (!sets.empty()) {
-    weights.assign(static_cast<std::size_t>(ne) * n_constraints, 0);
+  METIS_Free(xadj);
+  METIS_Free(adjncy);
+  return g;
+}
+
+}  // namespace
+
+int partition_cluster_size(int elements, int parts) {
+  if (elements <= kClusterAbove || parts <= 1) return 1;
+  const int size = (elements + kClusterGraph - 1) / kClusterGraph;
+  return std::max(1, std::min(size, elements / (kClustersPerPart * parts)));
+}
+
+std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std::vector<std::vector<char>>& balanced,
+                                    const std::vector<int>& links, int cluster_size) {
+  const int ne = mesh.element_count();
+  std::vector<int> part(static_cast<std::size_t>(ne), 0);
+  if (parts <= 1 || ne == 0) return part;
+  if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
+  // The balanced sets METIS is given (one more constraint each): those with at least a mark per part.
+  std::vector<const std::vector<char>*> sets;
+  for (const auto& set : balanced)
+    if (set.size() == static_cast<std::size_t>(ne) && std::count_if(set.begin(), set.end(), [](char c) { return c != 0; }) >= parts)
+      sets.push_back(&set);
+  if (cluster_size <= 0) cluster_size = partition_cluster_size(ne, parts);
+  Graph g;
+  std::vector<int> cluster_of;  // [element] the graph's vertex, when it is a cluster graph
+  if (cluster_size > 1) {
+    ElementClusters clusters = cluster_elements(mesh, cluster_size, links);
+    if (clusters.count < parts)
+      throw std::runtime_error(std::to_string(clusters.count) + " clusters of elements for " + std::to_string(parts) + " parts");
+    g.vertices = clusters.count;
+    g.xadj.assign(clusters.offset.begin(), clusters.offset.end());
+    g.adjncy.assign(clusters.neighbour.begin(), clusters.neighbour.end());
+    g.edge_weight.assign(clusters.weight.begin(), clusters.weight.end());
+    cluster_of = std::move(clusters.of_element);
+  } else {
+    g = element_graph(mesh, links);
+  }
+  // Vertex weights: the elements of the vertex for the work, and per balanced set its marked elements
+  // (multi-constraint k-way: every part gets about 1/parts of each). Unweighted: METIS's unit weights.
+  g.constraints = 1 + static_cast<idx_t>(sets.size());
+  if (!sets.empty() || !cluster_of.empty()) {
+    g.vertex_weight.assign(static_cast<std::size_t>(g.vertices) * g.constraints, 0);
     for (int e = 0; e < ne; ++e) {
-      weights[static_cast<std::size_t>(e) * n_constraints] = 1;
-      for (std::size_t c = 0; c < sets.size(); ++c)
-        weights[static_cast<std::size_t>(e) * n_constraints + 1 + c] = (*sets[c])[e] != 0;
+      const std::size_t v = cluster_of.empty() ? static_cast<std::size_t>(e) : static_cast<std::size_t>(cluster_of[e]);
+      g.vertex_weight[v * g.constraints] += 1;
+      for (std::size_t c = 0; c < sets.size(); ++c) g.vertex_weight[v * g.constraints + 1 + c] += (*sets[c])[e] != 0;
     }
   }
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_SEED] = 1;         // the same partition on every rank and every run
-  std::vector<idx_t> result(static_cast<std::size_t>(ne));
-  const int status = METIS_PartGraphKway(&n_elements, &n_constraints, xadj, adjncy, weights.empty() ? nullptr : weights.data(),
-                                         nullptr, nullptr, &n_parts, nullptr, nullptr, options, &cut, result.data());
-  METIS_Free(xadj);
-  METIS_Free(adjncy);
+  options[METIS_OPTION_SEED] = 1;  // the same partition on every run
+  idx_t n_parts = parts, cut = 0;
+  std::vector<idx_t> result(static_cast<std::size_t>(g.vertices));
+  auto data = [](std::vector<idx_t>& v) { return v.empty() ? nullptr : v.data(); };
+  const int status = METIS_PartGraphKway(&g.vertices, &g.constraints, g.xadj.data(), g.adjncy.data(), data(g.vertex_weight),
+                                         nullptr, data(g.edge_weight), &n_parts, nullptr, nullptr, options, &cut, result.data());
   if (status != METIS_OK) throw std::runtime_error("METIS_PartGraphKway failed (status " + std::to_string(status) + ")");
-  for (int e = 0; e < ne; ++e) part[e] = static_cast<int>(result[e]);
+  for (int e = 0; e < ne; ++e) part[e] = static_cast<int>(result[cluster_of.empty() ? e : cluster_of[e]]);
   return part;
 }
 

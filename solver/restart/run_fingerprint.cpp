@@ -15,9 +15,10 @@ std::string from_codes(const std::vector<long long>& codes) {
   return text;
 }
 std::string mesh_sha256(const mesh::Mesh& m) {
-  std::string bytes(reinterpret_cast<const char*>(m.coordinates.data()), m.coordinates.size() * sizeof(double));
-  bytes.append(reinterpret_cast<const char*>(m.connectivity.data()), m.connectivity.size() * sizeof(int));
-  return inputs::sha256_hex(bytes);
+  inputs::Sha256 hash;  // the arrays' bytes, not a copy of them (rank 0 hashes the whole mesh)
+  hash.update({reinterpret_cast<const char*>(m.coordinates.data()), m.coordinates.size() * sizeof(double)});
+  hash.update({reinterpret_cast<const char*>(m.connectivity.data()), m.connectivity.size() * sizeof(int)});
+  return hash.hex();
 }
 
 std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash) {

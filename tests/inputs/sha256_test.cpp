@@ -30,3 +30,17 @@ TEST(Sha256, FileEqualsBytesAndMissingFileThrows) {
   std::filesystem::remove(path);
   EXPECT_THROW(sha256_file(path.string()), std::runtime_error);
 }
+
+TEST(Sha256, IncrementalEqualsOneStringAtEveryChunkSize) {
+  // The FIPS two-block message and a million 'a' fed in pieces of 1 to 200 bytes: the same digests.
+  const std::string two_blocks = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
+  for (std::size_t piece : {1u, 3u, 55u, 56u, 63u, 64u, 65u, 200u}) {
+    tribex::inputs::Sha256 hash;
+    for (std::size_t at = 0; at < two_blocks.size(); at += piece) hash.update(std::string_view(two_blocks).substr(at, piece));
+    EXPECT_EQ(hash.hex(), "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1") << piece;
+  }
+  const std::string million(1000000, 'a');
+  tribex::inputs::Sha256 hash;
+  for (std::size_t at = 0; at < million.size(); at += 4099) hash.update(std::string_view(million).substr(at, 4099));
+  EXPECT_EQ(hash.hex(), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}

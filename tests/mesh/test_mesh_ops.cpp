@@ -139,5 +139,42 @@ TEST(MeshOps, AppendRenumbers) {
   EXPECT_THROW(append(m, other), MeshError);  // names clash
 }
 
+TEST(MeshOps, AddBoxInPlaceEqualsAppend) {
+  BoxSpec a;
+  a.name = "sub";
+  a.intervals = {3, 2, 2};
+  BoxSpec b;
+  b.name = "tip";
+  b.origin = {0.25, 0.25, 1.0};
+  b.size = {0.5, 0.5, 0.5};
+  b.intervals = {2, 2, 3};
+  b.grade_toward = "zmin";
+  b.grading_ratio = 1.2;
+  Mesh appended = generate_box(a);
+  append(appended, generate_box(b));
+  Mesh in_place;
+  EXPECT_EQ(box_size(a), (std::array<long long, 2>{36, 12}));
+  in_place.coordinates.reserve(3 * (box_size(a)[0] + box_size(b)[0]));
+  const double* storage = in_place.coordinates.data();
+  add_box(in_place, a);
+  add_box(in_place, b);
+  EXPECT_EQ(in_place.coordinates.data(), storage) << "the reserved room is used, nothing reallocated";
+  EXPECT_EQ(in_place.coordinates, appended.coordinates);
+  EXPECT_EQ(in_place.connectivity, appended.connectivity);
+  EXPECT_EQ(in_place.node_sets, appended.node_sets);
+  ASSERT_EQ(in_place.blocks.size(), 2u);
+  EXPECT_EQ(in_place.blocks[1].first_element, 12);
+  ASSERT_EQ(in_place.side_sets.size(), appended.side_sets.size());
+  for (const auto& [name, sides] : appended.side_sets) {
+    ASSERT_EQ(in_place.side_sets.at(name).size(), sides.size()) << name;
+    for (std::size_t k = 0; k < sides.size(); ++k) {
+      EXPECT_EQ(in_place.side_sets.at(name)[k].element, sides[k].element) << name;
+      EXPECT_EQ(in_place.side_sets.at(name)[k].face, sides[k].face) << name;
+    }
+  }
+  EXPECT_THROW(add_box(in_place, b), MeshError);  // names clash, as for append
+  EXPECT_EQ(in_place.element_count(), 24) << "a clash adds nothing";
+}
+
 }  // namespace
 }  // namespace tribex::mesh

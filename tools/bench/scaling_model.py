@@ -16,8 +16,9 @@ Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nod
                 (sqrt(share) + 2 h)^2, at most S
   surface data  replicated: MPI_Allgatherv of 72 B x all surface nodes to every rank
                 (recursive doubling: log2 N latencies + the whole surface over the link);
-                distributed: the ghost rows of the region's band (both surfaces, 72 B each, and as much
-                again for the forces sent back) from <= 8 neighbours
+                distributed: the ghost rows of the region's band (both surfaces) from <= 8 neighbours:
+                owner computes 24 B a row (positions; the frictionless and adhesive laws read nothing
+                else) and 24 B of force sent back; --redundant 72 B (positions, velocities, forces)
   reductions    the stable step every 10 steps: one MPI_Allreduce, log2 N latencies
 Memory per rank: replicated set-up holds the whole model on every rank (M_1, measured);
 distributed: (M_1 - M_0) / N + M_0, M_0 the part that does not divide (code, libraries, MPI buffers).
@@ -50,7 +51,7 @@ def step_costs(n, a):
     share = a.slave_nodes / min(n, max(1.0, a.slave_nodes / a.slave_nodes_per_rank))
     region = a.slave_nodes if n == 1 else min(a.slave_nodes, (math.sqrt(share) + 2 * a.halo_nodes) ** 2)
     contact_dist = (region if a.redundant else share) * a.ns_slave_node * 1e-9
-    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 2 * (region - share) * (72 if a.redundant else 96) / bw
+    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 2 * (region - share) * (72 if a.redundant else 48) / bw
     mem_rep = a.serial_rss_mb * 1e6
     mem_dist = (a.serial_rss_mb - a.fixed_rss_mb) * 1e6 / n + a.fixed_rss_mb * 1e6
     rep = {"elements": elements, "halo": halo, "reductions": reduce, "contact": contact_rep, "surface": gather}

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+#include "solver/parallel/element_clusters.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+namespace tribex::solver::parallel {
+namespace {
+
+constexpr int kLinkWeight = 4;  // a link weighs as much as a shared face (its four node incidences)
+
+// k-d tree leaves over the element centroids, numbered left to right; `order` ends grouped by leaf.
+void split_into_leaves(const mesh::Mesh& mesh, int size, std::vector<int>& order, ElementClusters& out) {
+  const int ne = mesh.element_count();
+  std::vector<float> centre(3 * static_cast<std::size_t>(ne), 0.0f);  // single precision: 12 B per element
+  for (int e = 0; e < ne; ++e)
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i)
+        centre[3 * static_cast<std::size_t>(e) + i] += static_cast<float>(
+            0.125 * mesh.coordinates[3 * static_cast<std::size_t>(mesh.connectivity[8 * static_cast<std::size_t>(e) + a]) + i]);
+  order.resize(static_cast<std::size_t>(ne));
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<std::pair<int, int>> stack{{0, ne}};
+  while (!stack.empty()) {
+    const auto [begin, end] = stack.back();
+    stack.pop_back();
+    if (end - begin <= size) {
+      for (int k = begin; k < end; ++k) out.of_element[order[k]] = out.count;
+      ++out.count;
+      continue;
+    }
+    float lo[3] = {centre[3 * order[begin]], centre[3 * order[begin] + 1], centre[3 * order[begin] + 2]};
+    float hi[3] = {lo[0], lo[1], lo[2]};
+    for (int k = begin; k < end; ++k)
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], centre[3 * static_cast<std::size_t>(order[k]) + i]);
+        hi[i] = std::max(hi[i], centre[3 * static_cast<std::size_t>(order[k]) + i]);
+      }
+    int axis = 0;
+    for (int i = 1; i < 3; ++i)
+      if (hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
+    const int mid = begin + (end - begin) / 2;
+    // Ties by element number: the same leaves on every machine for the same mesh.
+    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end, [&](int a, int b) {
+      const float ca = centre[3 * static_cast<std::size_t>(a) + axis], cb = centre[3 * static_cast<std::size_t>(b) + axis];
+      return ca < cb || (ca == cb && a < b);
+    });
+    stack.emplace_back(mid, end);    // right, taken second
+    stack.emplace_back(begin, mid);  // left, taken first: leaves numbered left to right
+  }
+}
+
+}  // namespace
+
+ElementClusters cluster_elements(const mesh::Mesh& mesh, int size, const std::vector<int>& links) {
+  const int ne = mesh.element_count(), nn = mesh.node_count();
+  ElementClusters out;
+  out.of_element.assign(static_cast<std::size_t>(ne), 0);
+  std::vector<int> order;
+  split_into_leaves(mesh, std::max(size, 1), order, out);
+  // The links, both ways, by element.
+  std::vector<std::pair<int, int>> linked;
+  linked.reserve(links.size());
+  for (std::size_t k = 0; k + 1 < links.size(); k += 2) {
+    linked.emplace_back(links[k], links[k + 1]);
+    linked.emplace_back(links[k + 1], links[k]);
+  }
+  std::sort(linked.begin(), linked.end());
+  // Cluster by cluster (order is grouped by cluster, ascending): each node belongs to the first
+  // cluster that reaches it; a later cluster reaching it records an edge to that one. So every edge is
+  // found once, from its higher cluster: `lower` holds each cluster's edges to lower clusters.
+  std::vector<int> first_cluster(static_cast<std::size_t>(nn), -1);
+  std::vector<int> lower_offset(static_cast<std::size_t>(out.count) + 1, 0);
+  std::vector<std::pair<int, int>> lower;  // (neighbour, weight)
+  std::size_t k = 0;
+  for (int c = 0; c < out.count; ++c) {
+    const std::size_t begin = lower.size();
+    auto add = [&](int other, int w) {
+      for (std::size_t j = begin; j < lower.size(); ++j)
+        if (lower[j].first == other) {
+          lower[j].second += w;
+          return;
+        }
+      lower.emplace_back(other, w);
+    };
+    for (; k < order.size() && out.of_element[order[k]] == c; ++k) {
+      const int e = order[k];
+      for (int a = 0; a < 8; ++a) {
+        int& first = first_cluster[mesh.connectivity[8 * static_cast<std::size_t>(e) + a]];
+        if (first < 0)
+          first = c;
+        else if (first != c)
+          add(first, 1);
+      }
+      for (auto it = std::lower_bound(linked.begin(), linked.end(), std::make_pair(e, -1)); it != linked.end() && it->first == e; ++it)
+        if (const int other = out.of_element[it->second]; other < c) add(other, kLinkWeight);
+    }
+    lower_offset[c + 1] = static_cast<int>(lower.size());
+  }
+  first_cluster = {};
+  order = {};
+  // Both directions.
+  out.offset.assign(static_cast<std::size_t>(out.count) + 1, 0);
+  for (int c = 0; c < out.count; ++c)
+    for (int j = lower_offset[c]; j < lower_offset[c + 1]; ++j) {
+      ++out.offset[c + 1];
+      ++out.offset[lower[j].first + 1];
+    }
+  for (int c = 0; c < out.count; ++c) out.offset[c + 1] += out.offset[c];
+  out.neighbour.assign(static_cast<std::size_t>(out.offset[out.count]), 0);
+  out.weight.assign(out.neighbour.size(), 0);
+  std::vector<int> fill(out.offset.begin(), out.offset.end() - 1);
+  for (int c = 0; c < out.count; ++c)
+    for (int j = lower_offset[c]; j < lower_offset[c + 1]; ++j) {
+      const auto [other, w] = lower[j];
+      out.neighbour[fill[c]] = other;
+      out.weight[fill[c]++] = w;
+      out.neighbour[fill[other]] = c;
+      out.weight[fill[other]++] = w;
+    }
+  return out;
+}
+
+}  // namespace tribex::solver::parallel
