@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <exception>
 
+#include <malloc.h>
+
 #include "mesh/mesh_error.hpp"
 #include "solver/contact_partition.hpp"
 #include "solver/contact_setup.hpp"
@@ -66,6 +68,11 @@ void DeckRun::build_parts() {
   ContactFaces contact;
   std::exception_ptr error;
   if (root_) {
+    // Arrays of 1 MB and more mapped and unmapped one by one, so that each one freed goes back to the
+    // system at once: glibc's default threshold grows with the first large free (up to 32 MB), after
+    // which the serial stage's temporaries stayed resident and added up (tools/bench/README.md
+    // "Counts per rank"). The loop allocates nothing, so it does not feel this.
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
     try {
       whole.emplace(build_mesh(deck_));
       if (region_.contact) contact = contact_faces(*whole, *region_.contact);

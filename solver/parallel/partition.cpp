@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "solver/parallel/element_clusters.hpp"
 
@@ -101,9 +102,17 @@ std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std
     if (clusters.count < parts)
       throw std::runtime_error(std::to_string(clusters.count) + " clusters of elements for " + std::to_string(parts) + " parts");
     g.vertices = clusters.count;
-    g.xadj.assign(clusters.offset.begin(), clusters.offset.end());
-    g.adjncy.assign(clusters.neighbour.begin(), clusters.neighbour.end());
-    g.edge_weight.assign(clusters.weight.begin(), clusters.weight.end());
+    // Moved where idx_t is int (no second copy of the graph on rank 0), else converted.
+    auto take = [](std::vector<int>& from, std::vector<idx_t>& to) {
+      if constexpr (std::is_same_v<idx_t, int>)
+        to = std::move(from);
+      else
+        to.assign(from.begin(), from.end());
+      from = {};
+    };
+    take(clusters.offset, g.xadj);
+    take(clusters.neighbour, g.adjncy);
+    take(clusters.weight, g.edge_weight);
     cluster_of = std::move(clusters.of_element);
   } else {
     g = element_graph(mesh, links);
