@@ -9,18 +9,14 @@
 #include <set>
 
 #include "mesh/box.hpp"
+#include "cube_mesh.hpp"
 #include "solver/parallel/element_clusters.hpp"
 #include "solver/parallel/partition.hpp"
 
 using namespace tribex;
+using tribex::test::cube_mesh;
 
 namespace {
-
-mesh::Mesh box(int n) {
-  mesh::BoxSpec spec;
-  spec.intervals = {n, n, n};
-  return mesh::generate_box(spec);
-}
 
 // Nodes held by more than one part.
 int boundary_nodes(const mesh::Mesh& m, const std::vector<int>& part) {
@@ -33,7 +29,7 @@ int boundary_nodes(const mesh::Mesh& m, const std::vector<int>& part) {
 }  // namespace
 
 TEST(ElementClusters, KdLeavesOfACubeAreCubesAndTheGraphIsSymmetric) {
-  const mesh::Mesh m = box(8);
+  const mesh::Mesh m = cube_mesh(8);
   const auto c = solver::parallel::cluster_elements(m, 8);
   ASSERT_EQ(c.count, 64);
   // Each leaf: 8 elements forming a 2 x 2 x 2 cube (element (i,j,k) = i + 8 (j + 8 k)).
@@ -100,7 +96,7 @@ TEST(ElementClusters, LinksMakeClustersNeighbours) {
 }
 
 TEST(ElementClusters, PartitionOnClustersIsBalancedAndNearTheElementGraphs) {
-  const mesh::Mesh m = box(16);
+  const mesh::Mesh m = cube_mesh(16);
   for (int parts : {2, 4, 8}) {
     const auto clustered = solver::parallel::partition_elements(m, parts, {}, {}, 8);
     const auto elements = solver::parallel::partition_elements(m, parts);

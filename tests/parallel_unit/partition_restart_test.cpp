@@ -14,20 +14,16 @@
 #include <string>
 
 #include "mesh/box.hpp"
+#include "cube_mesh.hpp"
 #include "solver/output/history_writer.hpp"
 #include "solver/parallel/domain.hpp"
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/state_archive.hpp"
 
 using namespace tribex;
+using tribex::test::cube_mesh;
 
 namespace {
-
-mesh::Mesh box(int n) {
-  mesh::BoxSpec spec;
-  spec.intervals = {n, n, n};
-  return mesh::generate_box(spec);
-}
 
 std::filesystem::path temp_dir(const std::string& name) {
   auto dir = std::filesystem::temp_directory_path() / ("tribex_parallel_unit_" + name);
@@ -39,13 +35,13 @@ std::filesystem::path temp_dir(const std::string& name) {
 }  // namespace
 
 TEST(Partition, OnePartIsAllZeros) {
-  const auto part = solver::parallel::partition_elements(box(4), 1);
+  const auto part = solver::parallel::partition_elements(cube_mesh(4), 1);
   ASSERT_EQ(part.size(), 64u);
   EXPECT_EQ(std::count(part.begin(), part.end(), 0), 64);
 }
 
 TEST(Partition, KwayPartsAreBalancedAndRepeatable) {
-  const auto m = box(10);
+  const auto m = cube_mesh(10);
   for (int parts : {2, 4}) {
     const auto a = solver::parallel::partition_elements(m, parts);
     const auto b = solver::parallel::partition_elements(m, parts);
@@ -59,7 +55,7 @@ TEST(Partition, KwayPartsAreBalancedAndRepeatable) {
 }
 
 TEST(Partition, MorePartsThanElementsIsAnError) {
-  EXPECT_THROW(solver::parallel::partition_elements(box(1), 2), std::runtime_error);
+  EXPECT_THROW(solver::parallel::partition_elements(cube_mesh(1), 2), std::runtime_error);
 }
 
 TEST(Domain, SerialDomainIsTheIdentity) {
