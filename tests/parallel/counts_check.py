@@ -17,7 +17,11 @@ runs DECK (a contact deck) on N ranks and checks, from OUT/summary.json:
   - contact (one interaction pass): one evaluation per step plus the initial one, each a full search
     or a reuse of the candidates, plus the set-up search; pairs evaluated > 0; every rank searches at
     the same steps;
-  - peak RSS > 0 and at the close >= at the end of set-up.
+  - peak RSS > 0 and at the close >= at the end of set-up;
+  - with --scaling (issue 25's acceptance on a large model with owner-computes contact, e.g.
+    tools/bench/counts_indenter.i at 16 ranks): every rank's peak RSS at most 1.3 x the one-rank
+    peak / N + 100 MB; the largest rank's contact pairs at most twice the even share (one-rank pairs
+    / N), and all ranks together exactly the one-rank pairs (each slave node computed once).
 """
 import argparse
 import json
@@ -34,6 +38,7 @@ def main():
     ap.add_argument("deck")
     ap.add_argument("out")
     ap.add_argument("--ranks", type=int, default=2)
+    ap.add_argument("--scaling", action="store_true", help="also the per-rank memory and pairs falling as 1/N")
     a = ap.parse_args()
     shutil.rmtree(a.out, ignore_errors=True)
 
@@ -85,6 +90,19 @@ def main():
                "a rank evaluating more pairs than the one-rank run")
         expect(sum(r["contact_pairs_per_step"] for r in rc) >= whole["contact_pairs_per_step"],
                "fewer pairs over all ranks than on one rank")
+        if a.scaling:
+            target = 1.3 * whole["peak_rss_bytes"] / n + 100e6
+            for r in rc:
+                expect(r["peak_rss_bytes"] <= target, f"rank {r['rank']}: peak RSS {r['peak_rss_bytes'] / 1e6:.1f} MB above "
+                       f"1.3 x {whole['peak_rss_bytes'] / 1e6:.1f} / {n} + 100 = {target / 1e6:.1f} MB")
+            even = whole["contact_pairs_per_step"] / n
+            largest = max(r["contact_pairs_per_step"] for r in rc)
+            expect(largest <= 2 * even, f"largest rank's contact pairs {largest} above twice the even share {even:.0f}")
+            total = sum(r["contact_pairs_per_step"] for r in rc)
+            expect(total == whole["contact_pairs_per_step"], f"{total} pairs over the ranks, one rank "
+                   f"{whole['contact_pairs_per_step']} (a slave node computed twice or not at all)")
+            print(f"scaling: peak RSS largest {max(r['peak_rss_bytes'] for r in rc) / 1e6:.1f} MB (target "
+                  f"{target / 1e6:.1f}); contact pairs largest {largest} (even share {even:.0f}), all {total}")
     steps_run = s["steps"] - s["first_step"]
     for r in rc:
         expect(r["contact_evaluations"] == steps_run + 1, f"rank {r['rank']}: {r['contact_evaluations']} contact "
