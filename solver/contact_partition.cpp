@@ -2,9 +2,12 @@
 #include "solver/contact_partition.hpp"
 
 #include <algorithm>
+#include <array>
+#include <numeric>
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <unordered_map>
 
 namespace tribex::solver {
@@ -81,8 +84,9 @@ class CentreGrid {
   std::unordered_map<std::int64_t, std::vector<int>> cells_;
 };
 
-// For each face of `from`, a link to the element of the nearest face of `to` within reach.
-void link_nearest(const SurfaceFaces& from, const SurfaceFaces& to, std::vector<int>& links) {
+// For each face of `from`, a link to the element of the nearest face of `to` within reach, as a pair
+// (slave side, master side): `from_slave` says which side `from` is.
+void link_nearest(const SurfaceFaces& from, const SurfaceFaces& to, bool from_slave, std::vector<std::pair<int, int>>& links) {
   if (from.element.empty() || to.element.empty()) return;
   const CentreGrid grid(to);
   for (std::size_t f = 0; f < from.element.size(); ++f) {
@@ -90,46 +94,119 @@ void link_nearest(const SurfaceFaces& from, const SurfaceFaces& to, std::vector<
     if (g < 0) continue;
     const int a = from.element[f], b = to.element[static_cast<std::size_t>(g)];
     if (a == b) continue;
-    links.push_back(std::min(a, b));
-    links.push_back(std::max(a, b));
+    links.emplace_back(from_slave ? a : b, from_slave ? b : a);
   }
+}
+
+// Recursive coordinate bisection of `items` (indices into `centre`) into patches first..first+count-1,
+// sizes proportional to the patch counts; ties by index.
+void bisect(std::vector<int>& items, std::size_t begin, std::size_t end, int first, int count,
+            const std::vector<double>& centre, std::vector<int>& patch_of) {
+  if (count == 1 || end - begin <= 1) {
+    for (std::size_t k = begin; k < end; ++k) patch_of[items[k]] = first;
+    return;
+  }
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (std::size_t k = begin; k < end; ++k)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], centre[3 * static_cast<std::size_t>(items[k]) + i]);
+      hi[i] = std::max(hi[i], centre[3 * static_cast<std::size_t>(items[k]) + i]);
+    }
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
+  const int left = count / 2;
+  const std::size_t mid = begin + (end - begin) * static_cast<std::size_t>(left) / static_cast<std::size_t>(count);
+  std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(mid),
+                   items.begin() + static_cast<std::ptrdiff_t>(end), [&](int a, int b) {
+                     const double ca = centre[3 * static_cast<std::size_t>(a) + axis], cb = centre[3 * static_cast<std::size_t>(b) + axis];
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  bisect(items, begin, mid, first, left, centre, patch_of);
+  bisect(items, mid, end, first + left, count - left, centre, patch_of);
+}
+
+// (slave, master) pairs of every interaction, each once, ascending.
+std::vector<std::pair<int, int>> facing_pairs(const mesh::Mesh& mesh, const inputs::ContactSpec& spec) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& it : spec.interactions) {
+    const SurfaceFaces slave = faces_of(mesh, spec, it.slave), master = faces_of(mesh, spec, it.master);
+    link_nearest(slave, master, true, pairs);
+    link_nearest(master, slave, false, pairs);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
 }
 
 }  // namespace
 
-std::vector<std::vector<char>> contact_surface_elements(const mesh::Mesh& mesh, const inputs::ContactSpec* spec) {
-  std::vector<std::vector<char>> sets;
-  if (!spec) return sets;
-  for (const auto& s : spec->surfaces) {
-    std::vector<char> marked(static_cast<std::size_t>(mesh.element_count()), 0);
-    for (const auto& set : s.side_sets)
-      if (auto it = mesh.side_sets.find(set); it != mesh.side_sets.end())
-        for (const auto& side : it->second) marked[static_cast<std::size_t>(side.element)] = 1;
-    sets.push_back(std::move(marked));
-  }
-  return sets;
-}
-
 std::vector<int> contact_element_links(const mesh::Mesh& mesh, const inputs::ContactSpec* spec) {
   std::vector<int> links;
   if (!spec) return links;
-  for (const auto& it : spec->interactions) {
-    const SurfaceFaces slave = faces_of(mesh, *spec, it.slave), master = faces_of(mesh, *spec, it.master);
-    link_nearest(slave, master, links);
-    link_nearest(master, slave, links);
-  }
-  // Each pair once, ascending.
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(links.size() / 2);
-  for (std::size_t k = 0; k < links.size(); k += 2) pairs.emplace_back(links[k], links[k + 1]);
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  links.clear();
-  for (const auto& [a, b] : pairs) {
+  for (const auto& [a, b] : facing_pairs(mesh, *spec)) {
     links.push_back(a);
     links.push_back(b);
   }
   return links;
+}
+
+void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* spec, int parts, std::vector<int>& part) {
+  if (!spec || parts <= 1) return;
+  // The slave-side elements, ascending, and their face centroids (an element with several slave
+  // faces: their mean); arrays by slave element, not by mesh element (rank 0 runs this on the whole mesh).
+  std::vector<std::pair<int, std::array<double, 3>>> faces;  // (element, face centroid)
+  for (const auto& it : spec->interactions)
+    for (const std::string* name : {&it.slave, it.symmetric ? &it.master : nullptr}) {
+      if (!name) continue;
+      const SurfaceFaces f = faces_of(mesh, *spec, *name);
+      for (std::size_t k = 0; k < f.element.size(); ++k)
+        faces.push_back({f.element[k], {f.centre[3 * k], f.centre[3 * k + 1], f.centre[3 * k + 2]}});
+    }
+  if (faces.empty()) return;
+  std::sort(faces.begin(), faces.end());
+  std::vector<int> slave;
+  std::vector<double> centre;
+  for (std::size_t k = 0; k < faces.size();) {
+    std::size_t end = k;
+    double c[3] = {0, 0, 0};
+    for (; end < faces.size() && faces[end].first == faces[k].first; ++end)
+      for (int i = 0; i < 3; ++i) c[i] += faces[end].second[i];
+    slave.push_back(faces[k].first);
+    for (int i = 0; i < 3; ++i) centre.push_back(c[i] / static_cast<double>(end - k));
+    k = end;
+  }
+  faces = {};
+  const int count = static_cast<int>(slave.size());
+  const int patches = std::min(parts, count);
+  std::vector<int> patch_of(slave.size(), -1), items(slave.size());
+  std::iota(items.begin(), items.end(), 0);
+  bisect(items, 0, items.size(), 0, patches, centre, patch_of);
+  // Patch -> rank: largest overlap with the METIS parts first (ties: lower patch, then lower rank).
+  std::vector<long long> overlap(static_cast<std::size_t>(patches) * parts, 0);
+  for (int k = 0; k < count; ++k) ++overlap[static_cast<std::size_t>(patch_of[k]) * parts + part[slave[k]]];
+  std::vector<std::pair<long long, int>> order;  // (-count, patch * parts + rank)
+  for (std::size_t k = 0; k < overlap.size(); ++k) order.emplace_back(-overlap[k], static_cast<int>(k));
+  std::sort(order.begin(), order.end());
+  std::vector<int> rank_of_patch(static_cast<std::size_t>(patches), -1);
+  std::vector<char> taken(static_cast<std::size_t>(parts), 0);
+  for (const auto& entry : order) {
+    const int p = entry.second / parts, r = entry.second % parts;
+    if (rank_of_patch[p] < 0 && !taken[r]) {
+      rank_of_patch[p] = r;
+      taken[r] = 1;
+    }
+  }
+  for (int k = 0; k < count; ++k) part[slave[k]] = rank_of_patch[patch_of[k]];
+  // Master elements facing a slave face go with it (the first pair of each master element; not a
+  // slave element itself).
+  std::vector<char> placed(static_cast<std::size_t>(mesh.element_count()), 0);
+  for (int e : slave) placed[e] = 1;
+  for (const auto& [s, m] : facing_pairs(mesh, *spec))
+    if (!placed[m]) {
+      part[m] = part[s];
+      placed[m] = 1;
+    }
 }
 
 }  // namespace tribex::solver

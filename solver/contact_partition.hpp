@@ -1,9 +1,19 @@
 // SPDX-License-Identifier: MIT
-// What the partition of a parallel run needs from the contact definition (parallel/partition.hpp):
-// the elements under each contact surface, which every rank should hold an equal share of, and
-// links between the elements of facing slave and master faces, which the partition should keep on
-// one rank, so that a rank's slave nodes find their master faces at home and its contact ghosts
-// are the band around its patch of the zone, not the whole patch (tools/bench/README.md "Counts per rank").
+// Where the contact zone goes in a parallel run's partition (parallel/partition.hpp makes the
+// partition of the volume): after METIS, the elements of the contact surfaces are placed in compact
+// patches, one per rank, so that a small contact zone is shared by all the ranks (the contact work
+// per rank falls as 1/N) and each rank's ghosts are the band around its patch (the contact bytes per
+// rank fall with the patch's perimeter): tools/bench/README.md "Counts per rank".
+//   - the elements with a face in a slave surface of an interaction (both surfaces of a symmetric
+//     one) are cut into `parts` patches by recursive coordinate bisection of their face centroids
+//     (equal counts; the longest side of each box cut at its median);
+//   - patch k goes to the rank whose METIS part holds most of its elements (greedy, largest overlap
+//     first), so that few elements move;
+//   - each element of a master surface facing a slave face (the nearest within two face diagonals,
+//     contact_element_links) goes with that slave element, so that a rank's slave nodes find their
+//     master faces at home; master elements facing none keep their METIS part.
+// A surface layer placed on another rank than the volume under it adds its inner nodes to the halo
+// (24 B each and step): about the zone's nodes in all, small against the halo of the volume.
 #pragma once
 
 #include <vector>
@@ -13,14 +23,15 @@
 
 namespace tribex::solver {
 
-/// [surface][element] 1 for the elements with a face in each contact surface of `spec` (none: empty).
-std::vector<std::vector<char>> contact_surface_elements(const mesh::Mesh& mesh, const inputs::ContactSpec* spec);
-
-/// Pairs of elements [link][2] facing each other across an interaction in the reference positions:
-/// for each face of either surface, the element of the nearest face of the other surface whose
-/// centroid lies within twice the larger of the two faces' diameters. Each pair once, the smaller
-/// element first, ascending; none without `spec`. Side sets missing from the mesh are skipped
-/// (build_contact reports them).
+/// Pairs of elements [link][2] = (slave side, master side) facing each other across an interaction in
+/// the reference positions: for each face of either surface, the element of the nearest face of the
+/// other surface whose centroid lies within twice the larger of the two faces' diameters. Each pair
+/// once, ascending; none without `spec`. Side sets missing from the mesh are skipped (build_contact
+/// reports them).
 std::vector<int> contact_element_links(const mesh::Mesh& mesh, const inputs::ContactSpec* spec);
+
+/// Places the contact surfaces' elements of `part` [element] (a partition into `parts`) in patches as
+/// above. Nothing without `spec` or with one part. Deterministic.
+void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* spec, int parts, std::vector<int>& part);
 
 }  // namespace tribex::solver

@@ -77,9 +77,8 @@ void DeckRun::build_parts() {
       whole.emplace(build_mesh(deck_));
       if (region_.contact) contact = contact_faces(*whole, *region_.contact);
       try {
-        const inputs::ContactSpec* spec = region_.contact ? &*region_.contact : nullptr;
-        part = parallel::partition_elements(*whole, ranks_, contact_surface_elements(*whole, spec),
-                                            contact_element_links(*whole, spec));
+        part = parallel::partition_elements(*whole, ranks_);
+        place_contact_patches(*whole, region_.contact ? &*region_.contact : nullptr, ranks_, part);
       } catch (const std::runtime_error& e) {
         throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
                          "; run with fewer ranks (mpirun -np N)");
@@ -115,7 +114,7 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   log_.say(format("parallel: %d ranks, METIS k-way partition of the %s%s; %d-%d elements per rank; %d nodes on partition "
                   "boundaries; every rank builds only its part",
                   ranks_, graph.c_str(),
-                  region_.contact ? " sharing out the elements under each contact surface and keeping facing ones together" : "",
+                  region_.contact ? ", contact surfaces in one compact patch per rank" : "",
                   *fewest, *most, shared));
 }
 

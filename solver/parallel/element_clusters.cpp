@@ -8,8 +8,6 @@
 namespace tribex::solver::parallel {
 namespace {
 
-constexpr int kLinkWeight = 4;  // a link weighs as much as a shared face (its four node incidences)
-
 // k-d tree leaves over the element centroids, numbered left to right; `order` ends grouped by leaf.
 void split_into_leaves(const mesh::Mesh& mesh, int size, std::vector<int>& order, ElementClusters& out) {
   const int ne = mesh.element_count();
@@ -53,20 +51,12 @@ void split_into_leaves(const mesh::Mesh& mesh, int size, std::vector<int>& order
 
 }  // namespace
 
-ElementClusters cluster_elements(const mesh::Mesh& mesh, int size, const std::vector<int>& links) {
+ElementClusters cluster_elements(const mesh::Mesh& mesh, int size) {
   const int ne = mesh.element_count(), nn = mesh.node_count();
   ElementClusters out;
   out.of_element.assign(static_cast<std::size_t>(ne), 0);
   std::vector<int> order;
   split_into_leaves(mesh, std::max(size, 1), order, out);
-  // The links, both ways, by element.
-  std::vector<std::pair<int, int>> linked;
-  linked.reserve(links.size());
-  for (std::size_t k = 0; k + 1 < links.size(); k += 2) {
-    linked.emplace_back(links[k], links[k + 1]);
-    linked.emplace_back(links[k + 1], links[k]);
-  }
-  std::sort(linked.begin(), linked.end());
   // Cluster by cluster (order is grouped by cluster, ascending): each node belongs to the first
   // cluster that reaches it; a later cluster reaching it records an edge to that one. So every edge is
   // found once, from its higher cluster: `lower` holds each cluster's edges to lower clusters.
@@ -93,8 +83,6 @@ ElementClusters cluster_elements(const mesh::Mesh& mesh, int size, const std::ve
         else if (first != c)
           add(first, 1);
       }
-      for (auto it = std::lower_bound(linked.begin(), linked.end(), std::make_pair(e, -1)); it != linked.end() && it->first == e; ++it)
-        if (const int other = out.of_element[it->second]; other < c) add(other, kLinkWeight);
     }
     lower_offset[c + 1] = static_cast<int>(lower.size());
   }

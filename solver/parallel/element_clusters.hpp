@@ -21,12 +21,11 @@ struct ElementClusters {
   // of one reaches a node first reached by an element of the other (every shared face; some clusters
   // touching only along an edge or at a corner are missed, where a third cluster reached the nodes
   // first, which the partition does not need); the weight counts the element-node incidences that
-  // reach such nodes (about 4 per shared face), plus 4 per link between them.
+  // reach such nodes (about 4 per shared face).
   std::vector<int> offset, neighbour, weight;
 };
 
-/// Clusters of at most `size` (>= 1) elements, deterministic for a given mesh. `links` [link][2]:
-/// pairs of elements (contact_element_links) whose clusters are made neighbours as if they shared a face.
-ElementClusters cluster_elements(const mesh::Mesh& mesh, int size, const std::vector<int>& links = {});
+/// Clusters of at most `size` (>= 1) elements, deterministic for a given mesh.
+ElementClusters cluster_elements(const mesh::Mesh& mesh, int size);
 
 }  // namespace tribex::solver::parallel

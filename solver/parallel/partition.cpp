@@ -20,15 +20,14 @@ constexpr int kClusterAbove = 262144;
 constexpr int kClusterGraph = 65536;
 constexpr int kClustersPerPart = 16;
 
-// The graph METIS partitions: CSR, optional vertex weights [vertex][constraint] and edge weights.
+// The graph METIS partitions: CSR, optional vertex and edge weights.
 struct Graph {
   idx_t vertices = 0, constraints = 1;
   std::vector<idx_t> xadj, adjncy, vertex_weight, edge_weight;
 };
 
-// The element dual graph (neighbours share a face, 4 nodes) with each link added as an edge both
-// ways, unless its elements already are neighbours.
-Graph element_graph(const mesh::Mesh& mesh, const std::vector<int>& links) {
+// The element dual graph: neighbours share a face (4 nodes).
+Graph element_graph(const mesh::Mesh& mesh) {
   const int ne = mesh.element_count();
   idx_t n_elements = ne, n_nodes = mesh.node_count(), n_common = 4, numbering = 0;
   // The connectivity as it is where idx_t is int (METIS reads it, does not write it), else a copy.
@@ -44,32 +43,10 @@ Graph element_graph(const mesh::Mesh& mesh, const std::vector<int>& links) {
   idx_t *xadj = nullptr, *adjncy = nullptr;
   if (METIS_MeshToDual(&n_elements, &n_nodes, eptr.data(), eind, &n_common, &numbering, &xadj, &adjncy) != METIS_OK)
     throw std::runtime_error("METIS_MeshToDual failed");
-  eptr = {};
-  copy = {};
-  std::vector<int> extra_offset(static_cast<std::size_t>(ne) + 1, 0), extra;
-  auto neighbours = [&](int a, int b) { return std::find(adjncy + xadj[a], adjncy + xadj[a + 1], b) != adjncy + xadj[a + 1]; };
-  for (std::size_t k = 0; k + 1 < links.size(); k += 2)
-    if (!neighbours(links[k], links[k + 1])) {
-      ++extra_offset[links[k] + 1];
-      ++extra_offset[links[k + 1] + 1];
-    }
-  for (int e = 0; e < ne; ++e) extra_offset[e + 1] += extra_offset[e];
-  extra.assign(static_cast<std::size_t>(extra_offset[ne]), 0);
-  std::vector<int> fill(extra_offset.begin(), extra_offset.end() - 1);
-  for (std::size_t k = 0; k + 1 < links.size(); k += 2)
-    if (!neighbours(links[k], links[k + 1])) {
-      extra[fill[links[k]]++] = links[k + 1];
-      extra[fill[links[k + 1]]++] = links[k];
-    }
   Graph g;
   g.vertices = ne;
-  g.xadj.assign(static_cast<std::size_t>(ne) + 1, 0);
-  g.adjncy.reserve(static_cast<std::size_t>(xadj[ne]) + extra.size());
-  for (int e = 0; e < ne; ++e) {
-    g.adjncy.insert(g.adjncy.end(), adjncy + xadj[e], adjncy + xadj[e + 1]);
-    g.adjncy.insert(g.adjncy.end(), extra.begin() + extra_offset[e], extra.begin() + extra_offset[e + 1]);
-    g.xadj[e + 1] = static_cast<idx_t>(g.adjncy.size());
-  }
+  g.xadj.assign(xadj, xadj + ne + 1);
+  g.adjncy.assign(adjncy, adjncy + xadj[ne]);
   METIS_Free(xadj);
   METIS_Free(adjncy);
   return g;
@@ -83,22 +60,16 @@ int partition_cluster_size(int elements, int parts) {
   return std::max(1, std::min(size, elements / (kClustersPerPart * parts)));
 }
 
-std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std::vector<std::vector<char>>& balanced,
-                                    const std::vector<int>& links, int cluster_size) {
+std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, int cluster_size) {
   const int ne = mesh.element_count();
   std::vector<int> part(static_cast<std::size_t>(ne), 0);
   if (parts <= 1 || ne == 0) return part;
   if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
-  // The balanced sets METIS is given (one more constraint each): those with at least a mark per part.
-  std::vector<const std::vector<char>*> sets;
-  for (const auto& set : balanced)
-    if (set.size() == static_cast<std::size_t>(ne) && std::count_if(set.begin(), set.end(), [](char c) { return c != 0; }) >= parts)
-      sets.push_back(&set);
   if (cluster_size <= 0) cluster_size = partition_cluster_size(ne, parts);
   Graph g;
   std::vector<int> cluster_of;  // [element] the graph's vertex, when it is a cluster graph
   if (cluster_size > 1) {
-    ElementClusters clusters = cluster_elements(mesh, cluster_size, links);
+    ElementClusters clusters = cluster_elements(mesh, cluster_size);
     if (clusters.count < parts)
       throw std::runtime_error(std::to_string(clusters.count) + " clusters of elements for " + std::to_string(parts) + " parts");
     g.vertices = clusters.count;
@@ -114,19 +85,11 @@ std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, const std
     take(clusters.neighbour, g.adjncy);
     take(clusters.weight, g.edge_weight);
     cluster_of = std::move(clusters.of_element);
+    // Vertex weights: the elements of each cluster.
+    g.vertex_weight.assign(static_cast<std::size_t>(g.vertices), 0);
+    for (int c : cluster_of) ++g.vertex_weight[static_cast<std::size_t>(c)];
   } else {
-    g = element_graph(mesh, links);
-  }
-  // Vertex weights: the elements of the vertex for the work, and per balanced set its marked elements
-  // (multi-constraint k-way: every part gets about 1/parts of each). Unweighted: METIS's unit weights.
-  g.constraints = 1 + static_cast<idx_t>(sets.size());
-  if (!sets.empty() || !cluster_of.empty()) {
-    g.vertex_weight.assign(static_cast<std::size_t>(g.vertices) * g.constraints, 0);
-    for (int e = 0; e < ne; ++e) {
-      const std::size_t v = cluster_of.empty() ? static_cast<std::size_t>(e) : static_cast<std::size_t>(cluster_of[e]);
-      g.vertex_weight[v * g.constraints] += 1;
-      for (std::size_t c = 0; c < sets.size(); ++c) g.vertex_weight[v * g.constraints + 1 + c] += (*sets[c])[e] != 0;
-    }
+    g = element_graph(mesh);
   }
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);

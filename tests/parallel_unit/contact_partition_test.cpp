@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// What the partition takes from the contact definition (solver/contact_partition.hpp): the links
-// between facing elements, and that the partition keeps linked elements on one rank.
+// Where the contact zone goes in the partition (solver/contact_partition.hpp): the links between
+// facing elements, and the compact patches of the slave surface with their master faces.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <map>
 
 #include "mesh/box.hpp"
 #include "solver/contact_partition.hpp"
@@ -16,6 +16,8 @@ using namespace tribex;
 namespace {
 
 // A 12 x 12 x 4 block of unit cubes and a 6 x 6 x 2 indenter on the centre of its top face.
+constexpr int kBlockElements = 12 * 12 * 4;
+
 mesh::Mesh block_and_indenter() {
   mesh::BoxSpec block, indenter;
   block.name = "block";
@@ -56,55 +58,68 @@ TEST(ContactPartition, LinksJoinTheElementsFacingEachOther) {
   const inputs::ContactSpec spec = indenter_on_block();
   const std::vector<int> links = solver::contact_element_links(m, &spec);
   ASSERT_EQ(links.size() % 2, 0u);
-  // Each of the 36 indenter bottom elements is linked to the block element under it; block top elements
-  // beside the footprint (within two face diagonals) link to the nearest indenter element too.
-  const int first_indenter = 12 * 12 * 4;
+  // (slave, master): each of the 36 indenter bottom elements is linked to the block element under it;
+  // block top elements beside the footprint (within two face diagonals) to the nearest indenter element.
   int under = 0;
   for (std::size_t k = 0; k < links.size(); k += 2) {
-    const int a = links[k], b = links[k + 1];
-    ASSERT_LT(a, b);
-    ASSERT_LT(a, first_indenter) << "a link joins the two bodies";
-    ASSERT_GE(b, first_indenter);
-    const auto ca = centroid(m, a), cb = centroid(m, b);
-    EXPECT_NEAR(ca[2], 3.5, 1e-12);  // the block's top layer
-    EXPECT_NEAR(cb[2], 4.5, 1e-12);  // the indenter's bottom layer
-    EXPECT_LE(std::hypot(ca[0] - cb[0], ca[1] - cb[1]), 2.0 * std::sqrt(2.0) + 1e-12);
-    under += ca[0] == cb[0] && ca[1] == cb[1];
+    const int s = links[k], mst = links[k + 1];
+    ASSERT_GE(s, kBlockElements) << "the slave side is the indenter";
+    ASSERT_LT(mst, kBlockElements) << "the master side is the block";
+    const auto cs = centroid(m, s), cm = centroid(m, mst);
+    EXPECT_NEAR(cs[2], 4.5, 1e-12);  // the indenter's bottom layer
+    EXPECT_NEAR(cm[2], 3.5, 1e-12);  // the block's top layer
+    EXPECT_LE(std::hypot(cs[0] - cm[0], cs[1] - cm[1]), 2.0 * std::sqrt(2.0) + 1e-12);
+    under += cs[0] == cm[0] && cs[1] == cm[1];
+    if (k > 0) {
+      EXPECT_TRUE(links[k - 2] < s || (links[k - 2] == s && links[k - 1] < mst)) << "pairs ascending, once";
+    }
   }
   EXPECT_EQ(under, 36);
-  // Pairs ascending, each once.
-  for (std::size_t k = 2; k < links.size(); k += 2)
-    EXPECT_TRUE(links[k - 2] < links[k] || (links[k - 2] == links[k] && links[k - 1] < links[k + 1]));
   EXPECT_TRUE(solver::contact_element_links(m, nullptr).empty());
 }
 
-TEST(ContactPartition, LinkedElementsMostlyShareARank) {
+TEST(ContactPartition, PatchesShareTheZoneCompactlyWithTheirMasterFaces) {
   const mesh::Mesh m = block_and_indenter();
   const inputs::ContactSpec spec = indenter_on_block();
-  const std::vector<int> links = solver::contact_element_links(m, &spec);
-  const auto balanced = solver::contact_surface_elements(m, &spec);
-  auto cut = [&](const std::vector<int>& part) {
-    int n = 0;
-    for (std::size_t k = 0; k < links.size(); k += 2) n += part[links[k]] != part[links[k + 1]];
-    return n;
-  };
   const int parts = 4;
-  const auto without = solver::parallel::partition_elements(m, parts, balanced);
-  const auto with = solver::parallel::partition_elements(m, parts, balanced, links);
-  const int links_count = static_cast<int>(links.size() / 2);
-  std::printf("links %d: cut %d with them in the graph, %d without\n", links_count, cut(with), cut(without));
-  EXPECT_LT(cut(with), cut(without));
-  EXPECT_LE(cut(with), links_count / 4) << "of " << links_count << " links";
-  // Still every part holds its share of the elements and of each surface's elements.
-  for (int p = 0; p < parts; ++p) {
-    EXPECT_NEAR(std::count(with.begin(), with.end(), p), m.element_count() / parts, 0.05 * m.element_count() / parts);
-    for (const auto& set : balanced) {
-      int marked = 0, mine = 0;
-      for (int e = 0; e < m.element_count(); ++e) {
-        marked += set[e] != 0;
-        mine += set[e] != 0 && with[e] == p;
+  std::vector<int> part = solver::parallel::partition_elements(m, parts);
+  const std::vector<int> metis = part;
+  solver::place_contact_patches(m, &spec, parts, part);
+  // The 36 slave elements: 9 per part, each part's a 3 x 3 square (a quadrant of the 6 x 6 footprint).
+  std::map<int, std::vector<int>> slave_of;
+  for (int e = kBlockElements; e < m.element_count(); ++e)
+    if (centroid(m, e)[2] == 4.5) slave_of[part[e]].push_back(e);
+  ASSERT_EQ(slave_of.size(), 4u);
+  for (const auto& [p, elements] : slave_of) {
+    ASSERT_EQ(elements.size(), 9u) << "part " << p;
+    double lo[2] = {1e9, 1e9}, hi[2] = {-1e9, -1e9};
+    for (int e : elements)
+      for (int i = 0; i < 2; ++i) {
+        lo[i] = std::min(lo[i], centroid(m, e)[i]);
+        hi[i] = std::max(hi[i], centroid(m, e)[i]);
       }
-      EXPECT_NEAR(mine, marked / parts, 0.1 * marked / parts + 1) << "part " << p;
+    EXPECT_EQ(hi[0] - lo[0], 2.0) << "part " << p;
+    EXPECT_EQ(hi[1] - lo[1], 2.0) << "part " << p;
+  }
+  // The block element under each slave element is on its part; other elements keep METIS's part.
+  const std::vector<int> links = solver::contact_element_links(m, &spec);
+  std::vector<char> moved(static_cast<std::size_t>(m.element_count()), 0);
+  for (std::size_t k = 0; k < links.size(); k += 2) {
+    moved[links[k]] = moved[links[k + 1]] = 1;
+    const auto cs = centroid(m, links[k]), cm = centroid(m, links[k + 1]);
+    if (cs[0] == cm[0] && cs[1] == cm[1]) {
+      EXPECT_EQ(part[links[k]], part[links[k + 1]]);
     }
   }
+  for (int e = 0; e < m.element_count(); ++e)
+    if (!moved[e]) {
+      EXPECT_EQ(part[e], metis[e]) << "element " << e;
+    }
+  // Deterministic; nothing without contact or with one part.
+  std::vector<int> again = metis;
+  solver::place_contact_patches(m, &spec, parts, again);
+  EXPECT_EQ(again, part);
+  again = metis;
+  solver::place_contact_patches(m, nullptr, parts, again);
+  EXPECT_EQ(again, metis);
 }

@@ -73,34 +73,12 @@ TEST(ElementClusters, KdLeavesOfACubeAreCubesAndTheGraphIsSymmetric) {
   EXPECT_EQ(solver::parallel::cluster_elements(m, 8).of_element, c.of_element);
 }
 
-TEST(ElementClusters, LinksMakeClustersNeighbours) {
-  mesh::BoxSpec a, b;
-  a.name = "a";
-  a.intervals = {4, 4, 2};
-  b.name = "b";
-  b.origin = {0, 0, 3};  // a gap: no shared node
-  b.intervals = {4, 4, 2};
-  mesh::Mesh m = mesh::generate_box(a);
-  mesh::append(m, mesh::generate_box(b));
-  const auto alone = solver::parallel::cluster_elements(m, 4);
-  const auto linked = solver::parallel::cluster_elements(m, 4, {12, 32 + 12});
-  const int ca = linked.of_element[12], cb = linked.of_element[44];
-  auto weight = [](const solver::parallel::ElementClusters& c, int x, int y) {
-    for (int j = c.offset[x]; j < c.offset[x + 1]; ++j)
-      if (c.neighbour[j] == y) return c.weight[j];
-    return 0;
-  };
-  EXPECT_EQ(weight(alone, ca, cb), 0);
-  EXPECT_EQ(weight(linked, ca, cb), 4);
-  EXPECT_EQ(weight(linked, cb, ca), 4);
-}
-
 TEST(ElementClusters, PartitionOnClustersIsBalancedAndNearTheElementGraphs) {
   const mesh::Mesh m = cube_mesh(16);
   for (int parts : {2, 4, 8}) {
-    const auto clustered = solver::parallel::partition_elements(m, parts, {}, {}, 8);
+    const auto clustered = solver::parallel::partition_elements(m, parts, 8);
     const auto elements = solver::parallel::partition_elements(m, parts);
-    EXPECT_EQ(clustered, solver::parallel::partition_elements(m, parts, {}, {}, 8)) << "repeatable";
+    EXPECT_EQ(clustered, solver::parallel::partition_elements(m, parts, 8)) << "repeatable";
     for (int p = 0; p < parts; ++p) {
       const double share = double(std::count(clustered.begin(), clustered.end(), p)) / m.element_count();
       // METIS's 3 % tolerance, at the granularity of a cluster (8 of 4,096 elements).
