@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <string>
-#include <utility>
 #include <unordered_map>
+#include <utility>
 
 namespace tribex::solver {
 namespace {
