@@ -10,6 +10,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "solver/parallel/coordinate_split.hpp"
+
 namespace tribex::solver {
 namespace {
 
@@ -106,22 +108,9 @@ void bisect(std::vector<int>& items, std::size_t begin, std::size_t end, int fir
     for (std::size_t k = begin; k < end; ++k) patch_of[items[k]] = first;
     return;
   }
-  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (std::size_t k = begin; k < end; ++k)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], centre[3 * static_cast<std::size_t>(items[k]) + i]);
-      hi[i] = std::max(hi[i], centre[3 * static_cast<std::size_t>(items[k]) + i]);
-    }
-  int axis = 0;
-  for (int i = 1; i < 3; ++i)
-    if (hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
   const int left = count / 2;
   const std::size_t mid = begin + (end - begin) * static_cast<std::size_t>(left) / static_cast<std::size_t>(count);
-  std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(mid),
-                   items.begin() + static_cast<std::ptrdiff_t>(end), [&](int a, int b) {
-                     const double ca = centre[3 * static_cast<std::size_t>(a) + axis], cb = centre[3 * static_cast<std::size_t>(b) + axis];
-                     return ca < cb || (ca == cb && a < b);
-                   });
+  parallel::split_along_longest_side(items, begin, mid, end, centre);
   bisect(items, begin, mid, first, left, centre, patch_of);
   bisect(items, mid, end, first + left, count - left, centre, patch_of);
 }

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <utility>
 
+#include "solver/parallel/coordinate_split.hpp"
+
 namespace tribex::solver::parallel {
 namespace {
 
@@ -28,22 +30,9 @@ void split_into_leaves(const mesh::Mesh& mesh, int size, std::vector<int>& order
       ++out.count;
       continue;
     }
-    float lo[3] = {centre[3 * order[begin]], centre[3 * order[begin] + 1], centre[3 * order[begin] + 2]};
-    float hi[3] = {lo[0], lo[1], lo[2]};
-    for (int k = begin; k < end; ++k)
-      for (int i = 0; i < 3; ++i) {
-        lo[i] = std::min(lo[i], centre[3 * static_cast<std::size_t>(order[k]) + i]);
-        hi[i] = std::max(hi[i], centre[3 * static_cast<std::size_t>(order[k]) + i]);
-      }
-    int axis = 0;
-    for (int i = 1; i < 3; ++i)
-      if (hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
     const int mid = begin + (end - begin) / 2;
-    // Ties by element number: the same leaves on every machine for the same mesh.
-    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end, [&](int a, int b) {
-      const float ca = centre[3 * static_cast<std::size_t>(a) + axis], cb = centre[3 * static_cast<std::size_t>(b) + axis];
-      return ca < cb || (ca == cb && a < b);
-    });
+    split_along_longest_side(order, static_cast<std::size_t>(begin), static_cast<std::size_t>(mid),
+                             static_cast<std::size_t>(end), centre);
     stack.emplace_back(mid, end);    // right, taken second
     stack.emplace_back(begin, mid);  // left, taken first: leaves numbered left to right
   }
