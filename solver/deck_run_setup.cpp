@@ -71,7 +71,8 @@ void DeckRun::build_parts() {
     // Arrays of 1 MB and more mapped and unmapped one by one, so that each one freed goes back to the
     // system at once: glibc's default threshold grows with the first large free (up to 32 MB), after
     // which the serial stage's temporaries stayed resident and added up (tools/bench/README.md
-    // "Counts per rank"). The loop allocates nothing, so it does not feel this.
+    // "Counts per rank"). It holds for the rest of the run: the loop allocates nothing, and the
+    // outputs' occasional large buffers cost a map and unmap each.
     mallopt(M_MMAP_THRESHOLD, 1 << 20);
     try {
       whole.emplace(build_mesh(deck_));
