@@ -56,63 +56,7 @@ void check_new_names(const Mesh& into, const std::vector<std::string>& blocks, c
     if (into.side_sets.count(s)) throw MeshError("append: both meshes have a side set named '" + s + "'; rename one of them");
 }
 
-}  // namespace
-
-Mesh generate_box(const BoxSpec& spec) {
-  Mesh mesh;
-  add_box(mesh, spec);
-  return mesh;
-}
-
-std::array<long long, 2> box_size(const BoxSpec& spec) {
-  long long nodes = 1, elements = 1;
-  for (int n : spec.intervals) {
-    if (n < 1) return {0, 0};
-    nodes *= n + 1LL;
-    elements *= n;
-  }
-  return {nodes, elements};
-}
-
-void add_box(Mesh& into, const BoxSpec& spec) {
-  const std::string source = "generated box '" + spec.name + "'";
-  if (spec.name.empty()) throw MeshError("generated box: the block name is empty; give the box a name");
-  const char* axis = "xyz";
-  for (int d = 0; d < 3; ++d) {
-    if (spec.intervals[d] < 1)
-      throw MeshError(source + ": intervals along " + axis[d] + " is " + std::to_string(spec.intervals[d]) +
-                      "; it must be at least 1");
-    if (!(spec.size[d] > 0.0) || !std::isfinite(spec.size[d]))
-      throw MeshError(source + ": size along " + axis[d] + " must be a positive finite length (m)");
-    if (!std::isfinite(spec.origin[d])) throw MeshError(source + ": origin must be finite");
-  }
-  int graded_face = -1;
-  if (!spec.grade_toward.empty()) {
-    for (int f = 0; f < 6; ++f)
-      if (spec.grade_toward == face_names[f]) graded_face = f;
-    if (graded_face < 0)
-      throw MeshError(source + ": grade_toward '" + spec.grade_toward +
-                      "' is not a face; use one of xmin, xmax, ymin, ymax, zmin, zmax");
-    if (!(spec.grading_ratio >= 1.0) || !std::isfinite(spec.grading_ratio))
-      throw MeshError(source + ": grading_ratio must be >= 1 (smallest element at the named face); "
-                      "to grow elements toward a face, grade toward the opposite face instead");
-  } else if (spec.grading_ratio != 1.0) {
-    throw MeshError(source + ": grading_ratio is set but grade_toward is empty; name the face to grade toward");
-  }
-
-  std::array<std::vector<double>, 3> axes;
-  for (int d = 0; d < 3; ++d)
-    axes[d] = axis_coordinates(spec.origin[d], spec.size[d], spec.intervals[d], spec.grading_ratio,
-                               graded_face == 2 * d, graded_face == 2 * d + 1);
-  add_grid(into, spec.name, axes);
-}
-
-Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes) {
-  Mesh mesh;
-  add_grid(mesh, name, axes);
-  return mesh;
-}
-
+// The grid of `axes` added to `mesh` in place (add_box, generate_grid).
 void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<double>, 3>& axes) {
   const std::string source = "structured grid '" + name + "'";
   for (int d = 0; d < 3; ++d) {
@@ -196,5 +140,63 @@ void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<
   all.resize(static_cast<std::size_t>(node_count));
   for (int n = 0; n < static_cast<int>(node_count); ++n) all[n] = static_cast<int>(node_offset) + n;
 }
+
+}  // namespace
+
+Mesh generate_box(const BoxSpec& spec) {
+  Mesh mesh;
+  add_box(mesh, spec);
+  return mesh;
+}
+
+std::array<long long, 2> box_size(const BoxSpec& spec) {
+  long long nodes = 1, elements = 1;
+  for (int n : spec.intervals) {
+    if (n < 1) return {0, 0};
+    nodes *= n + 1LL;
+    elements *= n;
+  }
+  return {nodes, elements};
+}
+
+void add_box(Mesh& into, const BoxSpec& spec) {
+  const std::string source = "generated box '" + spec.name + "'";
+  if (spec.name.empty()) throw MeshError("generated box: the block name is empty; give the box a name");
+  const char* axis = "xyz";
+  for (int d = 0; d < 3; ++d) {
+    if (spec.intervals[d] < 1)
+      throw MeshError(source + ": intervals along " + axis[d] + " is " + std::to_string(spec.intervals[d]) +
+                      "; it must be at least 1");
+    if (!(spec.size[d] > 0.0) || !std::isfinite(spec.size[d]))
+      throw MeshError(source + ": size along " + axis[d] + " must be a positive finite length (m)");
+    if (!std::isfinite(spec.origin[d])) throw MeshError(source + ": origin must be finite");
+  }
+  int graded_face = -1;
+  if (!spec.grade_toward.empty()) {
+    for (int f = 0; f < 6; ++f)
+      if (spec.grade_toward == face_names[f]) graded_face = f;
+    if (graded_face < 0)
+      throw MeshError(source + ": grade_toward '" + spec.grade_toward +
+                      "' is not a face; use one of xmin, xmax, ymin, ymax, zmin, zmax");
+    if (!(spec.grading_ratio >= 1.0) || !std::isfinite(spec.grading_ratio))
+      throw MeshError(source + ": grading_ratio must be >= 1 (smallest element at the named face); "
+                      "to grow elements toward a face, grade toward the opposite face instead");
+  } else if (spec.grading_ratio != 1.0) {
+    throw MeshError(source + ": grading_ratio is set but grade_toward is empty; name the face to grade toward");
+  }
+
+  std::array<std::vector<double>, 3> axes;
+  for (int d = 0; d < 3; ++d)
+    axes[d] = axis_coordinates(spec.origin[d], spec.size[d], spec.intervals[d], spec.grading_ratio,
+                               graded_face == 2 * d, graded_face == 2 * d + 1);
+  add_grid(into, spec.name, axes);
+}
+
+Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes) {
+  Mesh mesh;
+  add_grid(mesh, name, axes);
+  return mesh;
+}
+
 
 }  // namespace tribex::mesh

@@ -37,7 +37,5 @@ std::array<long long, 2> box_size(const BoxSpec& spec);
 /// increasing coordinate lists (m), one block NAME and the same sets. Generators that map a grid
 /// (the asperity's spherical tip, AFM surfaces) start from it.
 Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes);
-/// The same grid added to `into` in place (see add_box).
-void add_grid(Mesh& into, const std::string& name, const std::array<std::vector<double>, 3>& axes);
 
 }  // namespace tribex::mesh
