@@ -29,6 +29,8 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
       const std::size_t n = surfaces_[p.slave].nodes.size();
       if (has_tangential_pairs(p.law)) p.pairs.size_for(n);
       p.law_state.assign(n * static_cast<std::size_t>(law_state_size(p.law)), 0.0);
+      p.face_bounds.resize(surfaces_[p.master].face_count());
+      p.nearest_face.assign(n, -1);
       if (it.enforcement == Enforcement::mortar) {
         if (!supports_mortar(it.law))
           throw std::invalid_argument("contact interaction '" + it.name + "': " +

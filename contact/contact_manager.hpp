@@ -34,6 +34,7 @@
 #include "contact/contact_totals.hpp"
 #include "contact/laws/contact_law.hpp"
 #include "contact/mortar/mortar_enforcement.hpp"
+#include "contact/node_to_face/face_bounds.hpp"
 #include "contact/node_to_face/pass_view.hpp"
 #include "contact/search/bucket_search.hpp"
 #include "contact/surface.hpp"
@@ -198,6 +199,10 @@ class ContactManager {
     bool primary = true;
     std::vector<double> gap;  // [slave node] signed gap to the closest face over which it projects (NaN: none)
     std::vector<int> last_face;  // [slave node] face of the previous step (-1: none), tried first
+    // Narrow-phase shortcuts (closest_face.hpp; same answers, so not in restart files): the master's
+    // face bounds of this step and [slave node] the node's answer of the previous step (-1: none).
+    FaceBounds face_bounds;
+    std::vector<int> nearest_face;
     TangentialPairs pairs;       // laws with tangential forces (junction, Coulomb)
     std::vector<double> law_state;  // [slave node][state_size] the law's state
     std::unique_ptr<MortarEnforcement> mortar;  // enforcement = mortar only

@@ -18,8 +18,11 @@ struct Projection {
   double shape[4] = {0, 0, 0, 0};  // N_a(xi, eta) at the closest point
 };
 
+/// How far outside the parametric square a Newton point still counts as over the face.
+inline constexpr double interior_tolerance = 1e-3;
+
 /// `x` holds the 4 face nodes [4][3]; `p` the point. `tolerance` widens the accepted parametric
 /// square (|xi|, |eta| <= 1 + tolerance) before falling back to the edges.
-Projection project_onto_quad(const double x[12], const double p[3], double tolerance = 1e-3);
+Projection project_onto_quad(const double x[12], const double p[3], double tolerance = interior_tolerance);
 
 }  // namespace tribex::contact

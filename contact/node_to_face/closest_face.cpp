@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "contact/node_to_face/closest_face.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tribex::contact {
@@ -25,36 +26,83 @@ bool at_kink(const ContactSurface& master, int face, const double* p, Projection
   return true;
 }
 
-}  // namespace
+Projection project(const double* x, const ContactSurface& master, int face, const double* p) {
+  double X[12];
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * master.face_nodes[4 * face + a] + i];
+  return project_onto_quad(X, p);
+}
 
-BestFace closest_face(const double* x, const ContactSurface& master, const int* faces, int count, const double* p,
-                      int hint) {
-  if (hint >= 0) {
-    double X[12];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * master.face_nodes[4 * hint + a] + i];
-    const Projection pr = project_onto_quad(X, p);
-    if (pr.interior) return {hint, pr, true};
-  }
+double key_of(const Projection& pr) { return pr.interior ? std::abs(pr.gap) : pr.distance; }
+
+// Every candidate in list order; the first of the best class and smallest key wins.
+BestFace scan(const double* x, const ContactSurface& master, const int* faces, int count, const double* p) {
   BestFace best;
   double best_key = INFINITY;
   bool best_interior = false;
   for (int c = 0; c < count; ++c) {
-    const int f = faces[c];
-    double X[12];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * master.face_nodes[4 * f + a] + i];
-    const Projection pr = project_onto_quad(X, p);
-    const double key = pr.interior ? std::abs(pr.gap) : pr.distance;
+    const Projection pr = project(x, master, faces[c], p);
+    const double key = key_of(pr);
     if ((pr.interior && !best_interior) || (pr.interior == best_interior && key < best_key)) {
-      best = {f, pr, pr.interior};
+      best = {faces[c], pr, pr.interior};
       best_key = key;
       best_interior = pr.interior;
     }
   }
-  if (best.face >= 0 && !best.usable) best.usable = at_kink(master, best.face, p, best.proj);
   return best;
 }
 
+// scan's answer, projecting fewer candidates (closest_face.hpp). False when a key is NaN (a
+// degenerate face): the order of projection could then matter, and the caller scans.
+bool pruned_scan(const double* x, const ContactSurface& master, const int* faces, int count, const double* p,
+                 FaceBounds& bounds, int seed, BestFace& best) {
+  int best_pos = -1;  // list position of `best` (-1: none yet)
+  double best_key = INFINITY;
+  const auto consider = [&](int c, const Projection& pr) {
+    const double key = key_of(pr);
+    if (std::isnan(key)) return false;
+    bool better;
+    if (best_pos < 0) better = true;
+    else if (pr.interior != best.usable) better = pr.interior;
+    else if (key != best_key) better = key < best_key;
+    else better = c < best_pos;
+    if (better) {
+      best = {faces[c], pr, pr.interior};
+      best_key = key;
+      best_pos = c;
+    }
+    return true;
+  };
+  const int seed_pos = seed < 0 ? -1 : static_cast<int>(std::find(faces, faces + count, seed) - faces);
+  if (seed_pos >= 0 && seed_pos < count && !consider(seed_pos, project(x, master, seed, p))) return false;
+  for (int c = 0; c < count; ++c) {
+    if (c == seed_pos) continue;
+    if (best_pos >= 0) {
+      const FaceBound& b = bounds.of(x, master, faces[c]);
+      // Not over the face, the candidate can win only as the nearest of the non-interior ones, with a
+      // key of at least its box distance (the slack covers round-off). The box test is the cheaper.
+      const bool too_far = best.usable || b.box_distance(p) > best_key + 1e-9 * (best_key + b.reach);
+      if (too_far && !b.may_project_inside(p)) continue;
+    }
+    if (!consider(c, project(x, master, faces[c], p))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+BestFace closest_face(const double* x, const ContactSurface& master, const int* faces, int count, const double* p,
+                      int hint, FaceBounds* bounds, int seed) {
+  if (hint >= 0) {
+    const Projection pr = project(x, master, hint, p);
+    if (pr.interior) return {hint, pr, true};
+    seed = hint;  // the node has just left it: a near face
+  }
+  BestFace best;
+  if (!bounds || !pruned_scan(x, master, faces, count, p, *bounds, seed, best))
+    best = scan(x, master, faces, count, p);
+  if (best.face >= 0 && !best.usable) best.usable = at_kink(master, best.face, p, best.proj);
+  return best;
+}
 
 }  // namespace tribex::contact

@@ -26,13 +26,16 @@ void ContactManager::node_to_face_with(const Law& law, Pass& p, const StepInputs
                 counted_.empty() ? nullptr : counted_.data(), &uncounted_};
   constexpr bool has_point_hook = requires(ContactPoint& q) { law.at_point(q, view); };
   constexpr bool area_from_shares = requires { Law::area_from_shares; };
+  p.face_bounds.next_step();
   for (int k = 0; k < slave.node_count(); ++k) {
     const int count = p.candidate_offset[k + 1] - p.candidate_offset[k];
     if (count == 0) continue;
     const int node = slave.nodes[k];
     const double* xs = in.x + 3 * node;
-    const BestFace best = closest_face(in.x, master, &p.candidates[p.candidate_offset[k]], count, xs, p.last_face[k]);
+    const BestFace best = closest_face(in.x, master, &p.candidates[p.candidate_offset[k]], count, xs, p.last_face[k],
+                                       &p.face_bounds, p.nearest_face[k]);
     p.last_face[k] = best.face >= 0 && best.proj.interior ? best.face : -1;
+    p.nearest_face[k] = best.face;
     if (best.usable) p.gap[k] = best.proj.gap;
     if (owner_computes_ && !view.counts(node)) continue;  // another rank's node: its gap only (edge radius)
     ContactPoint point{k, node, best.face, &master.face_nodes[4 * std::max(best.face, 0)], best.proj.shape,
