@@ -108,9 +108,11 @@ class ContactManager {
   /// master shares of its master nodes, two more such hops), plus the motion a search allows.
   double region_reach() const;
   /// Whether each slave node is computed on its owner only (a distributed run whose passes are all
-  /// node to face without tangential pairs): the forces on other ranks' nodes are then partial sums
-  /// the solver completes (the reverse ghost exchange and the shared-node sum). Otherwise every rank
-  /// computes every slave node of its region, and its own nodes' forces are complete.
+  /// node to face): the forces on other ranks' nodes are then partial sums the solver completes (the
+  /// reverse ghost exchange and the shared-node sum); tangential pairs complete their nodes' normal
+  /// forces and master shares mid-pass the same way (ContactReductions::complete_node_sums).
+  /// Otherwise (mortar) every rank computes every slave node of its region, and its own nodes'
+  /// forces are complete.
   bool owner_computes() const { return owner_computes_; }
   /// Whether this rank's region must reach around `node` (a node it holds): owner_computes(): the
   /// slave nodes it counts (a node it only holds, or a master node, needs no neighbours here: the
@@ -252,6 +254,9 @@ class ContactManager {
   bool owner_computes_ = false;
   std::vector<char> projected_;
   std::vector<char> seeds_;  // owner_computes(): [node] counted slave nodes (seeds_region)
+  // owner_computes() with tangential pairs: scratch of the pairs' completed forces [node][3] and master
+  // shares [node] (PassView::completion), and of both in one row [node][4] for the exchange; empty otherwise.
+  std::vector<double> completed_force_, completed_share_, completed_rows_;
   ContactReductions* reductions_ = nullptr;
   UncountedTotals uncounted_;
   std::vector<double> plan_;    // [pass] scratch of plan_searches

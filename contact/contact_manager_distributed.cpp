@@ -16,17 +16,28 @@ void ContactManager::distribute(std::vector<char> counted, ContactReductions* re
   largest_face_diameter_ = 0.0;
   for (const auto& s : surfaces_) largest_face_diameter_ = std::max(largest_face_diameter_, max_face_diameter(s, X));
   for (auto& p : passes_) p.searched = false;
-  owner_computes_ = reductions != nullptr && std::none_of(passes_.begin(), passes_.end(), [](const Pass& p) {
-    return p.mortar != nullptr || has_tangential_pairs(p.law);
-  });
+  owner_computes_ = reductions != nullptr &&
+                   std::none_of(passes_.begin(), passes_.end(), [](const Pass& p) { return p.mortar != nullptr; });
+  const bool tangential =
+      std::any_of(passes_.begin(), passes_.end(), [](const Pass& p) { return has_tangential_pairs(p.law); });
   projected_.clear();
   seeds_.clear();
+  completed_force_.clear();
+  completed_share_.clear();
+  completed_rows_.clear();
   if (owner_computes_) {
     projected_ = counted_;
     seeds_.assign(counted_.size(), 0);
     for (const auto& p : passes_)
       for (int node : surfaces_[p.slave].nodes) seeds_[node] = counted_[node];
-    if (axis_.set)
+    if (tangential) {
+      completed_force_.assign(3 * counted_.size(), 0.0);
+      completed_share_.assign(counted_.size(), 0.0);
+      completed_rows_.assign(4 * counted_.size(), 0.0);
+    }
+    // The gaps of the slave faces around the counted nodes: the edge radius (axis) and the junction's
+    // contact shares (laws/junction.cpp) read them.
+    if (axis_.set || tangential)
       for (const auto& p : passes_) {
         const ContactSurface& s = surfaces_[p.slave];
         for (int f = 0; f < s.face_count(); ++f) {
@@ -57,8 +68,9 @@ long long ContactManager::present_face_count() const {
 // pairs reads the normal forces and master shares of its master nodes (both one hop further) and
 // a later pass reads the forces of the earlier ones: two hops more per such pass. Between searches
 // every node moves at most research_fraction x margin, and two nodes close by twice that, per hop.
-// Owner-computes runs (every slave node computed once, the forces summed back) need only the master
-// faces of their own slave nodes and of the slave faces around them: one hop plus a face.
+// Owner-computes runs (every slave node computed once, the forces summed back; a tangential pass
+// completes its pairs' normal forces and master shares over the ranks before it reads them) need only
+// the master faces of their own slave nodes and of the slave faces around them: one hop plus a face.
 double ContactManager::region_reach() const {
   double hop = 0.0;
   int hops = 2;

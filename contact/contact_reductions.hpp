@@ -17,6 +17,11 @@ class ContactReductions {
   /// values[i] the largest over the ranks and nodes[i] the node given with it (the lowest node among
   /// equal values), in place.
   virtual void max_at(double* values, int* nodes, int count) = 0;
+  /// values [node][width] (width <= 4), in the manager's node numbering, hold each rank's part of a
+  /// nodal sum (owner computes: the pairs of this rank's slave nodes): afterwards every rank that
+  /// holds or ghosts a node has the whole sum there. The tangential pairs' prediction reads the
+  /// normal forces and master shares of all pairs this way (node_to_face/tangential_pairs.cpp).
+  virtual void complete_node_sums(double* values, int width) = 0;
 };
 
 }  // namespace tribex::contact

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "contact/contact_reductions.hpp"
 #include "contact/contact_totals.hpp"
 #include "contact/surface.hpp"
 
@@ -90,6 +91,13 @@ struct PassView {
   // step this rank reports; the others' go to `uncounted` and are dropped. nullptr: every node counts.
   const char* counted;          // [node]
   UncountedTotals* uncounted;
+  // Owner computes (ContactManager::owner_computes) with tangential pairs: other ranks' pairs load
+  // this rank's nodes too, so the pair prediction completes the forces and master shares over the
+  // ranks into these scratch rows ([node][3], [node]) first. nullptr: a serial or redundant run.
+  ContactReductions* completion;
+  double* completed_force;
+  double* completed_share;
+  double* completed_rows;  // [node][4] force and share, one exchange
 
   bool counts(int node) const { return counted == nullptr || counted[node] != 0; }
   /// Where a contribution of slave node `node` to the totals goes.

@@ -57,7 +57,6 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
       const auto& owned = model.domain.surface_owned();
       model.contact->distribute(std::vector<char>(owned.begin(), owned.end()), contact_region_.get(), x_.data());
       contact_region_->set_fields(model.contact->ghost_fields());
-      if (model.contact->owner_computes()) contact_partial_.assign(n3, 0.0);
     }
   }
   if (!model.silent.node.empty()) {
@@ -249,21 +248,9 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
 }
 
 // Owner-computes contact: each slave node was computed on its owner only, so the forces on a node are
-// spread over the ranks whose slave nodes touch it. The ghost rows go back to their owners, then the
-// held rows of shared surface nodes are summed over their holders (the halo exchange restricted to
-// them), so every holder has
-// the whole force of its surface nodes.
-void CentralDifference::complete_contact_forces() {
-  contact_region_->return_ghost_forces(f_contact_.data());
-  const auto& local = model_.domain.surface_local();
-  for (std::size_t k = 0; k < local.size(); ++k)
-    if (const int l = local[k]; l >= 0)
-      for (int i = 0; i < 3; ++i) contact_partial_[3 * l + i] = f_contact_[3 * k + i];
-  model_.domain.sum_shared_surface(contact_partial_.data());
-  for (std::size_t k = 0; k < local.size(); ++k)
-    if (const int l = local[k]; l >= 0)
-      for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = contact_partial_[3 * l + i];
-}
+// spread over the ranks whose slave nodes touch it: summed over them (ContactRegion::sum_to_holders),
+// so every holder has the whole force of its surface nodes.
+void CentralDifference::complete_contact_forces() { contact_region_->sum_to_holders(f_contact_.data(), 3); }
 
 void CentralDifference::update_velocity() {
   // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2, and dt^{1/2}/2 on the first step.

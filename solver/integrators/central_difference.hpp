@@ -128,7 +128,6 @@ class CentralDifference {
   // distributed run its region's ghost rows (contact_region_; other rows keep stale values).
   std::vector<double> x_, f_contact_, v_contact_, f_other_contact_;
   std::unique_ptr<parallel::ContactRegion> contact_region_;
-  std::vector<double> contact_partial_;  // [local node][3] owner-computes contact: this rank's part of the forces
   void complete_contact_forces();
   contact::ContactTotals contact_totals_;
   double momentum_[3] = {0, 0, 0};

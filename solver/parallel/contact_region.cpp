@@ -29,6 +29,7 @@ ContactRegion::ContactRegion(Domain& domain) : domain_(domain) {
   send_offset_.assign(static_cast<std::size_t>(members_) + 1, 0);
   recv_offset_.assign(static_cast<std::size_t>(members_) + 1, 0);
   present_.assign(local.size(), 0);
+  held_.assign(4 * domain.global_node.size(), 0.0);
   located_.reserve(64);
 }
 
@@ -213,16 +214,42 @@ void ContactRegion::exchange(int width, bool reverse) {
   MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
 }
 
-void ContactRegion::return_ghost_forces(double* fg) {
+void ContactRegion::sum_to_holders(double* values, int width) {
+  const std::size_t w = static_cast<std::size_t>(width);
+  if (comm_ != MPI_COMM_NULL) {
+    const double start = now();
+    for (std::size_t j = 0; j < recv_node_.size(); ++j)
+      for (std::size_t i = 0; i < w; ++i) recv_[w * j + i] = values[w * static_cast<std::size_t>(recv_node_[j]) + i];
+    exchange(width, true);
+    for (std::size_t j = 0; j < send_node_.size(); ++j)
+      for (std::size_t i = 0; i < w; ++i) values[w * static_cast<std::size_t>(send_node_[j]) + i] += send_[w * j + i];
+    domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * w * recv_node_.size());
+    domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * w * send_node_.size());
+    domain_.communication_seconds += now() - start;
+  }
+  // The shared surface nodes, in the domain's numbering (the halo sum's).
+  const auto& local = domain_.surface_local();
+  for (std::size_t k = 0; k < local.size(); ++k)
+    if (const int l = local[k]; l >= 0)
+      for (std::size_t i = 0; i < w; ++i) held_[w * l + i] = values[w * k + i];
+  domain_.sum_shared_surface(held_.data(), width);
+  for (std::size_t k = 0; k < local.size(); ++k)
+    if (const int l = local[k]; l >= 0)
+      for (std::size_t i = 0; i < w; ++i) values[w * k + i] = held_[w * l + i];
+}
+
+void ContactRegion::complete_node_sums(double* values, int width) {
+  sum_to_holders(values, width);
   if (comm_ == MPI_COMM_NULL) return;
   const double start = now();
-  for (std::size_t j = 0; j < recv_node_.size(); ++j)
-    for (int i = 0; i < 3; ++i) recv_[3 * j + i] = fg[3 * static_cast<std::size_t>(recv_node_[j]) + i];
-  exchange(3, true);
+  const std::size_t w = static_cast<std::size_t>(width);
   for (std::size_t j = 0; j < send_node_.size(); ++j)
-    for (int i = 0; i < 3; ++i) fg[3 * static_cast<std::size_t>(send_node_[j]) + i] += send_[3 * j + i];
-  domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * 3 * recv_node_.size());
-  domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * 3 * send_node_.size());
+    for (std::size_t i = 0; i < w; ++i) send_[w * j + i] = values[w * static_cast<std::size_t>(send_node_[j]) + i];
+  exchange(width);
+  for (std::size_t j = 0; j < recv_node_.size(); ++j)
+    for (std::size_t i = 0; i < w; ++i) values[w * static_cast<std::size_t>(recv_node_[j]) + i] = recv_[w * j + i];
+  domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * w * send_node_.size());
+  domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * w * recv_node_.size());
   domain_.communication_seconds += now() - start;
 }
 

@@ -51,9 +51,11 @@ class ContactRegion final : public contact::ContactReductions {
   /// Ghost rows of xg, and of vg and fg where set_fields asked for them, [surface node][3], from their
   /// owners (this rank's own rows current).
   void fill_ghosts(double* xg, double* vg, double* fg);
-  /// Owner-computes contact (ContactManager::owner_computes): the forces fg [surface node][3] this rank
-  /// put on its ghost nodes go back to their owners, who add them to their rows (in member order).
-  void return_ghost_forces(double* fg);
+  /// Owner-computes contact (ContactManager::owner_computes): the parts of a nodal sum, values
+  /// [surface node][width] (width <= 4), that this rank put on its ghost nodes go back to their owners,
+  /// who add them to their rows (in member order), then the rows of surface nodes shared by several
+  /// ranks are summed over their holders: every rank has the whole sum on the nodes it holds.
+  void sum_to_holders(double* values, int width);
   /// [surface node] 1 for the nodes of this rank's region (held or ghost).
   const std::vector<char>& present() const { return present_; }
 
@@ -64,6 +66,8 @@ class ContactRegion final : public contact::ContactReductions {
   void sum(double* values, int count) override;
   void max(double* values, int count) override;
   void max_at(double* values, int* nodes, int count) override;
+  /// sum_to_holders, then the owners' sums to the ranks that ghost the nodes.
+  void complete_node_sums(double* values, int width) override;
 
  private:
   void exchange_node_numbers();  // receive lists from the send lists
@@ -85,6 +89,7 @@ class ContactRegion final : public contact::ContactReductions {
   std::vector<int> recv_offset_, recv_node_;  // [member + 1], ghost nodes from each member
   std::vector<char> present_;
   std::vector<double> send_, recv_;
+  std::vector<double> held_;  // [local node][width] scratch of sum_to_holders (the domain's numbering)
   std::vector<MPI_Request> requests_;
   struct Located {
     double value;

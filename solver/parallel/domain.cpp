@@ -62,10 +62,11 @@ void Domain::init_parallel(const MeshPart& part) {
   halo_.size_buffers();
 }
 
-void Domain::Halo::size_buffers() {
-  send.assign(3 * neighbour_nodes.size(), 0.0);
-  recv.assign(3 * neighbour_nodes.size(), 0.0);
-  sum.assign(3 * shared_nodes.size(), 0.0);
+void Domain::Halo::size_buffers(int width) {
+  const std::size_t w = static_cast<std::size_t>(width);
+  send.assign(w * neighbour_nodes.size(), 0.0);
+  recv.assign(w * neighbour_nodes.size(), 0.0);
+  sum.assign(w * shared_nodes.size(), 0.0);
   requests.assign(2 * neighbours.size(), MPI_REQUEST_NULL);
 }
 
@@ -79,9 +80,9 @@ void Domain::sum_shared(double* f, int width) {
   sum_over(halo_, f, width, traffic.halo_sent, traffic.halo_received);
 }
 
-void Domain::sum_shared_surface(double* f) {
+void Domain::sum_shared_surface(double* f, int width) {
   if (surface_halo_.neighbours.empty()) return;
-  sum_over(surface_halo_, f, 3, traffic.surface_sent, traffic.surface_received);
+  sum_over(surface_halo_, f, width, traffic.surface_sent, traffic.surface_received);
 }
 
 void Domain::sum_over(Halo& h, double* f, int width, long long& sent, long long& received) {
@@ -158,7 +159,7 @@ void Domain::set_surface(const std::vector<int>& surface_nodes) {
     h.neighbours.push_back(halo_.neighbours[k]);
     h.neighbour_offset.push_back(static_cast<int>(h.neighbour_nodes.size()));
   }
-  h.size_buffers();
+  h.size_buffers(4);  // forces, and the tangential pairs' forces with master shares (ContactRegion)
 }
 
 bool Domain::shares_with(int local_node, int other_rank) const {

@@ -54,7 +54,7 @@ class Domain {
   void sum_shared(double* nodal, int width = 3);
   /// The same for the contact-surface nodes only (set_surface), [local node][3]; counted as contact
   /// traffic (owner-computes contact: contact_region.hpp).
-  void sum_shared_surface(double* nodal);
+  void sum_shared_surface(double* nodal, int width = 3);  // width <= 4
 
   /// Contact surfaces: `surface_nodes` the sorted global nodes of all surfaces (same on every rank),
   /// surface node k = the contact's node k (Model::contact_global_node).
@@ -77,7 +77,7 @@ class Domain {
     std::vector<int> shared_nodes;      // local nodes held by more than one rank, ascending
     std::vector<double> send, recv, sum;
     std::vector<MPI_Request> requests;
-    void size_buffers();
+    void size_buffers(int width = 3);  // doubles per node in a sum
   };
   /// Sums f over `halo`'s shared nodes (in ascending rank order); adds the payload bytes to sent/received.
   void sum_over(Halo& halo, double* f, int width, long long& sent, long long& received);

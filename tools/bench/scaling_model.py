@@ -10,20 +10,23 @@ Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nod
   halo          6 neighbours x (latency + 24 B x (K / N^(1/3))^2 / bandwidth)   (cube subdomains)
   contact       replicated: S x c_node on every rank; distributed (owner computes, the frictionless
                 and adhesive laws): its share S / min(N, N_c) x c_node (N_c the ranks the
-                contact-weighted partition spreads the zone over, S / 16 by default); with --redundant
-                (the tangential laws and mortar) every slave node of the region: the share as a square
-                patch grown by the region's reach h (node spacings) on every side,
+                contact-weighted partition spreads the zone over, S / 16 by default); with --tangential
+                (junction, Coulomb) the share grown by one node on every side (the contact shares read
+                the gaps around); with --redundant (mortar) every slave node of the region: the share as
+                a square patch grown by the region's reach h (node spacings) on every side,
                 (sqrt(share) + 2 h)^2, at most S
   surface data  replicated: MPI_Allgatherv of 72 B x all surface nodes to every rank
                 (recursive doubling: log2 N latencies + the whole surface over the link);
                 distributed: the ghost rows of the region's band (both surfaces) from <= 8 neighbours:
                 owner computes 24 B a row (positions; the frictionless and adhesive laws read nothing
-                else) and 24 B of force sent back; --redundant 72 B (positions, velocities, forces)
+                else) and 24 B of force sent back; --tangential 72 B (positions, velocities, forces),
+                24 B back and 64 B for the pairs' completion, in three more exchanges; --redundant 72 B
   reductions    the stable step every 10 steps: one MPI_Allreduce, log2 N latencies
 Memory per rank: replicated set-up holds the whole model on every rank (M_1, measured);
 distributed: (M_1 - M_0) / N + M_0, M_0 the part that does not divide (code, libraries, MPI buffers).
 
-usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--halo-nodes h] [--redundant]
+usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--halo-nodes h]
+                        [--redundant | --tangential]
                         [--ns-element C] [--ns-slave-node C]
                         [--serial-rss-mb M] [--surface-nodes NS] [--latency-us L] [--bandwidth-gbs B]
                         [--rank-memory-gb G] [--csv FILE]
@@ -50,8 +53,16 @@ def step_costs(n, a):
     # ghost rows of both surfaces from at most 8 neighbours.
     share = a.slave_nodes / min(n, max(1.0, a.slave_nodes / a.slave_nodes_per_rank))
     region = a.slave_nodes if n == 1 else min(a.slave_nodes, (math.sqrt(share) + 2 * a.halo_nodes) ** 2)
-    contact_dist = (region if a.redundant else share) * a.ns_slave_node * 1e-9
-    ghosts = 0.0 if n == 1 else min(8, n - 1) * lat + 2 * (region - share) * (72 if a.redundant else 48) / bw
+    if a.redundant:  # every slave node of the region; rows of x, v, f
+        computed, row, rounds = region, 72, 1
+    elif a.tangential:  # own nodes and the ring around them (contact shares); rows of x, v, f, forces
+        # back, and the pairs' completion (4 doubles each way): three more exchanges
+        computed = a.slave_nodes if n == 1 else min(a.slave_nodes, (math.sqrt(share) + 2) ** 2)
+        row, rounds = 72 + 24 + 64, 3
+    else:
+        computed, row, rounds = share, 48, 1
+    contact_dist = computed * a.ns_slave_node * 1e-9
+    ghosts = 0.0 if n == 1 else rounds * min(8, n - 1) * lat + 2 * (region - share) * row / bw
     mem_rep = a.serial_rss_mb * 1e6
     mem_dist = (a.serial_rss_mb - a.fixed_rss_mb) * 1e6 / n + a.fixed_rss_mb * 1e6
     rep = {"elements": elements, "halo": halo, "reductions": reduce, "contact": contact_rep, "surface": gather}
@@ -69,7 +80,10 @@ def main():
                     help="h: the contact region's reach in slave-node spacings (counts_indenter.i, owner computes: "
                          "5.7 nm / 1 nm; a tangential law's redundant region about 4 hops of 3.6 nm)")
     ap.add_argument("--redundant", action="store_true",
-                    help="the redundant region of the tangential laws and mortar (every slave node of the region computed)")
+                    help="mortar's redundant region (every slave node of the region computed)")
+    ap.add_argument("--tangential", action="store_true",
+                    help="owner computes for the tangential laws (junction, Coulomb): the ring of slave nodes around a "
+                         "rank's own projected too, 160 B per ghost row and step, three more exchanges")
     ap.add_argument("--surface-nodes", type=float, default=11_162, help="contact surface nodes (both surfaces)")
     ap.add_argument("--ns-element", type=float, default=85.0, help="c_el, ns per element per step")
     ap.add_argument("--ns-slave-node", type=float, default=340.0, help="c_node, ns per slave node per step")
