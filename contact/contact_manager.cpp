@@ -50,9 +50,8 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
   fit_r2_.reserve(primary_slave_nodes);
   fit_p2_.reserve(primary_slave_nodes);
   plan_.assign(passes_.size(), 0.0);
-  maxima_.assign(2 + passes_.size(), 0.0);
-  located_value_.assign(1 + 2 * passes_.size(), 0.0);
-  located_node_.assign(1 + 2 * passes_.size(), -1);
+  located_value_.assign(3 + 3 * passes_.size(), 0.0);
+  located_node_.assign(3 + 3 * passes_.size(), -1);
   for (const auto& s : surfaces_) all_nodes_.insert(all_nodes_.end(), s.nodes.begin(), s.nodes.end());
   std::sort(all_nodes_.begin(), all_nodes_.end());
   all_nodes_.erase(std::unique(all_nodes_.begin(), all_nodes_.end()), all_nodes_.end());

@@ -260,8 +260,9 @@ class ContactManager {
   ContactReductions* reductions_ = nullptr;
   UncountedTotals uncounted_;
   std::vector<double> plan_;    // [pass] scratch of plan_searches
-  std::vector<double> maxima_;  // [2 + pass] scratch of reduce_totals
-  std::vector<double> located_value_;  // [1 + 2 pass] scratch of reduce_totals
+  // Scratch of reduce_totals: the maxima (penetration, radius, each pass's stable step; no node) and
+  // the located maxima (penetration ratio, each pass's fastest slave and master), one reduction.
+  std::vector<double> located_value_;  // [3 + 3 pass]
   std::vector<int> located_node_;
   double largest_face_diameter_ = 0.0;  // over every surface in the reference positions, m (region_reach)
   Axis axis_;

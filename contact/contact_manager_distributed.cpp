@@ -137,29 +137,33 @@ void ContactManager::reduce_totals(ContactTotals& t, double friction[3]) {
   t.nodes = static_cast<int>(std::lround(*s++));
   for (double* field : {&t.real_area, &t.asperity_contacts, &t.nominal_area, &friction[0], &friction[1], &friction[2]})
     *field = *s++;
-  // Maxima: penetration, radius, and the passes' stable steps as their negatives.
-  maxima_[0] = t.max_penetration;
-  maxima_[1] = t.radius_max;
-  for (std::size_t i = 0; i < passes_.size(); ++i) maxima_[2 + i] = -passes_[i].stable_dt;
-  reductions_->max(maxima_.data(), static_cast<int>(maxima_.size()));
-  t.max_penetration = maxima_[0];
-  t.radius_max = maxima_[1];
-  for (std::size_t i = 0; i < passes_.size(); ++i) passes_[i].stable_dt = -maxima_[2 + i];
-  // Located maxima: the penetration ratio and each pass's fastest slave and master speeds.
-  located_value_[0] = t.max_penetration_ratio;
-  located_node_[0] = t.penetration_node;
-  for (std::size_t i = 0; i < passes_.size(); ++i)
+  // Maxima and located maxima in one reduction (a maximum located at node 0 is the plain maximum):
+  // the penetration, radius and the passes' stable steps as their negatives, then the penetration
+  // ratio and each pass's fastest slave and master speeds with their nodes.
+  const std::size_t np = passes_.size(), located = 2 + np;
+  double* value = located_value_.data();
+  int* node = located_node_.data();
+  value[0] = t.max_penetration;
+  value[1] = t.radius_max;
+  for (std::size_t i = 0; i < np; ++i) value[2 + i] = -passes_[i].stable_dt;
+  std::fill(node, node + located, 0);
+  value[located] = t.max_penetration_ratio;
+  node[located] = t.penetration_node;
+  for (std::size_t i = 0; i < np; ++i)
     for (int side = 0; side < 2; ++side) {
-      located_value_[1 + 2 * i + side] = passes_[i].fastest[side];
-      located_node_[1 + 2 * i + side] = passes_[i].fastest_node[side];
+      value[located + 1 + 2 * i + side] = passes_[i].fastest[side];
+      node[located + 1 + 2 * i + side] = passes_[i].fastest_node[side];
     }
-  reductions_->max_at(located_value_.data(), located_node_.data(), static_cast<int>(located_value_.size()));
-  t.max_penetration_ratio = located_value_[0];
-  t.penetration_node = located_node_[0];
-  for (std::size_t i = 0; i < passes_.size(); ++i)
+  reductions_->max_at(value, node, static_cast<int>(located_value_.size()));
+  t.max_penetration = value[0];
+  t.radius_max = value[1];
+  for (std::size_t i = 0; i < np; ++i) passes_[i].stable_dt = -value[2 + i];
+  t.max_penetration_ratio = value[located];
+  t.penetration_node = node[located];
+  for (std::size_t i = 0; i < np; ++i)
     for (int side = 0; side < 2; ++side) {
-      passes_[i].fastest[side] = located_value_[1 + 2 * i + side];
-      passes_[i].fastest_node[side] = located_node_[1 + 2 * i + side];
+      passes_[i].fastest[side] = value[located + 1 + 2 * i + side];
+      passes_[i].fastest_node[side] = node[located + 1 + 2 * i + side];
     }
 }
 
