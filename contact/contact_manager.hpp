@@ -254,9 +254,9 @@ class ContactManager {
   bool owner_computes_ = false;
   std::vector<char> projected_;
   std::vector<char> seeds_;  // owner_computes(): [node] counted slave nodes (seeds_region)
-  // owner_computes() with tangential pairs: scratch of the pairs' completed forces [node][3] and master
-  // shares [node] (PassView::completion), and of both in one row [node][4] for the exchange; empty otherwise.
-  std::vector<double> completed_force_, completed_share_, completed_rows_;
+  // owner_computes() with tangential pairs: scratch of the pairs' completed forces and master shares
+  // [node][4] (PassView::completion); empty otherwise.
+  std::vector<double> completed_;
   ContactReductions* reductions_ = nullptr;
   UncountedTotals uncounted_;
   std::vector<double> plan_;    // [pass] scratch of plan_searches

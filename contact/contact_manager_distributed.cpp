@@ -22,19 +22,13 @@ void ContactManager::distribute(std::vector<char> counted, ContactReductions* re
       std::any_of(passes_.begin(), passes_.end(), [](const Pass& p) { return has_tangential_pairs(p.law); });
   projected_.clear();
   seeds_.clear();
-  completed_force_.clear();
-  completed_share_.clear();
-  completed_rows_.clear();
+  completed_.clear();
   if (owner_computes_) {
     projected_ = counted_;
     seeds_.assign(counted_.size(), 0);
     for (const auto& p : passes_)
       for (int node : surfaces_[p.slave].nodes) seeds_[node] = counted_[node];
-    if (tangential) {
-      completed_force_.assign(3 * counted_.size(), 0.0);
-      completed_share_.assign(counted_.size(), 0.0);
-      completed_rows_.assign(4 * counted_.size(), 0.0);
-    }
+    if (tangential) completed_.assign(4 * counted_.size(), 0.0);
     // The gaps of the slave faces around the counted nodes: the edge radius (axis) and the junction's
     // contact shares (laws/junction.cpp) read them.
     if (axis_.set || tangential)

@@ -24,8 +24,7 @@ void ContactManager::node_to_face_with(const Law& law, Pass& p, const StepInputs
                 in.force, traction_.data(), status_.data(), totals, friction,     p.factor, p.primary,
                 p.margin, axis_,          p.pairs,      master_share_, p.gap,     p.law_state.data(), p.stable_dt,
                 counted_.empty() ? nullptr : counted_.data(), &uncounted_,
-                completed_share_.empty() ? nullptr : reductions_, completed_force_.data(), completed_share_.data(),
-                completed_rows_.data()};
+                completed_.empty() ? nullptr : reductions_, completed_.data()};
   constexpr bool has_point_hook = requires(ContactPoint& q) { law.at_point(q, view); };
   constexpr bool area_from_shares = requires { Law::area_from_shares; };
   p.face_bounds.next_step();

@@ -93,11 +93,10 @@ struct PassView {
   UncountedTotals* uncounted;
   // Owner computes (ContactManager::owner_computes) with tangential pairs: other ranks' pairs load
   // this rank's nodes too, so the pair prediction completes the forces and master shares over the
-  // ranks into these scratch rows ([node][3], [node]) first. nullptr: a serial or redundant run.
+  // ranks into the scratch rows `completed` [node][4] (force, share) first. nullptr: a serial or
+  // redundant run.
   ContactReductions* completion;
-  double* completed_force;
-  double* completed_share;
-  double* completed_rows;  // [node][4] force and share, one exchange
+  double* completed;
 
   bool counts(int node) const { return counted == nullptr || counted[node] != 0; }
   /// Where a contribution of slave node `node` to the totals goes.

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "contact/node_to_face/tangential_pairs.hpp"
 
-#include <algorithm>
-
 #include "contact/geometry/axis_distance.hpp"
 
 namespace tribex::contact {
@@ -38,25 +36,23 @@ void PassView::count_contact(const ContactPoint& p, bool count_area) const {
 namespace {
 
 // Owner computes: this rank's parts of the contact forces and master shares, summed over the ranks
-// into the view's scratch rows (every rank calls this in every tangential pass: it communicates).
+// into the view's scratch rows [node][4] (every rank calls this in every tangential pass: it communicates).
 void complete_over_ranks(PassView& view) {
   const std::size_t n = view.mass.size();
-  double* rows = view.completed_rows;
+  double* rows = view.completed;
   for (std::size_t k = 0; k < n; ++k) {
     for (int i = 0; i < 3; ++i) rows[4 * k + i] = view.force[3 * k + i];
     rows[4 * k + 3] = view.master_share[k];
   }
   view.completion->complete_node_sums(rows, 4);
-  for (std::size_t k = 0; k < n; ++k) {
-    for (int i = 0; i < 3; ++i) view.completed_force[3 * k + i] = rows[4 * k + i];
-    view.completed_share[k] = rows[4 * k + 3];
-  }
 }
 
 // What the prediction and the pair mass read: the completed rows where other ranks' pairs add to them.
-const double* pair_forces(const PassView& view) { return view.completion ? view.completed_force : view.force; }
-const double* master_shares(const PassView& view) {
-  return view.completion ? view.completed_share : view.master_share.data();
+double force_of(const PassView& view, int node, int i) {
+  return view.completion ? view.completed[4 * node + i] : view.force[3 * node + i];
+}
+double share_of(const PassView& view, int node) {
+  return view.completion ? view.completed[4 * node + 3] : view.master_share[node];
 }
 
 }  // namespace
@@ -69,9 +65,8 @@ void predict_pair_velocities(PassView& view) {
     for (int a = 0; a < 4; ++a) view.master_share[fn[a]] += q.shape[4 * j + a];
   }
   if (view.completion) complete_over_ranks(view);
-  const double* force = pair_forces(view);
   auto predicted = [&](int node, int i) {
-    const double f = force[3 * node + i] + (view.other_force ? view.other_force[3 * node + i] : 0.0);
+    const double f = force_of(view, node, i) + (view.other_force ? view.other_force[3 * node + i] : 0.0);
     return view.is_prescribed(node) ? view.v[3 * node + i] : view.v[3 * node + i] + view.dt * f / view.mass[node];
   };
   // Trial velocities of all pairs first (Jacobi: the forces of one pair do not enter another's trial).
@@ -104,10 +99,9 @@ double pair_mass(const PassView& view, int j) {
   const int* fn = &view.master.face_nodes[4 * q.face[j]];
   const double* N = &q.shape[4 * j];
   // A node whose velocity is prescribed takes no share (its mass is infinite for the pair).
-  const double* share = master_shares(view);
   double inv_m = view.is_prescribed(node) ? 0.0 : 1.0 / view.mass[node];
   for (int a = 0; a < 4; ++a)
-    if (!view.is_prescribed(fn[a])) inv_m += N[a] * share[fn[a]] / view.mass[fn[a]];
+    if (!view.is_prescribed(fn[a])) inv_m += N[a] * share_of(view, fn[a]) / view.mass[fn[a]];
   // A symmetric interaction updates the pair in both passes, each with half the capacity and
   // half the stick force (pair mass times the pass factor). Both sides prescribed: no update (0).
   return inv_m > 0.0 ? view.factor / inv_m : 0.0;
