@@ -29,6 +29,11 @@ struct ContactSurface {
 
   int face_count() const { return static_cast<int>(face_nodes.size() / 4); }
   int node_count() const { return static_cast<int>(nodes.size()); }
+  /// The positions of face `face`'s four nodes, X [4][3], from x [node][3].
+  void face_coordinates(const double* x, int face, double X[12]) const {
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * face_nodes[4 * face + a] + i];
+  }
 };
 
 /// Surface from the side sets `side_sets` of `mesh` (which must exist; the caller reports a missing

@@ -10,27 +10,8 @@ namespace {
 constexpr double xi_a[4] = {-1, 1, 1, -1};
 constexpr double eta_a[4] = {-1, -1, 1, 1};
 
-struct FaceMap {
-  double x[3], xs[3], xe[3];  // position and tangents x_{,xi}, x_{,eta}
-};
-
-FaceMap evaluate(const double X[12], double s, double t) {
-  FaceMap m{};
-  for (int a = 0; a < 4; ++a) {
-    const double N = 0.25 * (1 + xi_a[a] * s) * (1 + eta_a[a] * t);
-    const double Ns = 0.25 * xi_a[a] * (1 + eta_a[a] * t);
-    const double Nt = 0.25 * eta_a[a] * (1 + xi_a[a] * s);
-    for (int i = 0; i < 3; ++i) {
-      m.x[i] += N * X[3 * a + i];
-      m.xs[i] += Ns * X[3 * a + i];
-      m.xe[i] += Nt * X[3 * a + i];
-    }
-  }
-  return m;
-}
-
 void finish(const double X[12], const double p[3], double s, double t, Projection& out) {
-  const FaceMap m = evaluate(X, s, t);
+  const FaceMap m = face_map(X, s, t);
   double n[3] = {m.xs[1] * m.xe[2] - m.xs[2] * m.xe[1], m.xs[2] * m.xe[0] - m.xs[0] * m.xe[2],
                  m.xs[0] * m.xe[1] - m.xs[1] * m.xe[0]};
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -72,6 +53,21 @@ void closest_on_edge(const double X[12], const double p[3], int a, int b, double
 
 }  // namespace
 
+FaceMap face_map(const double X[12], double s, double t) {
+  FaceMap m{};
+  for (int a = 0; a < 4; ++a) {
+    const double N = 0.25 * (1 + xi_a[a] * s) * (1 + eta_a[a] * t);
+    const double Ns = 0.25 * xi_a[a] * (1 + eta_a[a] * t);
+    const double Nt = 0.25 * eta_a[a] * (1 + xi_a[a] * s);
+    for (int i = 0; i < 3; ++i) {
+      m.x[i] += N * X[3 * a + i];
+      m.xs[i] += Ns * X[3 * a + i];
+      m.xe[i] += Nt * X[3 * a + i];
+    }
+  }
+  return m;
+}
+
 Projection project_onto_quad(const double X[12], const double p[3], double tolerance) {
   Projection out;
   // x_{,xi eta} = (x1 - x2 + x3 - x4)/4 is constant on a bilinear face.
@@ -80,7 +76,7 @@ Projection project_onto_quad(const double X[12], const double p[3], double toler
   double s = 0.0, t = 0.0;
   bool converged = false;
   for (int it = 0; it < 20; ++it) {
-    const FaceMap m = evaluate(X, s, t);
+    const FaceMap m = face_map(X, s, t);
     double r[3];
     for (int i = 0; i < 3; ++i) r[i] = m.x[i] - p[i];
     const double g1 = r[0] * m.xs[0] + r[1] * m.xs[1] + r[2] * m.xs[2];

@@ -18,6 +18,12 @@ struct Projection {
   double shape[4] = {0, 0, 0, 0};  // N_a(xi, eta) at the closest point
 };
 
+/// The face map at (xi, eta): position and tangents x_{,xi}, x_{,eta} of the face X [4][3].
+struct FaceMap {
+  double x[3], xs[3], xe[3];
+};
+FaceMap face_map(const double X[12], double xi, double eta);
+
 /// How far outside the parametric square a Newton point still counts as over the face.
 inline constexpr double interior_tolerance = 1e-3;
 

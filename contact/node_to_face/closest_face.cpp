@@ -28,8 +28,7 @@ bool at_kink(const ContactSurface& master, int face, const double* p, Projection
 
 Projection project(const double* x, const ContactSurface& master, int face, const double* p) {
   double X[12];
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * master.face_nodes[4 * face + a] + i];
+  master.face_coordinates(x, face, X);
   return project_onto_quad(X, p);
 }
 

@@ -12,17 +12,12 @@ namespace {
 constexpr double xi_a[4] = {-1, 1, 1, -1};
 constexpr double eta_a[4] = {-1, -1, 1, 1};
 
-// x_{,xi} x x_{,eta} at (s, t) (quad_projection.cpp's face map), not normalised.
+// x_{,xi} x x_{,eta} at (s, t) (the face map of quad_projection.hpp), not normalised.
 void normal_at(const double X[12], double s, double t, double n[3]) {
-  double xs[3] = {0, 0, 0}, xe[3] = {0, 0, 0};
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) {
-      xs[i] += 0.25 * xi_a[a] * (1 + eta_a[a] * t) * X[3 * a + i];
-      xe[i] += 0.25 * eta_a[a] * (1 + xi_a[a] * s) * X[3 * a + i];
-    }
-  n[0] = xs[1] * xe[2] - xs[2] * xe[1];
-  n[1] = xs[2] * xe[0] - xs[0] * xe[2];
-  n[2] = xs[0] * xe[1] - xs[1] * xe[0];
+  const FaceMap m = face_map(X, s, t);
+  n[0] = m.xs[1] * m.xe[2] - m.xs[2] * m.xe[1];
+  n[1] = m.xs[2] * m.xe[0] - m.xs[0] * m.xe[2];
+  n[2] = m.xs[0] * m.xe[1] - m.xs[1] * m.xe[0];
 }
 
 double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -118,8 +113,7 @@ void FaceBounds::next_step() {
 const FaceBound& FaceBounds::of(const double* x, const ContactSurface& surface, int face) {
   if (stamp_[face] != epoch_) {
     double X[12];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) X[3 * a + i] = x[3 * surface.face_nodes[4 * face + a] + i];
+    surface.face_coordinates(x, face, X);
     bound_[face] = bound_face(X, interior_tolerance);
     stamp_[face] = epoch_;
   }
