@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 
 #include "solver/parallel/domain.hpp"
 
@@ -239,6 +240,11 @@ void ContactRegion::sum_to_holders(double* values, int width) {
 }
 
 void ContactRegion::complete_node_sums(double* values, int width) {
+  // The ghost buffers hold row_values_ doubles a node (set_fields): enough for the tangential laws'
+  // 4, whose rows carry x, v and f (9).
+  if (width > row_values_)
+    throw std::logic_error("ContactRegion::complete_node_sums: " + std::to_string(width) + " values a node, rows of " +
+                           std::to_string(row_values_));
   sum_to_holders(values, width);
   if (comm_ == MPI_COMM_NULL) return;
   const double start = now();
