@@ -434,11 +434,19 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
   if (region.mass_scaling) {
     const auto& tc = deck.procedure.time_control;
     if (region.contact) unscaled_mass = model.mass;
+    if (model.mass_damping > 0.0) model.damping_mass = model.mass;
     model.mass_scaling = apply_mass_scaling(*region.mass_scaling, tc.time_step_scale_factor,
                                             tc.maximum_time_step.value_or(INFINITY), model);
   }
   domain.sum_shared(model.mass.data(), 1);
   if (!unscaled_mass.empty()) domain.sum_shared(unscaled_mass.data(), 1);
+  if (!model.damping_mass.empty()) {
+    domain.sum_shared(model.damping_mass.data(), 1);
+    if (model.mass_scaling.active)
+      model.preflight.push_back("  mass damping from the unscaled masses (mass scaling): the damping force of the deck without it");
+    else
+      model.damping_mass.clear();
+  }
   parallel::sum(&model.total_mass, 1);
   if (!silent.area.empty()) {
     domain.sum_shared(silent.area.data(), 3);

@@ -69,6 +69,9 @@ struct Model {
   std::vector<NodalForceLoad> nodal_forces;
   SilentBoundaryNodes silent;
   double mass_damping = 0.0;           // 1/s
+  /// [node] kg: the mass the mass damping force -c m v acts with, the unscaled lumped mass when mass
+  /// scaling is active and the region is damped (docs/theory.md 1.4.1); empty: Model::mass.
+  std::vector<double> damping_mass;
   double total_mass = 0.0;             // kg, unscaled (rho V0 summed); Model::mass includes mass scaling
   MassScalingReport mass_scaling;      // `begin mass scaling`: what set-up added (inactive without the block)
   std::vector<int> element_block;      // [element] index into blocks

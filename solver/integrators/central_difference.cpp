@@ -67,6 +67,14 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   for (std::size_t n = 0; n < model.mass.size(); ++n) inverse_mass_[n] = 1.0 / model.mass[n];
   owned_mass_.resize(model.mass.size());
   for (std::size_t n = 0; n < model.mass.size(); ++n) owned_mass_[n] = model.domain.owned[n] * model.mass[n];
+  if (!model.damping_mass.empty()) {
+    damping_share_.resize(model.mass.size());
+    owned_damping_mass_.resize(model.mass.size());
+    for (std::size_t n = 0; n < model.mass.size(); ++n) {
+      damping_share_[n] = model.damping_mass[n] / model.mass[n];
+      owned_damping_mass_[n] = model.domain.owned[n] * model.damping_mass[n];
+    }
+  }
   for (const auto& load : model.nodal_forces) loaded_dofs_.insert(loaded_dofs_.end(), load.dof.begin(), load.dof.end());
   for (const auto& load : model.pressures)
     for (int node : load.face_nodes)
@@ -268,14 +276,26 @@ void CentralDifference::update_velocity() {
   double* v_plus = v_.data();
   const double* force = f_.data();
   const double* inverse_mass = inverse_mass_.data();
-  // (m/h + c m/2) v+ = (m/h - c m/2) v- + f; without damping keep = 1 and gain = h exactly, so
-  // one loop serves both (1 * v is exact: the same bits as v += h f / m).
-  const double keep = (1.0 - 0.5 * cm * h) / (1.0 + 0.5 * cm * h), gain = h / (1.0 + 0.5 * cm * h);
-  for (std::size_t n = 0; n < nodes; ++n) {
-    const double g = gain * inverse_mass[n];
-    v_plus[3 * n] = keep * v_minus[3 * n] + g * force[3 * n];
-    v_plus[3 * n + 1] = keep * v_minus[3 * n + 1] + g * force[3 * n + 1];
-    v_plus[3 * n + 2] = keep * v_minus[3 * n + 2] + g * force[3 * n + 2];
+  // (m/h + c m_d/2) v+ = (m/h - c m_d/2) v- + f, m_d the damped mass. Where m_d = m (no mass scaling)
+  // keep and gain are the same for every node; without damping keep = 1 and gain = h exactly, so one
+  // loop serves both (1 * v is exact: the same bits as v += h f / m).
+  if (damping_share_.empty()) {
+    const double keep = (1.0 - 0.5 * cm * h) / (1.0 + 0.5 * cm * h), gain = h / (1.0 + 0.5 * cm * h);
+    for (std::size_t n = 0; n < nodes; ++n) {
+      const double g = gain * inverse_mass[n];
+      v_plus[3 * n] = keep * v_minus[3 * n] + g * force[3 * n];
+      v_plus[3 * n + 1] = keep * v_minus[3 * n + 1] + g * force[3 * n + 1];
+      v_plus[3 * n + 2] = keep * v_minus[3 * n + 2] + g * force[3 * n + 2];
+    }
+  } else {
+    const double* share = damping_share_.data();
+    for (std::size_t n = 0; n < nodes; ++n) {
+      const double half_ch = 0.5 * cm * h * share[n], denominator = 1.0 / (1.0 + half_ch);
+      const double keep = (1.0 - half_ch) * denominator, g = h * denominator * inverse_mass[n];
+      v_plus[3 * n] = keep * v_minus[3 * n] + g * force[3 * n];
+      v_plus[3 * n + 1] = keep * v_minus[3 * n + 1] + g * force[3 * n + 1];
+      v_plus[3 * n + 2] = keep * v_minus[3 * n + 2] + g * force[3 * n + 2];
+    }
   }
   // Silent-boundary nodes: semi-implicit dashpots, normal and tangential parts separately.
   const auto& sb = model_.silent;
@@ -287,7 +307,7 @@ void CentralDifference::update_velocity() {
     const double* f = &f_[3 * n];
     const double vn = vm[0] * nv[0] + vm[1] * nv[1] + vm[2] * nv[2];
     const double fn = f[0] * nv[0] + f[1] * nv[1] + f[2] * nv[2];
-    const double cn = sb.c_normal[k] + cm * m, ct = sb.c_tangential[k] + cm * m;
+    const double cn = sb.c_normal[k] + cm * damping_mass(n), ct = sb.c_tangential[k] + cm * damping_mass(n);
     const double vn_new = ((m / h - 0.5 * cn) * vn + fn) / (m / h + 0.5 * cn);
     for (int i = 0; i < 3; ++i) {
       const double vt = vm[i] - vn * nv[i], ft = f[i] - fn * nv[i];
@@ -317,7 +337,7 @@ void CentralDifference::apply_constraints() {
     const int node = dof / 3, i = dof % 3;
     const double m = model_.mass[node];
     const double vbar = 0.5 * (v_[dof] + v_prev_[dof]);
-    double damping = -model_.mass_damping * m * vbar;
+    double damping = -model_.mass_damping * damping_mass(node) * vbar;
     if (const int k = silent_index_.empty() ? -1 : silent_index_[node]; k >= 0) {
       const double* nv = &sb.normal[3 * k];
       double vn = 0.0;
@@ -342,16 +362,17 @@ void CentralDifference::account_time_n() {
   const double* v_minus = v_prev_.data();
   const double* v_plus = v_.data();
   const double* mass = owned_mass_.data();
+  const double* damped_mass = owned_damping_mass_.empty() ? mass : owned_damping_mass_.data();
   double p[3] = {0.0, 0.0, 0.0};
   double damp_left = 0.0, damp_right = 0.0;
   for (std::size_t n = 0; n < nodes; ++n) {
-    const double m = mass[n];
+    const double m = mass[n], md = damped_mass[n];
     for (std::size_t d = 3 * n, i = 0; i < 3; ++d, ++i) {
       const double vn = velocity_at_n(first_step, v_minus[d], v_plus[d]);
       p[i] += m * vn;
       ke += 0.5 * m * v_minus[d] * v_plus[d];
-      damp_left += m * vn * v_minus[d];
-      damp_right += m * vn * v_plus[d];
+      damp_left += md * vn * v_minus[d];
+      damp_right += md * vn * v_plus[d];
     }
   }
   for (int i = 0; i < 3; ++i) momentum_[i] = p[i];

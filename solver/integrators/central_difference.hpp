@@ -111,6 +111,12 @@ class CentralDifference {
   std::vector<int> loaded_dofs_;             // dofs that nodal forces or pressures load, ascending
   std::vector<double> inverse_mass_;
   std::vector<double> owned_mass_;  // [local node] mass where this rank owns the node, else 0 (energy sums)
+  // Mass damping on mass-scaled models (Model::damping_mass; both empty otherwise): [local node] the damped
+  // mass over the lumped mass, and the damped mass where this rank owns the node, else 0.
+  std::vector<double> damping_share_, owned_damping_mass_;
+  double damping_mass(std::size_t node) const {
+    return model_.damping_mass.empty() ? model_.mass[node] : model_.damping_mass[node];
+  }
   std::string pending_failure_;     // a numerical failure met on this rank, raised collectively
   std::vector<int> silent_index_;  // [node] index into model.silent, -1 if none (empty: no silent nodes)
   Energies energies_;
