@@ -189,7 +189,11 @@ void ContactRegion::size_buffers() {
   for (int k : recv_node_) present_[static_cast<std::size_t>(k)] = 1;
   send_.assign(static_cast<std::size_t>(row_values_) * send_node_.size(), 0.0);
   recv_.assign(static_cast<std::size_t>(row_values_) * recv_node_.size(), 0.0);
+  rows_send_.assign((kMaxSumWidth + 1) * send_node_.size(), 0.0);
+  rows_recv_.assign((kMaxSumWidth + 1) * recv_node_.size(), 0.0);
   requests_.reserve(2 * static_cast<std::size_t>(members_));
+  rows_peer_.reserve(static_cast<std::size_t>(members_));
+  statuses_.resize(2 * static_cast<std::size_t>(members_));
 }
 
 void ContactRegion::exchange(int width, bool reverse) {
@@ -215,17 +219,75 @@ void ContactRegion::exchange(int width, bool reverse) {
   MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
 }
 
+void ContactRegion::exchange_rows(double* values, int width, bool reverse) {
+  const std::size_t w = static_cast<std::size_t>(width), stride = w + 1;
+  const std::vector<int>& out_node = reverse ? recv_node_ : send_node_;
+  const std::vector<int>& in_node = reverse ? send_node_ : recv_node_;
+  const std::vector<int>& out_offset = reverse ? recv_offset_ : send_offset_;
+  const std::vector<int>& in_offset = reverse ? send_offset_ : recv_offset_;
+  double* out = reverse ? rows_recv_.data() : rows_send_.data();
+  double* in = reverse ? rows_send_.data() : rows_recv_.data();
+  requests_.clear();
+  rows_peer_.clear();
+  for (int q = 0; q < members_; ++q) {
+    const int count = in_offset[q + 1] - in_offset[q];
+    if (count == 0) continue;
+    requests_.emplace_back();
+    rows_peer_.push_back(q);
+    MPI_Irecv(in + stride * in_offset[q], static_cast<int>(stride) * count, MPI_DOUBLE, q, 8, comm_, &requests_.back());
+  }
+  const std::size_t receives = requests_.size();
+  long long sent = 0;
+  for (int q = 0; q < members_; ++q) {
+    const int first = out_offset[q], count = out_offset[q + 1] - first;
+    if (count == 0) continue;
+    double* message = out + stride * first;
+    double* row = message;
+    for (int j = 0; j < count; ++j) {
+      const double* v = values + w * static_cast<std::size_t>(out_node[first + j]);
+      // A row of +0.0 bits is not sent (the receiver adds or assigns +0.0 for it); -0.0 travels.
+      bool nonzero = false;
+      for (std::size_t i = 0; i < w; ++i) nonzero = nonzero || std::signbit(v[i]) || v[i] != 0.0;
+      if (!nonzero) continue;
+      *row++ = j;
+      for (std::size_t i = 0; i < w; ++i) *row++ = v[i];
+    }
+    const int length = static_cast<int>(row - message);
+    sent += length;
+    requests_.emplace_back();
+    MPI_Isend(message, length, MPI_DOUBLE, q, 8, comm_, &requests_.back());
+  }
+  MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), statuses_.data());
+  long long received = 0;
+  for (std::size_t r = 0; r < receives; ++r) {
+    const int q = rows_peer_[r], first = in_offset[q], count = in_offset[q + 1] - first;
+    int length = 0;
+    MPI_Get_count(&statuses_[r], MPI_DOUBLE, &length);
+    received += length;
+    const double* row = in + stride * first;
+    const double* end = row + length;
+    for (int j = 0; j < count; ++j) {
+      double* v = values + w * static_cast<std::size_t>(in_node[first + j]);
+      const bool listed = row < end && static_cast<int>(*row) == j;
+      for (std::size_t i = 0; i < w; ++i) {
+        const double value = listed ? row[1 + i] : 0.0;
+        v[i] = reverse ? v[i] + value : value;
+      }
+      if (listed) row += stride;
+    }
+  }
+  domain_.traffic.surface_sent += static_cast<long long>(sizeof(double)) * sent;
+  domain_.traffic.surface_received += static_cast<long long>(sizeof(double)) * received;
+}
+
 void ContactRegion::sum_to_holders(double* values, int width) {
+  if (width > kMaxSumWidth)
+    throw std::logic_error("ContactRegion::sum_to_holders: " + std::to_string(width) + " values a node, at most " +
+                           std::to_string(kMaxSumWidth));
   const std::size_t w = static_cast<std::size_t>(width);
   if (comm_ != MPI_COMM_NULL) {
     const double start = now();
-    for (std::size_t j = 0; j < recv_node_.size(); ++j)
-      for (std::size_t i = 0; i < w; ++i) recv_[w * j + i] = values[w * static_cast<std::size_t>(recv_node_[j]) + i];
-    exchange(width, true);
-    for (std::size_t j = 0; j < send_node_.size(); ++j)
-      for (std::size_t i = 0; i < w; ++i) values[w * static_cast<std::size_t>(send_node_[j]) + i] += send_[w * j + i];
-    domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * w * recv_node_.size());
-    domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * w * send_node_.size());
+    exchange_rows(values, width, true);
     domain_.communication_seconds += now() - start;
   }
   // The shared surface nodes, in the domain's numbering (the halo sum's).
@@ -240,22 +302,10 @@ void ContactRegion::sum_to_holders(double* values, int width) {
 }
 
 void ContactRegion::complete_node_sums(double* values, int width) {
-  // The ghost buffers hold row_values_ doubles a node (set_fields): enough for the tangential laws'
-  // 4, whose rows carry x, v and f (9).
-  if (width > row_values_)
-    throw std::logic_error("ContactRegion::complete_node_sums: " + std::to_string(width) + " values a node, rows of " +
-                           std::to_string(row_values_));
   sum_to_holders(values, width);
   if (comm_ == MPI_COMM_NULL) return;
   const double start = now();
-  const std::size_t w = static_cast<std::size_t>(width);
-  for (std::size_t j = 0; j < send_node_.size(); ++j)
-    for (std::size_t i = 0; i < w; ++i) send_[w * j + i] = values[w * static_cast<std::size_t>(send_node_[j]) + i];
-  exchange(width);
-  for (std::size_t j = 0; j < recv_node_.size(); ++j)
-    for (std::size_t i = 0; i < w; ++i) values[w * static_cast<std::size_t>(recv_node_[j]) + i] = recv_[w * j + i];
-  domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * w * send_node_.size());
-  domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * w * recv_node_.size());
+  exchange_rows(values, width, false);
   domain_.communication_seconds += now() - start;
 }
 

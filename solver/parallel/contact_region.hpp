@@ -52,10 +52,12 @@ class ContactRegion final : public contact::ContactReductions {
   /// owners (this rank's own rows current).
   void fill_ghosts(double* xg, double* vg, double* fg);
   /// Owner-computes contact (ContactManager::owner_computes): the parts of a nodal sum, values
-  /// [surface node][width] (width <= 4), that this rank put on its ghost nodes go back to their owners,
-  /// who add them to their rows (in member order), then the rows of surface nodes shared by several
-  /// ranks are summed over their holders: every rank has the whole sum on the nodes it holds.
+  /// [surface node][width] (width <= kMaxSumWidth), that this rank put on its ghost nodes go back to
+  /// their owners, who add them to their rows (in member order), then the rows of surface nodes shared
+  /// by several ranks are summed over their holders: every rank has the whole sum on the nodes it holds.
+  /// Sparse: only the ghost rows with a nonzero bit travel (the contact zone's, not the region's).
   void sum_to_holders(double* values, int width);
+  static constexpr int kMaxSumWidth = 4;
   /// [surface node] 1 for the nodes of this rank's region (held or ghost).
   const std::vector<char>& present() const { return present_; }
 
@@ -75,6 +77,11 @@ class ContactRegion final : public contact::ContactReductions {
   /// Sends `width` doubles per listed node from `send_` and receives into `recv_` (reverse: from
   /// `recv_` back to the senders' `send_`).
   void exchange(int width, bool reverse = false);
+  /// The rows of `values` [surface node][width] along the send lists to the receive lists (reverse:
+  /// the receive lists' rows back along the send lists), only those with a nonzero bit: a message is
+  /// (position in the list, width values) per row sent. The receiver adds (reverse) or assigns each
+  /// listed row's value, +0.0 for a row not sent, in list order: the dense exchange's bits exactly.
+  void exchange_rows(double* values, int width, bool reverse);
 
   Domain& domain_;
   contact::ContactManager::GhostFields fields_;
@@ -89,6 +96,9 @@ class ContactRegion final : public contact::ContactReductions {
   std::vector<int> recv_offset_, recv_node_;  // [member + 1], ghost nodes from each member
   std::vector<char> present_;
   std::vector<double> send_, recv_;
+  std::vector<double> rows_send_, rows_recv_;  // [listed node][kMaxSumWidth + 1] of exchange_rows
+  std::vector<int> rows_peer_;                 // [request] the member a receive of exchange_rows is from
+  std::vector<MPI_Status> statuses_;
   std::vector<double> held_;  // [local node][width] scratch of sum_to_holders (the domain's numbering)
   std::vector<MPI_Request> requests_;
   struct Located {

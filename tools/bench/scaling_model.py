@@ -19,8 +19,10 @@ Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nod
                 (recursive doubling: log2 N latencies + the whole surface over the link);
                 distributed: the ghost rows of the region's band (both surfaces) from <= 8 neighbours:
                 owner computes 24 B a row (positions; the frictionless and adhesive laws read nothing
-                else) and 24 B of force sent back; --tangential 72 B (positions, velocities, forces),
-                24 B back and 64 B for the pairs' completion, in three more exchanges; --redundant 72 B
+                else); --tangential 72 B (positions, velocities, forces); --redundant 72 B. Sparse rows
+                (only those a rank's pairs touch: the ring of nodes around its share, both surfaces):
+                the forces sent back, 32 B a row (its list position and 3 values), and --tangential the
+                pairs' completion, 40 B each way, in three more exchanges
   reductions    the stable step every 10 steps: one MPI_Allreduce, log2 N latencies
 Memory per rank: replicated set-up holds the whole model on every rank (M_1, measured);
 distributed: (M_1 - M_0) / N + M_0, M_0 the part that does not divide (code, libraries, MPI buffers).
@@ -53,16 +55,19 @@ def step_costs(n, a):
     # ghost rows of both surfaces from at most 8 neighbours.
     share = a.slave_nodes / min(n, max(1.0, a.slave_nodes / a.slave_nodes_per_rank))
     region = a.slave_nodes if n == 1 else min(a.slave_nodes, (math.sqrt(share) + 2 * a.halo_nodes) ** 2)
-    if a.redundant:  # every slave node of the region; rows of x, v, f
-        computed, row, rounds = region, 72, 1
-    elif a.tangential:  # own nodes and the ring around them (contact shares); rows of x, v, f, forces
-        # back, and the pairs' completion (4 doubles each way): three more exchanges
-        computed = a.slave_nodes if n == 1 else min(a.slave_nodes, (math.sqrt(share) + 2) ** 2)
-        row, rounds = 72 + 24 + 64, 3
+    # The ring of nodes around a rank's share that its pairs touch (the rows of the sparse exchanges).
+    ring = min(a.slave_nodes, (math.sqrt(share) + 2) ** 2) - share
+    if a.redundant:  # every slave node of the region; rows of x, v, f; nothing sent back
+        computed, row, sparse_row, rounds = region, 72, 0, 1
+    elif a.tangential:  # own nodes and the ring around them (contact shares); rows of x, v, f; forces
+        # back, and the pairs' completion (4 values each way), sparse: three more exchanges
+        computed = share + (0 if n == 1 else ring)
+        row, sparse_row, rounds = 72, 32 + 2 * 40, 3
     else:
-        computed, row, rounds = share, 48, 1
+        computed, row, sparse_row, rounds = share, 24, 32, 1
     contact_dist = computed * a.ns_slave_node * 1e-9
-    ghosts = 0.0 if n == 1 else rounds * min(8, n - 1) * lat + 2 * (region - share) * row / bw
+    ghosts = 0.0 if n == 1 else (rounds * min(8, n - 1) * lat + 2 * (region - share) * row / bw
+                                 + 2 * ring * sparse_row / bw)
     mem_rep = a.serial_rss_mb * 1e6
     mem_dist = (a.serial_rss_mb - a.fixed_rss_mb) * 1e6 / n + a.fixed_rss_mb * 1e6
     rep = {"elements": elements, "halo": halo, "reductions": reduce, "contact": contact_rep, "surface": gather}
@@ -83,7 +88,7 @@ def main():
                     help="mortar's redundant region (every slave node of the region computed)")
     ap.add_argument("--tangential", action="store_true",
                     help="owner computes for the tangential laws (junction, Coulomb): the ring of slave nodes around a "
-                         "rank's own projected too, 160 B per ghost row and step, three more exchanges")
+                         "rank's own projected too, 72 B per ghost row and 112 B per ring row a step, three more exchanges")
     ap.add_argument("--surface-nodes", type=float, default=11_162, help="contact surface nodes (both surfaces)")
     ap.add_argument("--ns-element", type=float, default=85.0, help="c_el, ns per element per step")
     ap.add_argument("--ns-slave-node", type=float, default=340.0, help="c_node, ns per slave node per step")
