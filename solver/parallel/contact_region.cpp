@@ -196,24 +196,20 @@ void ContactRegion::size_buffers() {
   statuses_.resize(2 * static_cast<std::size_t>(members_));
 }
 
-void ContactRegion::exchange(int width, bool reverse) {
-  // Forward: send_ (by send lists) -> recv_ (by receive lists); reverse: recv_ -> send_.
-  double* out = reverse ? recv_.data() : send_.data();
-  double* in = reverse ? send_.data() : recv_.data();
-  const std::vector<int>& out_offset = reverse ? recv_offset_ : send_offset_;
-  const std::vector<int>& in_offset = reverse ? send_offset_ : recv_offset_;
+void ContactRegion::exchange(int width) {
   requests_.clear();
   for (int q = 0; q < members_; ++q) {
-    const int count = in_offset[q + 1] - in_offset[q];
+    const int count = recv_offset_[q + 1] - recv_offset_[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Irecv(in + static_cast<std::size_t>(width) * in_offset[q], width * count, MPI_DOUBLE, q, 7, comm_, &requests_.back());
+    MPI_Irecv(recv_.data() + static_cast<std::size_t>(width) * recv_offset_[q], width * count, MPI_DOUBLE, q, 7, comm_,
+              &requests_.back());
   }
   for (int q = 0; q < members_; ++q) {
-    const int count = out_offset[q + 1] - out_offset[q];
+    const int count = send_offset_[q + 1] - send_offset_[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Isend(out + static_cast<std::size_t>(width) * out_offset[q], width * count, MPI_DOUBLE, q, 7, comm_,
+    MPI_Isend(send_.data() + static_cast<std::size_t>(width) * send_offset_[q], width * count, MPI_DOUBLE, q, 7, comm_,
               &requests_.back());
   }
   MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);

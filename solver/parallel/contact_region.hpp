@@ -74,9 +74,8 @@ class ContactRegion final : public contact::ContactReductions {
  private:
   void exchange_node_numbers();  // receive lists from the send lists
   void size_buffers();
-  /// Sends `width` doubles per listed node from `send_` and receives into `recv_` (reverse: from
-  /// `recv_` back to the senders' `send_`).
-  void exchange(int width, bool reverse = false);
+  /// Sends `width` doubles per listed node from `send_` and receives into `recv_` (fill_ghosts).
+  void exchange(int width);
   /// The rows of `values` [surface node][width] along the send lists to the receive lists (reverse:
   /// the receive lists' rows back along the send lists), only those with a nonzero bit: a message is
   /// (position in the list, width values) per row sent. The receiver adds (reverse) or assigns each
