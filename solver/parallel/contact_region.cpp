@@ -9,6 +9,7 @@
 #include <string>
 
 #include "solver/parallel/domain.hpp"
+#include "solver/parallel/sparse_rows.hpp"
 
 namespace tribex::solver::parallel {
 
@@ -216,7 +217,7 @@ void ContactRegion::exchange(int width) {
 }
 
 void ContactRegion::exchange_rows(double* values, int width, bool reverse) {
-  const std::size_t w = static_cast<std::size_t>(width), stride = w + 1;
+  const std::size_t stride = static_cast<std::size_t>(width) + 1;
   const std::vector<int>& out_node = reverse ? recv_node_ : send_node_;
   const std::vector<int>& in_node = reverse ? send_node_ : recv_node_;
   const std::vector<int>& out_offset = reverse ? recv_offset_ : send_offset_;
@@ -238,17 +239,7 @@ void ContactRegion::exchange_rows(double* values, int width, bool reverse) {
     const int first = out_offset[q], count = out_offset[q + 1] - first;
     if (count == 0) continue;
     double* message = out + stride * first;
-    double* row = message;
-    for (int j = 0; j < count; ++j) {
-      const double* v = values + w * static_cast<std::size_t>(out_node[first + j]);
-      // A row of +0.0 bits is not sent (the receiver adds or assigns +0.0 for it); -0.0 travels.
-      bool nonzero = false;
-      for (std::size_t i = 0; i < w; ++i) nonzero = nonzero || std::signbit(v[i]) || v[i] != 0.0;
-      if (!nonzero) continue;
-      *row++ = j;
-      for (std::size_t i = 0; i < w; ++i) *row++ = v[i];
-    }
-    const int length = static_cast<int>(row - message);
+    const int length = pack_nonzero_rows(values, width, out_node.data() + first, count, message);
     sent += length;
     requests_.emplace_back();
     MPI_Isend(message, length, MPI_DOUBLE, q, 8, comm_, &requests_.back());
@@ -260,17 +251,7 @@ void ContactRegion::exchange_rows(double* values, int width, bool reverse) {
     int length = 0;
     MPI_Get_count(&statuses_[r], MPI_DOUBLE, &length);
     received += length;
-    const double* row = in + stride * first;
-    const double* end = row + length;
-    for (int j = 0; j < count; ++j) {
-      double* v = values + w * static_cast<std::size_t>(in_node[first + j]);
-      const bool listed = row < end && static_cast<int>(*row) == j;
-      for (std::size_t i = 0; i < w; ++i) {
-        const double value = listed ? row[1 + i] : 0.0;
-        v[i] = reverse ? v[i] + value : value;
-      }
-      if (listed) row += stride;
-    }
+    apply_rows(in + stride * first, length, width, in_node.data() + first, count, values, reverse);
   }
   domain_.traffic.surface_sent += static_cast<long long>(sizeof(double)) * sent;
   domain_.traffic.surface_received += static_cast<long long>(sizeof(double)) * received;

@@ -77,9 +77,9 @@ class ContactRegion final : public contact::ContactReductions {
   /// Sends `width` doubles per listed node from `send_` and receives into `recv_` (fill_ghosts).
   void exchange(int width);
   /// The rows of `values` [surface node][width] along the send lists to the receive lists (reverse:
-  /// the receive lists' rows back along the send lists), only those with a nonzero bit: a message is
-  /// (position in the list, width values) per row sent. The receiver adds (reverse) or assigns each
-  /// listed row's value, +0.0 for a row not sent, in list order: the dense exchange's bits exactly.
+  /// the receive lists' rows back along the send lists), only those with a nonzero bit (sparse_rows.hpp):
+  /// the receiver adds (reverse) or assigns each listed row's value, +0.0 for a row not sent, in list
+  /// order: the dense exchange's bits exactly.
   void exchange_rows(double* values, int width, bool reverse);
 
   Domain& domain_;
