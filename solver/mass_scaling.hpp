@@ -8,7 +8,9 @@
 // for the elements of the listed blocks; every other element keeps its mass. The factor is kept per
 // element (ElementBlock::mass_scale) so that the stable step recomputed on the current configuration
 // uses the scaled density, and the scaled lumped mass is in Model::mass before the contact is set up,
-// so the penalty k_p = s m_eff / dt^2 uses the scaled masses and the scaled step.
+// so the penalty k_p = s m_eff / dt^2 uses the scaled masses and the scaled step. The contact surface
+// nodes then get at least (dt / dt_0)^2 times their unscaled mass (raise_contact_node_masses), so that
+// the unscaled deck's contact stiffness keeps its k dt^2 / m at every surface node.
 #pragma once
 
 #include <string>
@@ -45,6 +47,10 @@ struct MassScalingReport {
   double added_mass = 0.0;          // kg, the whole model
   double maximum_added_mass_fraction = 0.05;
   std::vector<BlockMassScaling> blocks;
+  // The contact surface nodes raised to contact_mass_factor x their unscaled mass (raise_contact_node_masses):
+  int contact_nodes = 0;             // surface nodes raised (over the ranks)
+  double contact_mass_factor = 1.0;  // (dt / dt_0)^2
+  double contact_added_mass = 0.0;   // kg, included in added_mass
   double added_fraction() const { return unscaled_mass > 0.0 ? added_mass / unscaled_mass : 0.0; }
   bool exceeds_limit() const { return active && added_fraction() > maximum_added_mass_fraction; }
   /// The set-up report, one line each.
@@ -59,5 +65,20 @@ struct MassScalingReport {
 /// contact is built (its penalty reads the masses and the step).
 MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double time_step_scale_factor,
                                      double maximum_time_step, Model& model);
+
+/// Contact consistency (docs/theory.md 1.4.1): every contact surface node gets at least
+/// `factor` = (dt / dt_0)^2 times its unscaled lumped mass, dt the scaled run's step and dt_0 the unscaled
+/// one. A surface node whose elements were scaled less than the step (a soft coating whose own step is
+/// above the target) would otherwise meet the unscaled deck's contact springs (the penalty
+/// s m_eff,0 / dt_0^2, the adhesion traction's stiffness) with a larger k dt^2 / m than the unscaled run:
+/// past the penalty's cap the contact would soften and the contact area grow. `nodes` the local indices of
+/// the surface nodes, each once; `mass` and `unscaled_mass` [node] summed over the ranks; `owned` [node]
+/// the ownership weights. Returns the added mass of the owned nodes (kg) and the number of owned nodes raised.
+struct ContactMassRaise {
+  double added_mass = 0.0;
+  int nodes = 0;
+};
+ContactMassRaise raise_contact_node_masses(const std::vector<int>& nodes, const std::vector<double>& unscaled_mass,
+                                           double factor, const std::vector<double>& owned, std::vector<double>& mass);
 
 }  // namespace tribex::solver

@@ -221,6 +221,27 @@ SurfaceValues surface_values(const Model& model, const ContactFaces& faces, cons
   return v;
 }
 
+// The contact surface nodes of a mass-scaled run raised to (dt / dt_0)^2 times their unscaled mass
+// (solver/mass_scaling.hpp raise_contact_node_masses), counted in the report over the ranks. `mass` and
+// `unscaled_mass` are summed over the ranks already, so every copy of a shared node gets the same value.
+void raise_contact_masses(Model& model, const ContactFaces& faces, const std::vector<double>& unscaled_mass, double dt) {
+  const auto& d = model.domain;
+  std::vector<int> nodes;
+  for (int g : faces.global_node) {
+    const auto it = std::lower_bound(d.global_node.begin(), d.global_node.end(), g);
+    if (it != d.global_node.end() && *it == g) nodes.push_back(static_cast<int>(it - d.global_node.begin()));
+  }
+  MassScalingReport& r = model.mass_scaling;
+  const double ratio = dt / r.unscaled_time_step;
+  r.contact_mass_factor = ratio * ratio;
+  const ContactMassRaise raised = raise_contact_node_masses(nodes, unscaled_mass, r.contact_mass_factor, d.owned, model.mass);
+  double sums[2] = {raised.added_mass, double(raised.nodes)};
+  parallel::sum(sums, 2);
+  r.contact_added_mass = sums[0];
+  r.contact_nodes = static_cast<int>(std::lround(sums[1]));
+  r.added_mass += r.contact_added_mass;
+}
+
 // Silent boundaries, accumulated per node over the faces (the rank's faces; summed over the ranks later).
 struct SilentSums {
   std::vector<double> area;          // [node][3] area vector / 4
@@ -467,6 +488,7 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
                                tc.maximum_time_step.value_or(INFINITY));
     const ContactFaces own = faces ? ContactFaces{} : contact_faces(m, *region.contact);
     const ContactFaces& f = faces ? *faces : own;
+    if (model.mass_scaling.active) raise_contact_masses(model, f, unscaled_mass, dt);
     SurfaceValues v = surface_values(model, f, unscaled_mass);
     model.contact = build_contact(*region.contact, model, {f, v.mass, std::move(v.prescribed)}, dt, &model.preflight,
                                   &model.setup);

@@ -202,7 +202,9 @@ std::span<const Field<RunSummary>> summary_fields() {
       }),
       text("mass_scaling",
            "begin mass scaling (null without): target and unscaled time step (s), unscaled and added mass (kg), the "
-           "added fraction, and per block the scaled elements, mass, added mass and largest density factor",
+           "added fraction (the contact surface nodes' included), the contact surface nodes raised, their mass factor "
+           "(dt / dt_0)^2 and added mass (kg), and per block the scaled elements, mass, added mass and largest density "
+           "factor",
            [](const R& s) {
              const MassScalingReport& m = s.mass_scaling;
              if (!m.active) return std::string("null");
@@ -211,7 +213,9 @@ std::span<const Field<RunSummary>> summary_fields() {
                                ", \"unscaled_mass\": " + number(m.unscaled_mass) + ", \"added_mass\": " +
                                number(m.added_mass) + ", \"added_mass_fraction\": " + number(m.added_fraction()) +
                                ", \"maximum_added_mass_fraction\": " + number(m.maximum_added_mass_fraction) +
-                               ", \"blocks\": [";
+                               ", \"contact_nodes\": " + std::to_string(m.contact_nodes) +
+                               ", \"contact_mass_factor\": " + number(m.contact_mass_factor) +
+                               ", \"contact_added_mass\": " + number(m.contact_added_mass) + ", \"blocks\": [";
              for (std::size_t i = 0; i < m.blocks.size(); ++i) {
                const BlockMassScaling& b = m.blocks[i];
                out += std::string(i ? ",\n    " : "\n    ") + "{\"name\": " + json_string(b.name) +

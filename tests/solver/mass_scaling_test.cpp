@@ -97,6 +97,54 @@ TEST(MassScaling, ElementsAtHalfTheTargetGetFourTimesTheirMassOthersKeepIt) {
   EXPECT_NE(r.limit_message().find("above 'maximum added mass fraction' 5 %"), std::string::npos) << r.limit_message();
 }
 
+// Contact between b's xmax face (9 nodes, scaled x 4 with their elements) and c's xmin face (4 nodes,
+// c unscaled: its step is at the target). The contact surface nodes get at least (dt / dt_0)^2 = 4 x
+// their unscaled mass, so the unscaled penalty s m_eff,0 / dt_0^2 keeps k dt^2 / m_eff = s at the scaled
+// step (no cap, no softer contact): c's four face nodes 975 -> 3900 kg, b's face nodes as they were.
+TEST(MassScaling, ContactSurfaceNodesGetTheSquaredStepRatioOfTheirUnscaledMass) {
+  auto with_contact = [](inputs::Deck deck) {
+    inputs::ContactSpec contact;
+    contact.surfaces.push_back({"b_face", {"b_xmax"}, {}});
+    contact.surfaces.push_back({"c_face", {"c_xmin"}, {}});
+    inputs::InteractionSpec it;
+    it.name = "touch";
+    it.slave = "c_face";
+    it.master = "b_face";
+    contact.interactions.push_back(it);
+    deck.procedure.region.contact = contact;
+    return deck;
+  };
+  const Model plain = build_model(two_blocks(factor(2.0)));
+  const Model m = build_model(with_contact(two_blocks(factor(2.0))));
+  inputs::Deck unscaled_deck = with_contact(two_blocks(factor(2.0)));
+  unscaled_deck.procedure.region.mass_scaling.reset();
+  const Model unscaled = build_model(unscaled_deck);
+  const MassScalingReport& r = m.mass_scaling;
+  ASSERT_TRUE(r.active);
+  EXPECT_NEAR(r.contact_mass_factor, 4.0, 1e-12);
+  EXPECT_EQ(r.contact_nodes, 4);
+  EXPECT_NEAR(r.contact_added_mass, 4 * 3 * 975.0, 1e-8);
+  EXPECT_NEAR(r.added_mass, 3 * 7800.0 + 4 * 3 * 975.0, 1e-8);
+  const auto& c_face = m.mesh.node_sets.at("c_xmin");
+  const auto& b_face = m.mesh.node_sets.at("b_xmax");
+  ASSERT_EQ(c_face.size(), 4u);
+  ASSERT_EQ(b_face.size(), 9u);
+  for (int n : c_face) {
+    EXPECT_NEAR(unscaled.mass[n], 975.0, 1e-9);
+    EXPECT_NEAR(m.mass[n], 4.0 * unscaled.mass[n], 1e-9) << "node " << n;
+  }
+  for (int n : b_face) EXPECT_EQ(m.mass[n], plain.mass[n]) << "node " << n;  // scaled x 4 with b already
+  EXPECT_NEAR(sum(m.mass), sum(plain.mass) + 4 * 3 * 975.0, 1e-8);
+  // The contact is built on the raised masses: k dt^2 / m_eff of the unscaled penalty is s = 1 on
+  // every pair, below the cap (ContactManager::scaled_penalty_cap, 2): c's nodes alone would give 4.
+  bool found = false;
+  for (const auto& line : r.lines()) found = found || line.find("contact surfaces: 4 nodes raised to 4 x") != std::string::npos;
+  EXPECT_TRUE(found);
+  // Without contact nothing is raised.
+  EXPECT_EQ(plain.mass_scaling.contact_nodes, 0);
+  EXPECT_EQ(plain.mass_scaling.contact_added_mass, 0.0);
+}
+
 TEST(MassScaling, BlocksFilterScalesOnlyTheListedBlocks) {
   // Target 3 x the unscaled step, block c only: c (at 2/3 of the target) gets (3/2)^2, b keeps its
   // mass although it is below the target (it then still sets the step).

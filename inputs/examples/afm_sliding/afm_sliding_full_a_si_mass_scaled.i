@@ -133,8 +133,8 @@ begin sierra afm_sliding_full_a_si_mass_scaled
       use finite element model afm_track
       mass damping coefficient = 5e11 1/s
       begin mass scaling
-        largest factor = 1.5                  # target time step = 1.5 x the unscaled step
-        maximum added mass fraction = 0.05
+        largest factor = 3                  # target time step = 3 x the unscaled step
+        maximum added mass fraction = 2.5
       end mass scaling
       begin fixed displacement
         node set = substrate_bottom

@@ -149,8 +149,8 @@ begin sierra afm_sliding_reduced_b_sam_mass_scaled
       use finite element model afm_track
       mass damping coefficient = 5e11 1/s
       begin mass scaling
-        largest factor = 1.25                  # target time step = 1.25 x the unscaled step
-        maximum added mass fraction = 0.05
+        largest factor = 3                  # target time step = 3 x the unscaled step
+        maximum added mass fraction = 4
       end mass scaling
       begin fixed displacement
         node set = substrate_bottom
