@@ -129,8 +129,8 @@ std::vector<std::string> MassScalingReport::lines() const {
                                     b.mass, b.largest_scale)
                            : format("  block %-16s not scaled (not in 'blocks')", b.name.c_str()));
   if (contact_nodes > 0)
-    out.push_back(format("  contact surfaces: %d nodes raised to %.3g x their unscaled mass ((dt / dt_0)^2: the unscaled "
-                         "contact stiffness at the scaled step), added %.6g kg",
+    out.push_back(format("  contact surfaces: %d nodes raised to %.3g x their unscaled mass (s (dt / dt_0)^2 / max(s, 2): "
+                         "the unscaled penalty within its stability cap at the scaled step), added %.6g kg",
                          contact_nodes, contact_mass_factor, contact_added_mass));
   return out;
 }

@@ -221,10 +221,12 @@ SurfaceValues surface_values(const Model& model, const ContactFaces& faces, cons
   return v;
 }
 
-// The contact surface nodes of a mass-scaled run raised to (dt / dt_0)^2 times their unscaled mass
-// (solver/mass_scaling.hpp raise_contact_node_masses), counted in the report over the ranks. `mass` and
-// `unscaled_mass` are summed over the ranks already, so every copy of a shared node gets the same value.
-void raise_contact_masses(Model& model, const ContactFaces& faces, const std::vector<double>& unscaled_mass, double dt) {
+// The contact surface nodes of a mass-scaled run raised to s (dt / dt_0)^2 / max(s, 2) times their
+// unscaled mass (solver/mass_scaling.hpp raise_contact_node_masses; s the penalty scale factor), counted in
+// the report over the ranks. `mass` and `unscaled_mass` are summed over the ranks already, so every copy
+// of a shared node gets the same value.
+void raise_contact_masses(Model& model, const ContactFaces& faces, const std::vector<double>& unscaled_mass, double dt,
+                          double penalty_scale) {
   const auto& d = model.domain;
   std::vector<int> nodes;
   for (int g : faces.global_node) {
@@ -233,7 +235,7 @@ void raise_contact_masses(Model& model, const ContactFaces& faces, const std::ve
   }
   MassScalingReport& r = model.mass_scaling;
   const double ratio = dt / r.unscaled_time_step;
-  r.contact_mass_factor = ratio * ratio;
+  r.contact_mass_factor = penalty_scale * ratio * ratio / contact::ContactManager::scaled_penalty_cap(penalty_scale);
   const ContactMassRaise raised = raise_contact_node_masses(nodes, unscaled_mass, r.contact_mass_factor, d.owned, model.mass);
   double sums[2] = {raised.added_mass, double(raised.nodes)};
   parallel::sum(sums, 2);
@@ -488,7 +490,7 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
                                tc.maximum_time_step.value_or(INFINITY));
     const ContactFaces own = faces ? ContactFaces{} : contact_faces(m, *region.contact);
     const ContactFaces& f = faces ? *faces : own;
-    if (model.mass_scaling.active) raise_contact_masses(model, f, unscaled_mass, dt);
+    if (model.mass_scaling.active) raise_contact_masses(model, f, unscaled_mass, dt, region.contact->penalty_scale_factor);
     SurfaceValues v = surface_values(model, f, unscaled_mass);
     model.contact = build_contact(*region.contact, model, {f, v.mass, std::move(v.prescribed)}, dt, &model.preflight,
                                   &model.setup);

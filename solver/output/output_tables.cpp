@@ -203,7 +203,7 @@ std::span<const Field<RunSummary>> summary_fields() {
       text("mass_scaling",
            "begin mass scaling (null without): target and unscaled time step (s), unscaled and added mass (kg), the "
            "added fraction (the contact surface nodes' included), the contact surface nodes raised, their mass factor "
-           "(dt / dt_0)^2 and added mass (kg), and per block the scaled elements, mass, added mass and largest density "
+           "s (dt / dt_0)^2 / max(s, 2) and added mass (kg), and per block the scaled elements, mass, added mass and largest density "
            "factor",
            [](const R& s) {
              const MassScalingReport& m = s.mass_scaling;
