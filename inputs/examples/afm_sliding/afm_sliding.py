@@ -30,6 +30,7 @@ import json
 import math
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -41,7 +42,7 @@ from sliding_checks import base_reaction_failure, friction_radius_axes, sliding_
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LOAD = 500e-9                      # N, as in make_decks.py
-HOLD_END = (120e-12, 140e-12)      # s: last 20 ps of the hold (load ramp 0-80 ps, hold 80-140 ps)
+HOLD_WINDOW = 20e-12               # s: the hold is checked over its last 20 ps
 STEADY_FROM = 1.0e-9               # m of sliding
 R_TIP = 50e-9
 W = 0.05                           # J/m^2
@@ -61,12 +62,22 @@ def dmt_radius_si(P):
     return dmt_radius(P, R_TIP, W, effective_modulus(161e9, 0.23))
 
 
-def check_case(folder, label, tau):
+def hold_end(deck):
+    """The end of the deck's hold, s, from the time line make_decks.py writes ("..., 80 - 140 ps hold, ...")."""
+    with open(deck) as f:
+        m = re.search(r"(\d+(?:\.\d+)?) - (\d+(?:\.\d+)?) ps hold", f.read())
+    if not m:
+        sys.exit(f"{deck}: no 'T0 - T1 ps hold' in its time line comment; write the deck with make_decks.py")
+    return float(m.group(2)) * 1e-12
+
+
+def check_case(folder, label, tau, deck):
     rows = read_history(folder)
     with open(os.path.join(folder, "summary.json")) as f:
         summary = json.load(f)
     failures = []
-    hold = rows_between(rows, *HOLD_END)
+    end = hold_end(deck)
+    hold = rows_between(rows, end - HOLD_WINDOW, end)
     w = steady_window(rows, "y", STEADY_FROM)
     # The hold window is 20 ps: 10 rows at the reduced decks' 2 ps history, 4 at the full decks' 5 ps.
     if len(hold) < 3 or w is None or len(w["rows"]) < 5:
@@ -167,7 +178,7 @@ def main():
         folder = os.path.join(a.out, name + "_output")
         if not a.no_run:
             subprocess.run([a.tribex, "run", os.path.join(HERE, name + ".i"), "-o", folder, "--quiet"], check=True)
-        res, fail = check_case(folder, label, tau)
+        res, fail = check_case(folder, label, tau, os.path.join(HERE, name + ".i"))
         failures += fail
         if res:
             results[case] = res
@@ -175,7 +186,7 @@ def main():
             failures += bin_table(res["rows"], case, label, FULL_BINS[case])
         if res and a.against:
             ref, ref_fail = check_case(os.path.join(a.against, f"afm_sliding_{a.variant}_{case}_output"),
-                                       label + " (reference)", tau)
+                                       label + " (reference)", tau, os.path.join(HERE, f"afm_sliding_{a.variant}_{case}.i"))
             failures += ref_fail + (compare_runs(res, ref, label) if ref else [])
     if len(results) == 2:
         ra, rb = results["a_si"]["a_fe"], results["b_sam"]["a_fe"]
