@@ -67,7 +67,9 @@ def hold_end(deck):
     with open(deck) as f:
         m = re.search(r"(\d+(?:\.\d+)?) - (\d+(?:\.\d+)?) ps hold", f.read())
     if not m:
-        sys.exit(f"{deck}: no 'T0 - T1 ps hold' in its time line comment; write the deck with make_decks.py")
+        print(f"{deck}:1: error: no 'T0 - T1 ps hold' in the deck's time line comment; write the deck with "
+              "make_decks.py", file=sys.stderr)
+        sys.exit(2)
     return float(m.group(2)) * 1e-12
 
 
