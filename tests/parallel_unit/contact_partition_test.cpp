@@ -10,6 +10,7 @@
 #include "mesh/box.hpp"
 #include "solver/contact_partition.hpp"
 #include "solver/parallel/partition.hpp"
+#include "tests/solver/support.hpp"
 
 using namespace tribex;
 
@@ -32,17 +33,7 @@ mesh::Mesh block_and_indenter() {
   return m;
 }
 
-inputs::ContactSpec indenter_on_block() {
-  inputs::ContactSpec spec;
-  spec.surfaces.push_back({"tip", {"indenter_zmin"}, {}});
-  spec.surfaces.push_back({"top", {"block_zmax"}, {}});
-  inputs::InteractionSpec it;
-  it.name = "press";
-  it.slave = "tip";
-  it.master = "top";
-  spec.interactions.push_back(it);
-  return spec;
-}
+inputs::ContactSpec indenter_on_block() { return test::one_contact("tip", "indenter_zmin", "top", "block_zmax"); }
 
 std::array<double, 3> centroid(const mesh::Mesh& m, int e) {
   std::array<double, 3> c{0, 0, 0};

@@ -104,15 +104,7 @@ TEST(MassScaling, ElementsAtHalfTheTargetGetFourTimesTheirMassOthersKeepIt) {
 // c's four face nodes 975 -> 1950 kg, b's face nodes (at 4 x already) as they were.
 TEST(MassScaling, ContactSurfaceNodesGetTheMassThatKeepsTheUnscaledPenaltyWithinItsCap) {
   auto with_contact = [](inputs::Deck deck) {
-    inputs::ContactSpec contact;
-    contact.surfaces.push_back({"b_face", {"b_xmax"}, {}});
-    contact.surfaces.push_back({"c_face", {"c_xmin"}, {}});
-    inputs::InteractionSpec it;
-    it.name = "touch";
-    it.slave = "c_face";
-    it.master = "b_face";
-    contact.interactions.push_back(it);
-    deck.procedure.region.contact = contact;
+    deck.procedure.region.contact = test::one_contact("c_face", "c_xmin", "b_face", "b_xmax");
     return deck;
   };
   const Model plain = build_model(two_blocks(factor(2.0)));
