@@ -200,9 +200,9 @@ SurfaceValues surface_values(const Model& model, const ContactFaces& faces, cons
   const std::size_t ns = faces.global_node.size();
   std::vector<double> values(3 * ns, 0.0);  // mass, unscaled mass, prescribed
   for (std::size_t k = 0; k < ns; ++k) {
-    const auto it = std::lower_bound(d.global_node.begin(), d.global_node.end(), faces.global_node[k]);
-    if (it == d.global_node.end() || *it != faces.global_node[k]) continue;
-    const auto l = static_cast<std::size_t>(it - d.global_node.begin());
+    const int local = d.local_node(faces.global_node[k]);
+    if (local < 0) continue;
+    const auto l = static_cast<std::size_t>(local);
     if (!(d.owned[l] > 0.0)) continue;
     values[3 * k] = model.mass[l];
     values[3 * k + 1] = unscaled_mass.empty() ? 0.0 : unscaled_mass[l];
@@ -229,10 +229,8 @@ void raise_contact_masses(Model& model, const ContactFaces& faces, const std::ve
                           double penalty_scale) {
   const auto& d = model.domain;
   std::vector<int> nodes;
-  for (int g : faces.global_node) {
-    const auto it = std::lower_bound(d.global_node.begin(), d.global_node.end(), g);
-    if (it != d.global_node.end() && *it == g) nodes.push_back(static_cast<int>(it - d.global_node.begin()));
-  }
+  for (int g : faces.global_node)
+    if (const int l = d.local_node(g); l >= 0) nodes.push_back(l);
   MassScalingReport& r = model.mass_scaling;
   const double ratio = dt / r.unscaled_time_step;
   r.contact_mass_factor = penalty_scale * ratio * ratio / contact::ContactManager::scaled_penalty_cap(penalty_scale);

@@ -121,19 +121,20 @@ void Domain::sum_over(Halo& h, double* f, int width, long long& sent, long long&
   communication_seconds += now() - start;
 }
 
+int Domain::local_node(int global) const {
+  const auto it = std::lower_bound(global_node.begin(), global_node.end(), global);
+  return it != global_node.end() && *it == global ? static_cast<int>(it - global_node.begin()) : -1;
+}
+
 void Domain::set_surface(const std::vector<int>& surface_nodes) {
   const std::size_t ns = surface_nodes.size();
   surface_local_.assign(ns, -1);
   surface_owned_.assign(ns, 0.0);
-  // local index of a global node: global_node is ascending
-  for (std::size_t k = 0; k < ns; ++k) {
-    auto it = std::lower_bound(global_node.begin(), global_node.end(), surface_nodes[k]);
-    if (it != global_node.end() && *it == surface_nodes[k]) {
-      const int l = static_cast<int>(it - global_node.begin());
+  for (std::size_t k = 0; k < ns; ++k)
+    if (const int l = local_node(surface_nodes[k]); l >= 0) {
       surface_local_[k] = l;
       surface_owned_[k] = owned[l];
     }
-  }
   // The halo restricted to the surface nodes (both sides keep the same order: ascending local node,
   // which is ascending global node on every rank).
   std::vector<char> on_surface(global_node.size(), 0);

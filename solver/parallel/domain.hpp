@@ -65,6 +65,8 @@ class Domain {
   const std::vector<double>& surface_owned() const { return surface_owned_; }
   /// Whether `other_rank` holds this rank's local node `local_node` too (a neighbour sharing it).
   bool shares_with(int local_node, int other_rank) const;
+  /// The local index of global node `global`, -1 when this rank does not hold it (global_node is ascending).
+  int local_node(int global) const;
 
  private:
   int owned_nodes_ = 0;
