@@ -195,6 +195,8 @@ def main():
     ap.add_argument("--variant", choices=list(VARIANTS), help="write this variant's decks only")
     ap.add_argument("--case", choices=list(CASES), help="write this case's decks only")
     a = ap.parse_args()
+    if not a.hold >= 20:
+        ap.error(f"--hold {a.hold:g}: the hold must be at least 20 ps (afm_sliding.py checks the load over its last 20 ps)")
     here = pathlib.Path(__file__).resolve().parent
     for vname, v in VARIANTS.items():
         for cname, c in CASES.items():
