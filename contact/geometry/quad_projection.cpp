@@ -102,7 +102,11 @@ Projection project_onto_quad(const double X[12], const double p[3], double toler
     out.interior = true;
     return out;
   }
-  // Edge and vertex fallback: the closest point on the boundary.
+  return project_onto_quad_boundary(X, p);
+}
+
+Projection project_onto_quad_boundary(const double X[12], const double p[3]) {
+  Projection out;
   double best = INFINITY, bs = 0.0, bt = 0.0;
   for (int e = 0; e < 4; ++e) {
     double es, et, d2;

@@ -32,6 +32,16 @@ Projection project(const double* x, const ContactSurface& master, int face, cons
   return project_onto_quad(X, p);
 }
 
+// project(), with the Newton iteration skipped where the face's bound proves that the node cannot
+// project inside it: project_onto_quad would then return its boundary fallback, computed here alone
+// (the same bits). Case (b) of inputs/examples/afm_sliding: of the track nodes' projections beside
+// the tip, 99 % are of faces near enough to be the nearest but provably not over them.
+Projection project(const double* x, const ContactSurface& master, int face, const double* p, const FaceBound& bound) {
+  double X[12];
+  master.face_coordinates(x, face, X);
+  return bound.may_project_inside(p) ? project_onto_quad(X, p) : project_onto_quad_boundary(X, p);
+}
+
 double key_of(const Projection& pr) { return pr.interior ? std::abs(pr.gap) : pr.distance; }
 
 // Every candidate in list order; the first of the best class and smallest key wins.
@@ -73,17 +83,18 @@ bool pruned_scan(const double* x, const ContactSurface& master, const int* faces
     return true;
   };
   const int seed_pos = seed < 0 ? -1 : static_cast<int>(std::find(faces, faces + count, seed) - faces);
-  if (seed_pos >= 0 && seed_pos < count && !consider(seed_pos, project(x, master, seed, p))) return false;
+  if (seed_pos >= 0 && seed_pos < count && !consider(seed_pos, project(x, master, seed, p, bounds.of(x, master, seed))))
+    return false;
   for (int c = 0; c < count; ++c) {
     if (c == seed_pos) continue;
+    const FaceBound& b = bounds.of(x, master, faces[c]);
     if (best_pos >= 0) {
-      const FaceBound& b = bounds.of(x, master, faces[c]);
       // Not over the face, the candidate can win only as the nearest of the non-interior ones, with a
       // key of at least its box distance (the slack covers round-off). The box test is the cheaper.
       const bool too_far = best.usable || b.box_distance(p) > best_key + 1e-9 * (best_key + b.reach);
       if (too_far && !b.may_project_inside(p)) continue;
     }
-    if (!consider(c, project(x, master, faces[c], p))) return false;
+    if (!consider(c, project(x, master, faces[c], p, b))) return false;
   }
   return true;
 }

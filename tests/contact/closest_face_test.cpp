@@ -5,7 +5,8 @@
 //   never above the distance to the face's closest boundary point;
 // - closest_face with bounds and any seed gives the same bits as the plain scan of every candidate,
 //   on a curved, warped master with points over it, beside it and below it;
-// - ties (two faces at the same distance) go to the first in the candidate list, whatever the seed.
+// - ties (two faces at the same distance) go to the first in the candidate list, whatever the seed;
+// - the boundary projection alone is project_onto_quad's answer, bit for bit, off the face.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -87,6 +88,38 @@ TEST(FaceBound, NeverRulesOutAPointThatProjectsInside) {
   // are ruled out.
   ASSERT_GT(far, 200);
   EXPECT_GT(ruled_out_far, 0.95 * far) << ruled_out_far << " of " << far;
+}
+
+// project_onto_quad_boundary is project_onto_quad's fallback alone: where the Newton point is not over
+// the face (every point the face bound rules out among them), the two give the same bits, which is
+// what lets closest_face skip the Newton iteration for such faces.
+TEST(QuadProjection, BoundaryAloneIsTheFallbackBitwise) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double h = 0.5 * nm, origin[3] = {120 * nm, -35 * nm, 40 * nm};
+  int outside = 0, ruled_out = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    double X[12], p[3];
+    random_quad(rng, h, trial % 2 ? 0.3 : 0.05, origin, X);
+    for (int i = 0; i < 3; ++i) p[i] = origin[i] + 6 * h * unit(rng);
+    const Projection full = project_onto_quad(X, p);
+    if (full.interior) continue;
+    ++outside;
+    ruled_out += !bound_face(X, interior_tolerance).may_project_inside(p);
+    const Projection edge = project_onto_quad_boundary(X, p);
+    EXPECT_FALSE(edge.interior);
+    EXPECT_EQ(edge.xi, full.xi) << "trial " << trial;
+    EXPECT_EQ(edge.eta, full.eta) << "trial " << trial;
+    EXPECT_EQ(edge.gap, full.gap) << "trial " << trial;
+    EXPECT_EQ(edge.distance, full.distance) << "trial " << trial;
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(edge.point[i], full.point[i]) << "trial " << trial;
+      EXPECT_EQ(edge.normal[i], full.normal[i]) << "trial " << trial;
+    }
+    for (int a = 0; a < 4; ++a) EXPECT_EQ(edge.shape[a], full.shape[a]) << "trial " << trial;
+  }
+  EXPECT_GT(outside, 2000);
+  EXPECT_GT(ruled_out, 1000);  // the case closest_face takes the shortcut in is exercised
 }
 
 // A curved, warped master: n x n faces of edge h on a bowl (a sphere cap of radius R; outward normal
