@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "inputs/did_you_mean.hpp"
 #include "solver/errors.hpp"
@@ -72,16 +73,26 @@ void cover_reach(const inputs::InteractionSpec& it, const inputs::ContactSpec& s
 
 // Mean P-wave modulus M = lambda + 2 mu (reference state) of the elements under a contact surface's
 // faces, Pa: the stiffness that decides which side of a node-to-face pair may carry the point loads.
-double surface_wave_modulus(const Model& model, const ContactFaces& faces, const inputs::ContactSurfaceSpec& surface) {
+double surface_wave_modulus(std::span<const double> block_modulus, const ContactFaces& faces,
+                            const inputs::ContactSurfaceSpec& surface) {
   double sum = 0.0;
   long count = 0;
-  for (const auto& set : surface.side_sets)
-    for (int b : faces.face_block.at(set))
+  for (const auto& set : surface.side_sets) {
+    const auto it = faces.face_block.find(set);
+    if (it == faces.face_block.end()) continue;  // missing from the mesh: build_contact says so
+    for (int b : it->second)
       if (b >= 0) {
-        sum += materials::wave_modulus_of(model.blocks[static_cast<std::size_t>(b)].material);
+        sum += block_modulus[static_cast<std::size_t>(b)];
         ++count;
       }
+  }
   return count ? sum / static_cast<double>(count) : 0.0;
+}
+
+const inputs::ContactSurfaceSpec* surface_named(const inputs::ContactSpec& spec, const std::string& name) {
+  for (const auto& s : spec.surfaces)
+    if (s.name == name) return &s;
+  return nullptr;
 }
 
 // Node-to-face penalty puts its point loads on the master's nodes. A master much softer than the
@@ -92,13 +103,13 @@ double surface_wave_modulus(const Model& model, const ContactFaces& faces, const
 // run log says so. Mortar and two-pass pairs keep the deck's order.
 constexpr double stiffer_slave_ratio = 2.0;
 
-void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const Model& model,
+void order_roles(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, std::span<const double> block_modulus,
                  const ContactFaces& faces, contact::InteractionSettings& s, std::vector<std::string>* report) {
-  if (it.symmetric || it.enforcement == inputs::InteractionEnforcement::mortar || !contact::uses_penalty(s.law)) return;
+  if (!runs_swapped(it, spec, faces, block_modulus)) return;
   const auto& slave = spec.surfaces[static_cast<std::size_t>(s.slave)];
   const auto& master = spec.surfaces[static_cast<std::size_t>(s.master)];
-  const double m_slave = surface_wave_modulus(model, faces, slave), m_master = surface_wave_modulus(model, faces, master);
-  if (!(m_slave > stiffer_slave_ratio * m_master)) return;
+  const double m_slave = surface_wave_modulus(block_modulus, faces, slave);
+  const double m_master = surface_wave_modulus(block_modulus, faces, master);
   std::swap(s.slave, s.master);
   if (report)
     report->push_back(format("  interaction %s: slave '%s', master '%s' (swapped from the deck's order): '%s' is the "
@@ -209,6 +220,24 @@ void broadcast_contact_faces(ContactFaces& faces) {
   }
 }
 
+bool runs_swapped(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const ContactFaces& faces,
+                  std::span<const double> block_modulus) {
+  const int law = contact::law_index(it.model);  // -1 (no model): make_law's default, the variant's first law
+  const bool penalty = law < 0 ? contact::uses_penalty(contact::ContactLaw{}) : contact::law_info(law).penalty;
+  if (it.symmetric || it.enforcement == inputs::InteractionEnforcement::mortar || !penalty) return false;
+  const auto* slave = surface_named(spec, it.slave);
+  const auto* master = surface_named(spec, it.master);
+  if (!slave || !master) return false;
+  return surface_wave_modulus(block_modulus, faces, *slave) >
+         stiffer_slave_ratio * surface_wave_modulus(block_modulus, faces, *master);
+}
+
+inputs::ContactSpec as_enforced(inputs::ContactSpec spec, const ContactFaces& faces, std::span<const double> block_modulus) {
+  for (auto& it : spec.interactions)
+    if (runs_swapped(it, spec, faces, block_modulus)) std::swap(it.slave, it.master);
+  return spec;
+}
+
 std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec& spec, const Model& model,
                                                        const ContactGeometry& geometry, double dt,
                                                        std::vector<std::string>* report,
@@ -236,6 +265,8 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
   auto index_of = [&](const std::string& n) {
     return static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin());
   };
+  std::vector<double> block_modulus;
+  for (const auto& b : model.blocks) block_modulus.push_back(materials::wave_modulus_of(b.material));
   std::vector<contact::InteractionSettings> interactions;
   for (const auto& it : spec.interactions) {
     contact::InteractionSettings s;
@@ -248,7 +279,7 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     s.penalty_scale = spec.penalty_scale_factor;
     s.search_margin = spec.search_margin.value_or(0.0);
     set_law(it, s, report, findings);
-    order_roles(it, spec, model, faces, s, report);
+    order_roles(it, spec, block_modulus, faces, s, report);
     cover_reach(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
     if (it.enforcement == inputs::InteractionEnforcement::mortar) {
       s.enforcement = contact::Enforcement::mortar;

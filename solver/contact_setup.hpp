@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,18 @@ struct ContactFaces {
 
 /// The contact faces of `mesh` (the whole mesh: a serial run's, or rank 0's in a parallel run).
 ContactFaces contact_faces(const mesh::Mesh& mesh, const inputs::ContactSpec& spec);
+
+/// Whether the run enforces interaction `it` with its surfaces swapped: a one-pass node-to-face
+/// penalty pair whose slave is more than twice as stiff (mean P-wave modulus of the elements under its
+/// faces) as its master (a soft master folds under the slave's point loads: contact/README.md "Node to
+/// face on a soft master"); build_contact swaps them and logs it. `block_modulus` [block] the P-wave
+/// modulus of each block's material, Pa, in the mesh's block order (ContactFaces::face_block's).
+bool runs_swapped(const inputs::InteractionSpec& it, const inputs::ContactSpec& spec, const ContactFaces& faces,
+                  std::span<const double> block_modulus);
+
+/// `spec` with each interaction's surfaces in the order the run enforces them (runs_swapped): what
+/// the partition places (place_contact_patches puts the slave surfaces in patches).
+inputs::ContactSpec as_enforced(inputs::ContactSpec spec, const ContactFaces& faces, std::span<const double> block_modulus);
 
 /// Collective: rank 0's `faces` on every rank.
 void broadcast_contact_faces(ContactFaces& faces);

@@ -79,7 +79,11 @@ void DeckRun::build_parts() {
       if (region_.contact) contact = contact_faces(*whole, *region_.contact);
       try {
         part = parallel::partition_elements(*whole, ranks_);
-        place_contact_patches(*whole, region_.contact ? &*region_.contact : nullptr, ranks_, part);
+        if (region_.contact) {
+          // The patches go to the surfaces the run enforces as slaves (build_contact may swap a pair).
+          const inputs::ContactSpec enforced = as_enforced(*region_.contact, contact, block_wave_moduli(deck_, *whole));
+          place_contact_patches(*whole, &enforced, ranks_, part);
+        }
       } catch (const std::runtime_error& e) {
         throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
                          "; run with fewer ranks (mpirun -np N)");

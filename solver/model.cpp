@@ -162,6 +162,19 @@ const inputs::FiniteElementModelSpec& model_spec(const inputs::Deck& deck) {
 
 mesh::Mesh build_mesh(const inputs::Deck& deck) { return build_mesh(model_spec(deck)); }
 
+std::vector<double> block_wave_moduli(const inputs::Deck& deck, const mesh::Mesh& mesh) {
+  const inputs::FiniteElementModelSpec& fem = model_spec(deck);
+  std::vector<double> modulus;
+  for (const auto& b : mesh.blocks) {
+    const auto p = std::find_if(fem.blocks.begin(), fem.blocks.end(), [&](const auto& q) { return q.block == b.name; });
+    const auto* material = p == fem.blocks.end() ? nullptr : deck.find_material(p->material);
+    const bool has_model = material && std::any_of(material->models.begin(), material->models.end(),
+                                                   [&](const auto& m) { return m.model == p->model; });
+    modulus.push_back(has_model ? materials::wave_modulus_of(make_material(*material, p->model)) : 0.0);
+  }
+  return modulus;
+}
+
 Model build_model(const inputs::Deck& deck) { return build_model(deck, build_mesh(deck)); }
 
 namespace {

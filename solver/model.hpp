@@ -106,6 +106,12 @@ Model build_model(const inputs::Deck& deck, mesh::Mesh mesh);
 /// found on some ranks only stops every rank with the lowest one's message.
 Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const ContactFaces& contact_faces);
 
+/// The P-wave modulus lambda + 2 mu (Pa) of each block of `mesh` (the deck region's mesh, as
+/// build_mesh builds it), from the material its parameters name: the values build_model's blocks get,
+/// for a stage that runs before it (the partition). 0 for a block the deck gives no parameters for
+/// (build_model reports that).
+std::vector<double> block_wave_moduli(const inputs::Deck& deck, const mesh::Mesh& mesh);
+
 /// The mesh of the deck's region (its finite element model), as build_model(deck) builds it.
 mesh::Mesh build_mesh(const inputs::Deck& deck);
 

@@ -48,17 +48,19 @@ void for_each_law(F&& f) {
   }(std::make_index_sequence<std::variant_size_v<ContactLaw>>{});
 }
 
-/// What the deck side needs of law `index`: its name, keys and whether it runs with mortar.
+/// What the deck side needs of law `index`: its name, keys, whether it runs with mortar and whether
+/// its normal contact is the penalty (the set-up's slave/master order depends on it).
 struct LawInfo {
   std::string_view deck_name;
   std::span<const LawKey> keys;
   bool mortar = false;
+  bool penalty = false;
 };
 inline LawInfo law_info(int index) {
   LawInfo info;
   for_each_law([&](auto l, int i) {
     using L = typename decltype(l)::type;
-    if (i == index) info = {L::deck_name, L::keys, L::mortar};
+    if (i == index) info = {L::deck_name, L::keys, L::mortar, L::penalty};
   });
   return info;
 }

@@ -9,6 +9,7 @@
 
 #include "mesh/box.hpp"
 #include "solver/contact_partition.hpp"
+#include "solver/contact_setup.hpp"
 #include "solver/parallel/partition.hpp"
 #include "tests/solver/support.hpp"
 
@@ -113,4 +114,35 @@ TEST(ContactPartition, PatchesShareTheZoneCompactlyWithTheirMasterFaces) {
   again = metis;
   solver::place_contact_patches(m, nullptr, parts, again);
   EXPECT_EQ(again, metis);
+}
+
+// The patches go to the surface the run enforces as the slave: build_contact swaps a node-to-face
+// penalty pair whose slave is more than twice as stiff as its master (solver/contact_setup.hpp
+// runs_swapped), so the partition must place the swapped slave, not the deck's (issue 25: on the AFM
+// case (b) the deck's slave, the tip, was placed in patches while the SAM track it swaps to kept
+// METIS's parts, and the contact zone sat on whichever rank METIS gave it).
+TEST(ContactPartition, PatchesGoToTheSurfaceTheRunEnforcesAsSlave) {
+  const mesh::Mesh m = block_and_indenter();
+  const inputs::ContactSpec deck = indenter_on_block();  // the deck: indenter (tip) slave on the block (top)
+  const solver::ContactFaces faces = solver::contact_faces(m, deck);
+  // Mesh blocks in order: block, indenter. P-wave moduli, Pa.
+  const std::vector<double> stiff_indenter = {100e9, 250e9}, near_equal = {100e9, 150e9};
+  const inputs::ContactSpec swapped = solver::as_enforced(deck, faces, stiff_indenter);
+  EXPECT_EQ(swapped.interactions[0].slave, "top");
+  EXPECT_EQ(swapped.interactions[0].master, "tip");
+  EXPECT_EQ(solver::as_enforced(deck, faces, near_equal).interactions[0].slave, "tip");  // 1.5x: the deck's order
+  inputs::ContactSpec mortar = deck;
+  mortar.interactions[0].enforcement = inputs::InteractionEnforcement::mortar;
+  EXPECT_EQ(solver::as_enforced(mortar, faces, stiff_indenter).interactions[0].slave, "tip");
+
+  // Placed with the enforced order, the block's top layer under and around the indenter is cut into
+  // the patches: its 12 x 12 top elements, 36 per part.
+  const int parts = 4;
+  std::vector<int> part = solver::parallel::partition_elements(m, parts);
+  solver::place_contact_patches(m, &swapped, parts, part);
+  std::map<int, int> top_of;
+  for (int e = 0; e < kBlockElements; ++e)
+    if (centroid(m, e)[2] == 3.5) ++top_of[part[e]];
+  ASSERT_EQ(top_of.size(), 4u);
+  for (const auto& [p, count] : top_of) EXPECT_EQ(count, 36) << "part " << p;
 }
