@@ -29,6 +29,13 @@ from deck_templates import (HEX8_FULLY_INTEGRATED, NM, PS, block_parameters, ela
 # with one, the reduced runs' friction read 0.89 % (a) and 1.06 % (b) above the fully integrated
 # decks', with two 0.45 % and 0.46 % (README.md, "Mixed blocks").
 SKIN_LAYERS = 2
+MIXED_NOTE = """\
+  # Fully integrated at GPa contact pressures (verification/hertz/README.md): the skin blocks under
+  # the contact surfaces (tip_skin, and substrate_skin or coating_skin); mean quadrature elsewhere."""
+# --fully-integrated: the reference the mixed decks are measured against (README.md "Mixed blocks").
+FULLY_INTEGRATED_NOTE = """\
+  # Fully integrated everywhere: the reference deck (make_decks.py --fully-integrated) against which
+  # the mixed-block decks (fully integrated skins, mean quadrature below) are checked."""
 HEX8_MEAN_QUADRATURE = """\
   begin solid section hex8_mq
     formulation = mean_quadrature
@@ -103,8 +110,7 @@ begin sierra {name}
 
 {silicon}
 {sam_material}
-  # Fully integrated at GPa contact pressures (verification/hertz/README.md): the skin blocks under
-  # the contact surfaces (tip_skin, and substrate_skin or coating_skin); mean quadrature elsewhere.
+{element_note}
 {hex8}
 {hex8_mq}
 
@@ -192,6 +198,8 @@ def main():
     ap.add_argument("--hold", type=float, default=HOLD / PS, metavar="PS",
                     help="the hold at the full load before sliding, ps (default %(default)g; afm_sliding.py reads it "
                          "from the deck's time line)")
+    ap.add_argument("--fully-integrated", action="store_true",
+                    help="write the *_fully_integrated.i reference decks: every block fully integrated, no skins")
     ap.add_argument("--variant", choices=list(VARIANTS), help="write this variant's decks only")
     ap.add_argument("--case", choices=list(CASES), help="write this case's decks only")
     a = ap.parse_args()
@@ -202,18 +210,24 @@ def main():
         for cname, c in CASES.items():
             if a.variant not in (None, vname) or a.case not in (None, cname):
                 continue
-            name = f"afm_sliding_{vname}_{cname}" + ("_mass_scaled" if a.mass_scaling else "")
+            name = (f"afm_sliding_{vname}_{cname}" + ("_fully_integrated" if a.fully_integrated else "")
+                    + ("_mass_scaled" if a.mass_scaling else ""))
             t_slide = LOAD_RAMP + a.hold * PS
             t_end = t_slide + (v["distance"] * NM + SPEED * RAMP / 2) / SPEED
             # The contact surface of the track is substrate_top: the coating's top when there is one.
             track_block = "coating" if c["coating"] else "substrate"
-            blocks = [surface_layer_block("tip_skin", "tip", "tip_surface", SKIN_LAYERS),
-                      surface_layer_block(f"{track_block}_skin", track_block, "substrate_top", SKIN_LAYERS),
-                      block_parameters("tip", "silicon", "hex8_mq"), block_parameters("tip_skin", "silicon"),
-                      block_parameters("substrate", "silicon", "hex8_mq")]
-            if c["coating"]:
-                blocks.append(block_parameters("coating", "sam", "hex8_mq"))
-            blocks.append(block_parameters(f"{track_block}_skin", "sam" if c["coating"] else "silicon"))
+            if a.fully_integrated:
+                blocks = [block_parameters("tip", "silicon"), block_parameters("substrate", "silicon")]
+                if c["coating"]:
+                    blocks.append(block_parameters("coating", "sam"))
+            else:
+                blocks = [surface_layer_block("tip_skin", "tip", "tip_surface", SKIN_LAYERS),
+                          surface_layer_block(f"{track_block}_skin", track_block, "substrate_top", SKIN_LAYERS),
+                          block_parameters("tip", "silicon", "hex8_mq"), block_parameters("tip_skin", "silicon"),
+                          block_parameters("substrate", "silicon", "hex8_mq")]
+                if c["coating"]:
+                    blocks.append(block_parameters("coating", "sam", "hex8_mq"))
+                blocks.append(block_parameters(f"{track_block}_skin", "sam" if c["coating"] else "silicon"))
             load_table = function_table(load_fraction, table_times(t_end, 0.0, LOAD_RAMP), "8.1f", scale=1.0)
             slide_table = function_table(lambda t: ramped_travel(t, SPEED, t_slide, ramp=RAMP),
                                          table_times(t_end, t_slide, t_slide + RAMP), "8.1f")
@@ -224,7 +238,8 @@ def main():
                 load_function=piecewise_linear_function("load", load_table, ordinate_unit=None),
                 slide_function=piecewise_linear_function("slide", slide_table),
                 silicon=elastic_material("silicon", 2330, 161, 0.23), hex8=HEX8_FULLY_INTEGRATED,
-                hex8_mq=HEX8_MEAN_QUADRATURE,
+                hex8_mq="" if a.fully_integrated else HEX8_MEAN_QUADRATURE,
+                element_note=FULLY_INTEGRATED_NOTE if a.fully_integrated else MIXED_NOTE,
                 sam_material=SAM if c["coating"] else "",
                 window=v["window"], track=v["track"], h=v["h"], depth=v["depth"],
                 coating=(f"\n      coating thickness = 2 nm\n      coating layers = {v['coating_layers']}"

@@ -1,0 +1,182 @@
+# afm_sliding_full_b_sam_fully_integrated.i -- written by make_decks.py (edit that, not this file).
+# AFM sliding example (b) silicon on a 2 nm SAM layer, full variant (the report's Section 3.5, Fig. 3.9): a silicon sphere
+# (R = 50 nm, a 30 nm wide die) pressed with 500 nN into the di-3 AFM surface (10 um polysilicon
+# scan, levelled, bicubic spline) and slid 70 nm along the track (+y) at 7.5 m/s.
+# Junction model: W = 0.05 J/m^2, z0 = 0.3 nm, cutoff 6 nm, tau* = 194 MPa (Si on CH3-thiol SAM, the report's Section 3.5).
+#
+# Run:    build/bin/tribex run inputs/examples/afm_sliding/afm_sliding_full_b_sam_fully_integrated.i -o afm_sliding_full_b_sam_fully_integrated_output
+# Plot:   /usr/bin/python3 inputs/examples/afm_sliding/afm_sliding.py afm_sliding_full_b_sam_fully_integrated_output ...  (see README.md)
+#
+# Time line: 0 - 80 ps load ramp to 500 nN (load control on tip_top z: a total force shared by
+# its nodes; the tip starts 0.3 nm above first touch), 80 - 140 ps hold, then tip_top
+# moves in +y at 7.5 m/s (cycloidal 40 ps ramp) to 9493 ps; tip_top x is fixed.
+# Substrate: bottom fixed (it carries the 500 nN; a dashpot alone cannot hold a static load), silent
+# boundaries on the four sides (absorb the waves of the load and the sliding).
+# Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
+# stiffness); the check is kinetic / internal energy at the end of the hold (afm_sliding.py).
+begin sierra afm_sliding_full_b_sam_fully_integrated
+  begin function load
+    type = piecewise linear
+    abscissa unit = ps
+    begin values
+           0.0  0.00000
+           5.0  0.00961
+          10.0  0.03806
+          15.0  0.08427
+          20.0  0.14645
+          25.0  0.22221
+          30.0  0.30866
+          35.0  0.40245
+          40.0  0.50000
+          45.0  0.59755
+          50.0  0.69134
+          55.0  0.77779
+          60.0  0.85355
+          65.0  0.91573
+          70.0  0.96194
+          75.0  0.99039
+          80.0  1.00000
+        9493.3  1.00000
+    end values
+  end function load
+  begin function slide
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+           0.0  0.00000
+         140.0  0.00000
+         145.0  0.00048
+         150.0  0.00374
+         155.0  0.01214
+         160.0  0.02725
+         165.0  0.04964
+         170.0  0.07874
+         175.0  0.11298
+         180.0  0.15000
+        9493.3  70.00000
+    end values
+  end function slide
+
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+
+  # CH3-thiol SAM (the report's Section 3.5: E = 8 GPa, nu = 0.4); density of an alkanethiol
+  # monolayer, about 1000 kg/m^3 (not given in the report; it only sets the coating's wave speed).
+  begin property specification for material sam
+    density = 1000 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 8 GPa
+      poissons ratio = 0.4
+    end parameters for model elastic
+  end property specification for material sam
+
+  # Fully integrated everywhere: the reference deck (make_decks.py --fully-integrated) against which
+  # the mixed-block decks (fully integrated skins, mean quadrature below) are checked.
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+
+
+  begin finite element model afm_track
+    begin afm surface
+      file = ../../data/afm/di-3.di
+      channel = 0
+      window = 100 100 100 100 nm
+      small window = interpolate   # di-3 has 39 nm pixels: the window is the spline between them
+      track = 102.5 100 35 100 nm
+      element size = 0.5 nm
+      depth = 40 nm
+      coating thickness = 2 nm
+      coating layers = 6
+      grading ratio = 1.3
+    end afm surface
+    begin generated asperity
+      substrate = none
+      radius = 50 nm
+      tip width = 30 nm
+      tip height = 12 nm
+      element size = 0.5 nm
+      fine half width = 13 nm
+      fine depth = 3 nm
+      grading ratio = 1.3
+      apex position = 120 115 34.6498 nm
+    end generated asperity
+    begin parameters for block tip
+      material = silicon
+      section = hex8
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8
+    end parameters for block substrate
+    begin parameters for block coating
+      material = sam
+      section = hex8
+    end parameters for block coating
+  end finite element model afm_track
+
+  begin presto procedure press_and_slide
+    begin time control
+      termination time = 9493.3 ps
+    end time control
+    begin presto region main
+      use finite element model afm_track
+      mass damping coefficient = 5e11 1/s
+      begin fixed displacement
+        node set = substrate_bottom
+        components = x y z
+      end fixed displacement
+      begin silent boundary
+        side set = substrate_sides
+      end silent boundary
+      begin fixed displacement
+        node set = tip_top
+        components = x
+      end fixed displacement
+      begin prescribed force
+        node set = tip_top
+        component = z
+        function = load
+        scale factor = -500 nN
+      end prescribed force
+      begin prescribed displacement
+        node set = tip_top
+        component = y
+        function = slide
+      end prescribed displacement
+      begin contact definition tip_on_track
+        contact surface tip contains tip_surface
+        contact surface track contains substrate_top
+        contact axis = 120 115 0 0 0 1 nm
+        begin interaction junction
+          surfaces = tip track
+          model = junction
+          work of adhesion = 0.05 J/m^2
+          equilibrium separation = 0.3 nm
+          adhesion cutoff = 6 nm
+          junction strength = 194 MPa
+          junction reference speed = 0.1 m/s   # backward Euler: tanh(V/v_ref) = 1 in sliding
+          junction gap tolerance = 0 nm
+        end interaction junction
+      end contact definition tip_on_track
+      begin history output hist
+        time increment = 5 ps
+        reaction force = substrate_bottom
+        mean displacement = tip_top tip_apex
+      end history output hist
+      begin results output fields
+        time increment = 1000 ps
+        nodal variables = displacement contact_traction contact_status
+      end results output fields
+      begin restart output
+        wall time increment = 600 s
+      end restart output
+    end presto region main
+  end presto procedure press_and_slide
+end sierra afm_sliding_full_b_sam_fully_integrated
