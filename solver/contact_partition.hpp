@@ -6,8 +6,9 @@
 // rank fall with the patch's perimeter): tools/bench/README.md "Counts per rank".
 //   - the elements with a face in a slave surface of an interaction (both surfaces of a symmetric
 //     one; the slave the run enforces: callers pass as_enforced(spec), contact_setup.hpp, since
-//     build_contact swaps a stiff slave on a soft master) are cut into `parts` patches by recursive coordinate bisection of their face centroids
-//     (equal counts; the longest side of each box cut at its median);
+//     build_contact swaps a stiff slave on a soft master) are cut into `parts` patches by recursive
+//     coordinate bisection of their face centroids (equal counts; the longest side of each box cut
+//     at its median);
 //   - patch k goes to the rank whose METIS part holds most of its elements (greedy, largest overlap
 //     first), so that few elements move;
 //   - each element of a master surface facing a slave face (the nearest within two face diagonals,
