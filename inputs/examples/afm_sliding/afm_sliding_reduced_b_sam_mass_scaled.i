@@ -8,8 +8,8 @@
 # Plot:   /usr/bin/python3 inputs/examples/afm_sliding/afm_sliding.py afm_sliding_reduced_b_sam_mass_scaled_output ...  (see README.md)
 #
 # Time line: 0 - 80 ps load ramp to 500 nN (load control on tip_top z: a total force shared by
-# its nodes; the tip starts 0.3 nm above first touch), 80 - 380 ps hold, then tip_top
-# moves in +y at 7.5 m/s (cycloidal 40 ps ramp) to 800 ps; tip_top x is fixed.
+# its nodes; the tip starts 0.3 nm above first touch), 80 - 980 ps hold, then tip_top
+# moves in +y at 7.5 m/s (cycloidal 40 ps ramp) to 1400 ps; tip_top x is fixed.
 # Substrate: bottom fixed (it carries the 500 nN; a dashpot alone cannot hold a static load), silent
 # boundaries on the four sides (absorb the waves of the load and the sliding).
 # Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
@@ -36,7 +36,7 @@ begin sierra afm_sliding_reduced_b_sam_mass_scaled
           70.0  0.96194
           75.0  0.99039
           80.0  1.00000
-         800.0  1.00000
+        1400.0  1.00000
     end values
   end function load
   begin function slide
@@ -45,16 +45,16 @@ begin sierra afm_sliding_reduced_b_sam_mass_scaled
     ordinate unit = nm
     begin values
            0.0  0.00000
-         380.0  0.00000
-         385.0  0.00048
-         390.0  0.00374
-         395.0  0.01214
-         400.0  0.02725
-         405.0  0.04964
-         410.0  0.07874
-         415.0  0.11298
-         420.0  0.15000
-         800.0  3.00000
+         980.0  0.00000
+         985.0  0.00048
+         990.0  0.00374
+         995.0  0.01214
+        1000.0  0.02725
+        1005.0  0.04964
+        1010.0  0.07874
+        1015.0  0.11298
+        1020.0  0.15000
+        1400.0  3.00000
     end values
   end function slide
 
@@ -143,14 +143,14 @@ begin sierra afm_sliding_reduced_b_sam_mass_scaled
 
   begin presto procedure press_and_slide
     begin time control
-      termination time = 800.0 ps
+      termination time = 1400.0 ps
     end time control
     begin presto region main
       use finite element model afm_track
       mass damping coefficient = 5e11 1/s
       begin mass scaling
-        largest factor = 5                  # target time step = 5 x the unscaled step
-        maximum added mass fraction = 13
+        largest factor = 8                  # target time step = 8 x the unscaled step
+        maximum added mass fraction = 35
       end mass scaling
       begin fixed displacement
         node set = substrate_bottom
