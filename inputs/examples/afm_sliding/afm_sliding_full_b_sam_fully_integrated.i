@@ -82,7 +82,6 @@ begin sierra afm_sliding_full_b_sam_fully_integrated
     formulation = fully_integrated
   end solid section hex8
 
-
   begin finite element model afm_track
     begin afm surface
       file = ../../data/afm/di-3.di

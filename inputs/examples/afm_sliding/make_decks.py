@@ -111,8 +111,7 @@ begin sierra {name}
 {silicon}
 {sam_material}
 {element_note}
-{hex8}
-{hex8_mq}
+{hex8}{hex8_mq}
 
   begin finite element model afm_track
     begin afm surface
@@ -239,7 +238,7 @@ def main():
                 load_function=piecewise_linear_function("load", load_table, ordinate_unit=None),
                 slide_function=piecewise_linear_function("slide", slide_table),
                 silicon=elastic_material("silicon", 2330, 161, 0.23), hex8=HEX8_FULLY_INTEGRATED,
-                hex8_mq="" if a.fully_integrated else HEX8_MEAN_QUADRATURE,
+                hex8_mq="" if a.fully_integrated else "\n" + HEX8_MEAN_QUADRATURE,
                 element_note=FULLY_INTEGRATED_NOTE if a.fully_integrated else MIXED_NOTE,
                 sam_material=SAM if c["coating"] else "",
                 window=v["window"], track=v["track"], h=v["h"], depth=v["depth"],
