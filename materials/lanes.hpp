@@ -6,21 +6,17 @@
 // no fused multiply-add, so an element's forces are bitwise the same alone or in a pair (tested:
 // LanesTest.PairsAndLoneElementsGiveTheSameForces); with lane_log below, for both materials.
 //
-// lane_log: glibc's vector math library (libmvec, `_ZGVbN2v_log`, the symbol GCC itself calls for
-// a vectorised log; glibc manual "Errors in Math Functions": at most 4 ulp), for one lane too, so
-// a result does not depend on the lane an element ran in. Elsewhere: std::log.
+// lane_log: lane_log.hpp, the whole register in the lanes' own arithmetic (below 1 ulp), so a
+// result does not depend on the lane an element ran in. Elsewhere: std::log.
 #pragma once
 
 #include <cmath>
 #include <cstring>
 
+#include "materials/lane_log.hpp"
+
 #ifdef __AVX512F__
 #include <immintrin.h>
-#endif
-#if defined(__x86_64__) && defined(__GLIBC__)
-#include <emmintrin.h>
-extern "C" __m128d _ZGVbN2v_log(__m128d);  // NOLINT(bugprone-reserved-identifier): glibc's ABI name
-#define TRIBEX_HAVE_LIBMVEC_LOG 1
 #endif
 
 namespace tribex::materials {
@@ -60,13 +56,7 @@ inline T load_lanes(const double* p) {
 inline double negative_part(double x) { return x < 0.0 ? x : 0.0; }
 inline double2 negative_part(double2 x) { return x < double2{} ? x : double2{}; }
 
-inline double2 lane_log(double2 x) {
-#ifdef TRIBEX_HAVE_LIBMVEC_LOG
-  return reinterpret_cast<double2>(_ZGVbN2v_log(reinterpret_cast<__m128d>(x)));
-#else
-  return double2{std::log(x[0]), std::log(x[1])};
-#endif
-}
+inline double2 lane_log(double2 x) { return log_of_lanes(x); }
 /// max(x, 0), max(x, y) and sqrt lane by lane (sqrt is correctly rounded: a lane's result does
 /// not depend on its partner).
 inline double positive_part(double x) { return x > 0.0 ? x : 0.0; }
@@ -85,19 +75,14 @@ inline void store_lanes(double* p, const T& x) {
   std::memcpy(p, &x, sizeof(T));
 }
 
-inline double lane_log(double x) {
-#ifdef TRIBEX_HAVE_LIBMVEC_LOG
-  return lane_log(double2{x, x})[0];
-#else
-  return std::log(x);
-#endif
-}
+/// One lane as it would be in a register (not std::log, whose last bit may differ).
+inline double lane_log(double x) { return log_of_lanes(double2{x, x})[0]; }
 
 // Four elements per AVX2 register: defined only where the translation unit is compiled for AVX2
 // (solver/hex8/avx2_kernels.cpp), so no other object file holds AVX code. The same IEEE operations
 // lane by lane as double and double2, no fused multiply-add (the file is built with -mavx2, not
-// -mfma), and the logarithm taken by the two-lane routine twice, so an element's result does not
-// depend on the lane width it ran at.
+// -mfma), and the logarithm of lane_log.hpp, so an element's result does not depend on the lane
+// width it ran at.
 #ifdef __AVX2__
 using double4 = double __attribute__((vector_size(32)));
 template <>
@@ -110,17 +95,14 @@ inline double4 lane_max(double4 x, double y) {
   return x > yy ? x : yy;
 }
 inline double4 lane_sqrt(double4 x) { return double4{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])}; }
-inline double4 lane_log(double4 x) {
-  const double2 lo = lane_log(double2{x[0], x[1]}), hi = lane_log(double2{x[2], x[3]});
-  return double4{lo[0], lo[1], hi[0], hi[1]};
-}
+inline double4 lane_log(double4 x) { return log_of_lanes(x); }
 #endif
 
 // Eight elements per AVX-512 register, likewise only where the translation unit is compiled for
 // AVX-512 (solver/hex8/avx512_kernels.cpp, built with -mavx512f -ffp-contract=off: AVX-512F has
 // fused multiply-add of its own, so -mno-fma alone would not keep GCC from contracting a * b + c).
 // sqrt is correctly rounded, so the vector instruction gives each lane what std::sqrt gives; the
-// logarithm is the two-lane routine four times, as for double4.
+// logarithm is lane_log.hpp's, as for double4.
 #ifdef __AVX512F__
 using double8 = double __attribute__((vector_size(64)));
 template <>
@@ -138,11 +120,7 @@ inline double8 lane_sqrt(double8 x) {
   const __m512d v = reinterpret_cast<__m512d>(x);
   return reinterpret_cast<double8>(_mm512_mask_sqrt_pd(v, 0xff, v));
 }
-inline double8 lane_log(double8 x) {
-  const double2 a = lane_log(double2{x[0], x[1]}), b = lane_log(double2{x[2], x[3]});
-  const double2 c = lane_log(double2{x[4], x[5]}), d = lane_log(double2{x[6], x[7]});
-  return double8{a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
-}
+inline double8 lane_log(double8 x) { return log_of_lanes(x); }
 /// Lanes 0-3 from lo and 4-7 from hi (two groups of an array interleaved by four:
 /// solver/element_block.hpp load_record).
 inline double8 join_lanes(double4 lo, double4 hi) { return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7); }
