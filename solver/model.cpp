@@ -50,6 +50,12 @@ int function_index(const Model& model, const std::string& name) {
   return static_cast<int>(it - model.function_names.begin());  // existence checked by the parser
 }
 
+// The deck's parameters for the mesh block `name` (null where the deck has none).
+const inputs::BlockParameters* parameters_of(const inputs::FiniteElementModelSpec& fem, const std::string& name) {
+  const auto p = std::find_if(fem.blocks.begin(), fem.blocks.end(), [&](const auto& q) { return q.block == name; });
+  return p == fem.blocks.end() ? nullptr : &*p;
+}
+
 materials::Material make_material(const inputs::MaterialSpec& spec, inputs::MaterialModel model) {
   for (const auto& p : spec.models)
     if (p.model == model)
@@ -166,8 +172,8 @@ std::vector<double> block_wave_moduli(const inputs::Deck& deck, const mesh::Mesh
   const inputs::FiniteElementModelSpec& fem = model_spec(deck);
   std::vector<double> modulus;
   for (const auto& b : mesh.blocks) {
-    const auto p = std::find_if(fem.blocks.begin(), fem.blocks.end(), [&](const auto& q) { return q.block == b.name; });
-    const auto* material = p == fem.blocks.end() ? nullptr : deck.find_material(p->material);
+    const auto* p = parameters_of(fem, b.name);
+    const auto* material = p ? deck.find_material(p->material) : nullptr;
     const bool has_model = material && std::any_of(material->models.begin(), material->models.end(),
                                                    [&](const auto& m) { return m.model == p->model; });
     modulus.push_back(has_model ? materials::wave_modulus_of(make_material(*material, p->model)) : 0.0);
@@ -323,8 +329,8 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
       }
     model.element_block.assign(static_cast<std::size_t>(m.element_count()), -1);
     for (const auto& b : m.blocks) {
-      auto p = std::find_if(fem->blocks.begin(), fem->blocks.end(), [&](const auto& q) { return q.block == b.name; });
-      if (p == fem->blocks.end())
+      const auto* p = parameters_of(*fem, b.name);
+      if (!p)
         throw SetupError(fem->where.str() + ": error: mesh block '" + b.name +
                          "' has no 'begin parameters for block " + b.name + "' in finite element model '" + fem->name + "'");
       const auto* material = deck.find_material(p->material);
