@@ -4,7 +4,7 @@
 // element (T = double) and for a pair (T = double2, GCC's vector extension: + - * / act lane by
 // lane and a double operand is broadcast). The arithmetic is IEEE lane by lane and x86-64-v2 has
 // no fused multiply-add, so an element's forces are bitwise the same alone or in a pair (tested:
-// LanesTest.PairsAndLoneElementsGiveTheSameForces); with lane_log below, for both materials.
+// LanesTest.ElementsGiveBitwiseTheSameResultsAtEveryLaneWidthAndAlone); with lane_log below, for every material.
 //
 // lane_log: lane_log.hpp, the whole register in the lanes' own arithmetic (below 1 ulp), so a
 // result does not depend on the lane an element ran in. Elsewhere: std::log.
