@@ -39,7 +39,6 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
     b.hg_k.resize(n);
     b.hg_c.resize(n);
   } else {
-    b.inv_jacobian.assign(interleaved_size(b.count, 72), 0.0);
     b.wdetJ.assign(interleaved_size(b.count, 8), 0.0);
   }
   if (const int ns = materials::state_size_of(material); ns > 0)
@@ -71,7 +70,6 @@ ElementBlock make_element_block(const mesh::Mesh& mesh, const mesh::Block& block
     } else {
       double Q[72], w[8];
       hex8::gauss_point_inverse_jacobians(X, Q, w);
-      for (int k = 0; k < 72; ++k) b.inv_jacobian[lane_index(e, k, 72)] = Q[k];
       for (int k = 0; k < 8; ++k) b.wdetJ[lane_index(e, k, 8)] = w[k];
     }
   }

@@ -44,8 +44,9 @@ struct ElementBlock {
   std::vector<double> hg_coefficients;  // c_aj = (X_jJ Gamma_aJ)/V0, [4][3] per element, interleaved (1/m^2)
   std::vector<double> hg_k;      // [e] kappa M (B.B)/(24 V): f = hg_k gamma gamma^T u   (N/m)
   std::vector<double> hg_c;      // [e] nu rho c sqrt(B.B/3)/8: f = hg_c gamma gamma^T v  (N s/m)
-  // fully integrated only, interleaved:
-  std::vector<double> inv_jacobian;  // J^{-1}/8 at the 8 points, [3][3][8] per element (1/m), geometry.hpp
+  // fully integrated only, interleaved (the kernel forms J^{-1} and det J at its points from the
+  // reference coordinates each step, hex8/sum_factorized.hpp; these are the same bits, kept for the
+  // volume averages of point values in the outputs):
   std::vector<double> wdetJ;         // Gauss weight x det J, [8] per element (m^3)
   // material state, state_size_of(material) doubles per material point, n -> n+1 in the force pass:
   // [e][k] (mean quadrature), pair-interleaved [e][point][k] (fully integrated); empty if stateless

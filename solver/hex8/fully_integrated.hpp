@@ -22,26 +22,27 @@ namespace tribex::solver::hex8 {
 
 /// Elements e .. e + lane_count<T> - 1 of the block (e a multiple of the lane count).
 template <class T, class Material>
-void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
-                            const double* v, double* force, double dt, bool want_stress, bool want_stable_step,
+void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* X,
+                            const double* u, const double* v, double* force, double dt, bool want_stress, bool want_stable_step,
                             ElementPassTotals& totals) {
   constexpr int ns = Material::state_size;
   using materials::lane;
   constexpr int n = materials::lane_count<T>;
   const int* nodes[n];
   for (int l = 0; l < n; ++l) nodes[l] = conn + 8 * (blk.first_element + e + l);
-  T ue[24], ve[24];
+  T ue[24], ve[24], Xe[24];
   gather_nodal(u, nodes, ue);
   gather_nodal(v, nodes, ve);
-  // e is a multiple of the lane count: lane l of an interleaved record is element e + l (element_block.hpp)
+  gather_nodal(X, nodes, Xe);
+  // Formed here rather than read: 24 coordinates against 80 stored numbers per element, which made
+  // the kernel memory-bound (tools/bench/README.md, "Reference geometry rebuilt")
   T Q[9][8], w[8];
-  for (int k = 0; k < 9; ++k)
-    for (int p = 0; p < 8; ++p) Q[k][p] = load_record<T>(blk.inv_jacobian, e, 8 * k + p, 72);
-  for (int p = 0; p < 8; ++p) w[p] = load_record<T>(blk.wdetJ, e, p, 8);
+  inverse_jacobians_at_points(Xe, Q, w);
 
   // Bulk viscosity (docs/theory.md 1.5): a pressure q = -b1 rho c L edot + rho (b2 L)^2 min(edot, 0)^2
   // from the element's mean volumetric rate edot = B0_iI v_iI / V. Its force -q B0_iI is added
   // through the point stresses (S - q I at each point), since B0 = sum_p wdetJ_p dN/dX(p).
+  // e is a multiple of the lane count: lane l of an interleaved record is element e + l (element_block.hpp)
   const T V = materials::load_lanes<T>(&blk.volume0[e]);
   const T L = materials::load_lanes<T>(&blk.length0[e]);
   T B0[24];
@@ -118,21 +119,21 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
 /// The block at lane width T (double2, double4 or double8), the tail four (after eight), two and one at a time.
 template <class T, class Material>
 ElementPassTotals fully_integrated_forces(const Material& mat, ElementBlock& blk, const int* conn,
-                                          const double* u, const double* v, double* force, double dt,
+                                          const double* X, const double* u, const double* v, double* force, double dt,
                                           bool want_stress, bool want_stable_step) {
   ElementPassTotals totals;
   constexpr int n = materials::lane_count<T>;
   int e = 0;
-  for (; e + n <= blk.count; e += n) fully_integrated_lanes<T>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
+  for (; e + n <= blk.count; e += n) fully_integrated_lanes<T>(mat, blk, e, conn, X, u, v, force, dt, want_stress, want_stable_step, totals);
 #ifdef __AVX512F__
   if constexpr (n > 4)
     for (; e + 4 <= blk.count; e += 4)
-      fully_integrated_lanes<materials::double4>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
+      fully_integrated_lanes<materials::double4>(mat, blk, e, conn, X, u, v, force, dt, want_stress, want_stable_step, totals);
 #endif
   if constexpr (n > 2)
     for (; e + 2 <= blk.count; e += 2)
-      fully_integrated_lanes<materials::double2>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
-  for (; e < blk.count; ++e) fully_integrated_lanes<double>(mat, blk, e, conn, u, v, force, dt, want_stress, want_stable_step, totals);
+      fully_integrated_lanes<materials::double2>(mat, blk, e, conn, X, u, v, force, dt, want_stress, want_stable_step, totals);
+  for (; e < blk.count; ++e) fully_integrated_lanes<double>(mat, blk, e, conn, X, u, v, force, dt, want_stress, want_stable_step, totals);
   return totals;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "materials/small_matrix.hpp"
+#include "solver/hex8/sum_factorized.hpp"
 
 namespace tribex::solver::hex8 {
 namespace {
@@ -79,17 +80,17 @@ double characteristic_length(const double B[24], double volume) {
 }
 
 double gauss_point_inverse_jacobians(const double X[24], double Q[72], double wdetJ[8]) {
+  // the kernel's own arithmetic (sum_factorized.hpp), so that these are its values bit for bit
+  double Xe[24], Qp[9][8];
+  for (int I = 0; I < 8; ++I)
+    for (int i = 0; i < 3; ++i) Xe[8 * i + I] = X[3 * I + i];
+  inverse_jacobians_at_points(Xe, Qp, wdetJ);
   double volume = 0.0;
   bool inverted = false;
-  double dN[24], adj[9];
   for (int p = 0; p < 8; ++p) {
-    reference_gradients(xi_n[p] * g, eta_n[p] * g, zeta_n[p] * g, dN);
-    const double detJ = jacobian(X, dN, adj);
-    inverted = inverted || !(detJ > 0.0);
-    wdetJ[p] = detJ;
-    volume += detJ;
-    // J^{-1} = adj(J) / det J; the 1/8 of dN/dxi is folded in (sum_factorized.hpp).
-    for (int k = 0; k < 9; ++k) Q[8 * k + p] = adj[k] / (8.0 * detJ);
+    inverted = inverted || !(wdetJ[p] > 0.0);
+    volume += wdetJ[p];
+    for (int k = 0; k < 9; ++k) Q[8 * k + p] = Qp[k][p];
   }
   return inverted ? -std::abs(volume) : volume;
 }

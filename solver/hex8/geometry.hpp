@@ -39,7 +39,8 @@ void hourglass_coefficients(const double X[24], double volume, double c[12]);
 /// a cube of side h); the element's stable step is L_e / c_d (docs/theory.md 1.4).
 double characteristic_length(const double B[24], double volume);
 
-/// Inverse Jacobians (over 8) and weights at the 2x2x2 Gauss points (fully integrated element).
+/// Inverse Jacobians (over 8) and weights at the 2x2x2 Gauss points (fully integrated element), as
+/// the kernel forms them each step (sum_factorized.hpp inverse_jacobians_at_points): the same bits.
 /// Returns the volume; a non-positive det J at any point returns it as a negative value.
 double gauss_point_inverse_jacobians(const double X[24], double Q[72], double wdetJ[8]);
 

@@ -9,15 +9,15 @@ namespace tribex::solver {
 #ifdef TRIBEX_AVX2_KERNELS
 namespace hex8::avx2 {
 // avx2_kernels.cpp
-ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* u, const double* v,
-                                  double* force, double dt, bool want_stress, bool want_stable_step);
+ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
+                                  const double* u, const double* v, double* force, double dt, bool want_stress, bool want_stable_step);
 }  // namespace hex8::avx2
 #endif
 #ifdef TRIBEX_AVX512_KERNELS
 namespace hex8::avx512 {
 // avx512_kernels.cpp
-ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* u, const double* v,
-                                  double* force, double dt, bool want_stress, bool want_stable_step);
+ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
+                                  const double* u, const double* v, double* force, double dt, bool want_stress, bool want_stable_step);
 }  // namespace hex8::avx512
 #endif
 
@@ -52,17 +52,17 @@ int element_lane_width(inputs::ElementFormulation formulation) {
 
 void set_element_lane_width(int lanes) { forced_lane_width = lanes; }
 
-ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
-                                      const double* v, double* force, double dt, bool want_stress,
+ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
+                                      const double* u, const double* v, double* force, double dt, bool want_stress,
                                       bool want_stable_step) {
   const int lanes = element_lane_width(block.formulation);
 #ifdef TRIBEX_AVX512_KERNELS
   if (lanes == 8)
-    return hex8::avx512::internal_forces(block, connectivity, u, v, force, dt, want_stress, want_stable_step);
+    return hex8::avx512::internal_forces(block, connectivity, coordinates, u, v, force, dt, want_stress, want_stable_step);
 #endif
 #ifdef TRIBEX_AVX2_KERNELS
   if (lanes == 4)
-    return hex8::avx2::internal_forces(block, connectivity, u, v, force, dt, want_stress, want_stable_step);
+    return hex8::avx2::internal_forces(block, connectivity, coordinates, u, v, force, dt, want_stress, want_stable_step);
 #endif
   return std::visit(
       [&](const auto& mat) {
@@ -70,7 +70,7 @@ ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivi
         if (block.formulation == inputs::ElementFormulation::mean_quadrature)
           return hex8::mean_quadrature_forces<double2>(mat, block, connectivity, u, v, force, dt, want_stress,
                                                               want_stable_step);
-        return hex8::fully_integrated_forces<double2>(mat, block, connectivity, u, v, force, dt, want_stress,
+        return hex8::fully_integrated_forces<double2>(mat, block, connectivity, coordinates, u, v, force, dt, want_stress,
                                                               want_stable_step);
       },
       block.material);

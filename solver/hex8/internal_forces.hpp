@@ -36,13 +36,14 @@ void set_element_lane_width(int lanes);
 ///   f_iI = S_ij B0_jI (mean quadrature) or sum_g wdetJ_g S_ij dN_I/dX_j(g) (fully integrated),
 /// S from the material (Cauchy/first Piola), minus the bulk-viscosity pressure q (docs/theory.md 1.5),
 /// plus Flanagan-Belytschko hourglass forces (mean quadrature, docs/theory.md 2.2).
-/// u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
+/// coordinates [node][3] reference coordinates (the fully integrated kernel forms its point
+/// geometry from them), u [node][3] displacement at t^{n+1}, v [node][3] velocity at t^{n+1/2}.
 /// The material state goes from t^n to t^{n+1} (dt = t^{n+1} - t^n). When `want_stress` the block's
 /// stress buffer is filled (Cauchy stress, element mean). When `want_stable_step` the pass also
 /// returns the block's stable step at u in `stable`, bitwise what compute_stable_time_step gives
 /// (the estimate folded into a pass that already has the element's gradient).
-ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* u,
-                                      const double* v, double* force, double dt, bool want_stress,
+ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
+                                      const double* u, const double* v, double* force, double dt, bool want_stress,
                                       bool want_stable_step = false);
 
 }  // namespace tribex::solver

@@ -7,13 +7,16 @@
 // the same at the two points of each xi-line; likewise for eta and zeta. With the 1/8 folded into
 // Q = J^{-1}/8 (geometry.hpp) the displacement gradient at point p is H_p = G_p Q_p, G_p[i][d] the
 // edge interpolation above: about 600 flops per element against 1,150 for u_iI dN_I/dX_j at each
-// point, and 80 reference numbers per element (Q, wdetJ) instead of 200 (dN/dX, wdetJ).
+// point. Q and wdetJ themselves come from the reference coordinates by the same edge interpolation
+// (inverse_jacobians_at_points), each step, instead of 80 stored numbers per element.
 //
-// T = double (one element) or materials::double2 (two elements, one per lane; lanes.hpp).
+// T = double (one element) or double2, double4, double8 (elements one per lane; materials/lanes.hpp).
 // Layouts: ue/fe [3][8] (component i of node I at 8i + I); Q [9][8] (Q_dk of point p at
 // [3d + k][p]); the Gauss points are numbered as the nodes (point p at +-1/sqrt(3) with node p's
 // signs), so the points on an edge's line carry the edge's node numbers.
 #pragma once
+
+#include "materials/small_matrix.hpp"
 
 namespace tribex::solver::hex8 {
 
@@ -56,6 +59,29 @@ inline void reference_gradients_at_points(const T ue[24], T G[3][3][8]) {
         G[i][d][edges::plus_node[d][e]] = r[e];
       }
     }
+}
+
+/// The reference geometry at the 8 points from the element's reference coordinates Xe [3][8] (the
+/// layout of ue): with G_p = 8 dX/dxi at point p (reference_gradients_at_points), J_p = G_p / 8, so
+/// Q_p = J_p^{-1} / 8 = G_p^{-1} = adj(G_p) / det G_p and wdetJ_p = det J_p = det G_p / 512 (Gauss
+/// weights 1). The fully integrated kernel forms these each step instead of reading 640 B of stored
+/// operators per element (tools/bench/README.md, "Reference geometry rebuilt"); about 480 flops and
+/// one division per point and element, the same IEEE sequence in every lane.
+template <class T>
+inline void inverse_jacobians_at_points(const T Xe[24], T Q[9][8], T wdetJ[8]) {
+  T G[3][3][8];
+  reference_gradients_at_points(Xe, G);
+  for (int p = 0; p < 8; ++p) {
+    T Gp[9], C[9];  // Gp[3i + d] = 8 dX_i/dxi_d; C its cofactors
+    for (int i = 0; i < 3; ++i)
+      for (int d = 0; d < 3; ++d) Gp[3 * i + d] = G[i][d][p];
+    const T det = materials::cofactor3(Gp, C);
+    const T inv_det = 1.0 / det;
+    // (G^{-1})_dk = adj(G)_dk / det = C_kd / det
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k) Q[3 * d + k][p] = C[3 * k + d] * inv_det;
+    wdetJ[p] = det * (1.0 / 512.0);
+  }
 }
 
 /// Displacement gradient at point p: H[3i + k] = du_i/dX_k = sum_d G[i][d][p] Q[3d + k][p].

@@ -43,7 +43,7 @@ Oscillator make_oscillator(double v0) {
   std::vector<double> u(24, 0.0), v(24, 0.0), f(24, 0.0);
   const double delta = 1e-15;
   u[3 * 6 + 2] = delta;
-  solver::add_internal_forces(model.blocks[0], model.mesh.connectivity.data(), u.data(), v.data(), f.data(), 0.0, false);
+  solver::add_internal_forces(model.blocks[0], model.mesh.connectivity.data(), model.mesh.coordinates.data(), u.data(), v.data(), f.data(), 0.0, false);
   o.k = -f[3 * 6 + 2] / delta;
   o.m = model.mass[6];
   return o;

@@ -30,7 +30,7 @@ TEST(Hourglass, PureModeStoresTheDriverWork) {
     for (int I = 0; I < 8; ++I) du[3 * conn[I]] = amplitude / steps * Gamma1[I];  // x motion in mode Gamma_1
     for (int k = 0; k < 3 * nn; ++k) u[k] += du[k];
     std::fill(f.begin(), f.end(), 0.0);
-    const auto totals = solver::add_internal_forces(blk, conn, u.data(), v.data(), f.data(), 0.0, false);
+    const auto totals = solver::add_internal_forces(blk, conn, model.mesh.coordinates.data(), u.data(), v.data(), f.data(), 0.0, false);
     // Work of the driver = -(internal force) . du, trapezoidal in force.
     for (int k = 0; k < 3 * nn; ++k) work += -0.5 * (f[k] + f_prev[k]) * du[k];
     f_prev = f;

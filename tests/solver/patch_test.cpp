@@ -48,7 +48,7 @@ TEST_P(PatchTest, LinearFieldGivesUniformStress) {
       for (int j = 0; j < 3; ++j) u[3 * n + i] += eps[3 * i + j] * mesh.coordinates[3 * n + j];
     }
   auto& blk = model.blocks[0];
-  const auto totals = solver::add_internal_forces(blk, mesh.connectivity.data(), u.data(), v.data(), f.data(), 0.0, true);
+  const auto totals = solver::add_internal_forces(blk, mesh.connectivity.data(), mesh.coordinates.data(), u.data(), v.data(), f.data(), 0.0, true);
 
   // Expected stress: linear elastic C:eps; neo-Hookean Cauchy stress of F = I + eps (uniform).
   double expected[6];
