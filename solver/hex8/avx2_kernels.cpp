@@ -10,15 +10,16 @@
 
 namespace tribex::solver::hex8::avx2 {
 
-__attribute__((flatten)) ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
-                                                          const double* u, const double* v, double* force, double dt,
+__attribute__((flatten)) ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity,
+                                                          const double* coordinates, const double* u, const double* v, double* force, double dt,
                                                           bool want_stress, bool want_stable_step) {
   using materials::double4;
   return std::visit(
       [&](const auto& mat) {
         if (block.formulation == inputs::ElementFormulation::mean_quadrature)
           return mean_quadrature_forces<double4>(mat, block, connectivity, u, v, force, dt, want_stress, want_stable_step);
-        return fully_integrated_forces<double4>(mat, block, connectivity, coordinates, u, v, force, dt, want_stress, want_stable_step);
+        return fully_integrated_forces<double4>(mat, block, connectivity, coordinates, u, v, force, dt, want_stress,
+                                                want_stable_step);
       },
       block.material);
 }

@@ -10,14 +10,16 @@ namespace tribex::solver {
 namespace hex8::avx2 {
 // avx2_kernels.cpp
 ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
-                                  const double* u, const double* v, double* force, double dt, bool want_stress, bool want_stable_step);
+                                  const double* u, const double* v, double* force, double dt, bool want_stress,
+                                  bool want_stable_step);
 }  // namespace hex8::avx2
 #endif
 #ifdef TRIBEX_AVX512_KERNELS
 namespace hex8::avx512 {
 // avx512_kernels.cpp
 ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
-                                  const double* u, const double* v, double* force, double dt, bool want_stress, bool want_stable_step);
+                                  const double* u, const double* v, double* force, double dt, bool want_stress,
+                                  bool want_stable_step);
 }  // namespace hex8::avx512
 #endif
 

@@ -208,8 +208,8 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
   viscous_power_ = 0.0;
   hex8::StableStepMin stable;
   for (auto& blk : model_.blocks) {
-    const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), model_.mesh.coordinates.data(), u_.data(), v_.data(), f_.data(),
-                                            t - force_time_, want_stress, want_stable_step);
+    const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), model_.mesh.coordinates.data(), u_.data(),
+                                            v_.data(), f_.data(), t - force_time_, want_stress, want_stable_step);
     if (want_stable_step) {  // blocks in order, as compute_stable_time_step visits them
       if (totals.stable.dt < stable.dt) {
         stable.dt = totals.stable.dt;
