@@ -12,6 +12,7 @@ floating-point dataset of results.h5. Exit 0 when compared (whatever the differe
 is missing or the two runs do not have the same columns, rows or datasets.
 """
 import csv
+import os
 import sys
 
 
@@ -58,12 +59,11 @@ def compare_history(a_dir, b_dir):
 
 
 def compare_results(a_dir, b_dir):
-    import os
     pa, pb = f"{a_dir}/results.h5", f"{b_dir}/results.h5"
     if not (os.path.exists(pa) and os.path.exists(pb)):
         print("results.h5: not in both directories, not compared")
         return
-    import h5py
+    import h5py  # only when both runs wrote results.h5
     import numpy as np
     result = []
     with h5py.File(pa, "r") as fa, h5py.File(pb, "r") as fb:
