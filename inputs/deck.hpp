@@ -332,6 +332,17 @@ struct MassScalingSpec {
   SourceLocation target_where, blocks_where, where;
 };
 
+/// `begin decomposition` (solver/parallel/partition.hpp): how a parallel run splits the model. `rcb`
+/// bisects the element centroids; `coordinate scale` multiplies the coordinates when the sides of a
+/// box are compared (the volume's with rcb, the contact patches' with either method), so a small
+/// factor on the direction a contact zone travels keeps it shared by the ranks.
+struct DecompositionSpec {
+  enum class Method { metis, rcb };
+  Method method = Method::metis;
+  std::array<double, 3> coordinate_scale{1.0, 1.0, 1.0};
+  SourceLocation where;
+};
+
 /// `begin presto region NAME`.
 struct RegionSpec {
   std::string name;
@@ -345,6 +356,7 @@ struct RegionSpec {
   double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
   GuardSpec guards;
   std::optional<MassScalingSpec> mass_scaling;
+  DecompositionSpec decomposition;  // defaults without the block
   std::optional<ContactSpec> contact;
   std::optional<ResultsOutputSpec> results;
   std::optional<HistoryOutputSpec> history;

@@ -494,6 +494,11 @@ class Builder {
         r.restart = o;
       } else if (t == "mass scaling") {
         r.mass_scaling = mass_scaling(c, r.guards);
+      } else if (t == "decomposition") {
+        r.decomposition.where = c.where;
+        if (word(c, "method") == "rcb") r.decomposition.method = DecompositionSpec::Method::rcb;
+        if (auto scale = get(c, "coordinate scale"); scale && scale->numbers.size() == 3)
+          for (int i = 0; i < 3; ++i) r.decomposition.coordinate_scale[i] = scale->numbers[i];
       }
     }
     return r;

@@ -313,8 +313,20 @@ std::vector<BlockSchema> build_table() {
                 {"results output", 0, 1},
                 {"history output", 0, 1},
                 {"restart output", 0, 1},
-                {"mass scaling", 0, 1}},
+                {"mass scaling", 0, 1},
+                {"decomposition", 0, 1}},
                false, "boundary conditions and output"});
+
+  t.push_back({"decomposition", NameRule::none, {}, {}, true,
+               {choice("method", ValueKind::enumeration, {"metis", "rcb"}, false, "metis",
+                       "how a parallel run splits the elements: metis (graph partition, fewest shared nodes) or rcb "
+                       "(recursive coordinate bisection of the element centroids: planar cuts)"),
+                reals("coordinate scale", dim::none, 3, positive(), false, "1 1 1",
+                      "sx sy sz: coordinates multiplied by these when the sides of a box are compared (rcb's volume, "
+                      "and the contact patches with either method); a small factor on the direction a contact zone "
+                      "travels keeps the cuts along it, so the zone stays shared by the ranks")},
+               {},
+               false, "how a parallel run partitions the model (solver/parallel/partition.hpp)"});
 
   t.push_back({"mass scaling", NameRule::none, {}, {}, true,
                {real("target time step", dim::time, positive(), false, "",

@@ -10,8 +10,6 @@
 #include <unordered_map>
 #include <utility>
 
-#include "solver/parallel/coordinate_split.hpp"
-
 namespace tribex::solver {
 namespace {
 
@@ -100,21 +98,6 @@ void link_nearest(const SurfaceFaces& from, const SurfaceFaces& to, bool from_sl
   }
 }
 
-// Recursive coordinate bisection of `items` (indices into `centre`) into patches first..first+count-1,
-// sizes proportional to the patch counts; ties by index.
-void bisect(std::vector<int>& items, std::size_t begin, std::size_t end, int first, int count,
-            const std::vector<double>& centre, std::vector<int>& patch_of) {
-  if (count == 1 || end - begin <= 1) {
-    for (std::size_t k = begin; k < end; ++k) patch_of[items[k]] = first;
-    return;
-  }
-  const int left = count / 2;
-  const std::size_t mid = begin + (end - begin) * static_cast<std::size_t>(left) / static_cast<std::size_t>(count);
-  parallel::split_along_longest_side(items, begin, mid, end, centre);
-  bisect(items, begin, mid, first, left, centre, patch_of);
-  bisect(items, mid, end, first + left, count - left, centre, patch_of);
-}
-
 // (slave, master) pairs of every interaction, each once, ascending.
 std::vector<std::pair<int, int>> facing_pairs(const mesh::Mesh& mesh, const inputs::ContactSpec& spec) {
   std::vector<std::pair<int, int>> pairs;
@@ -140,7 +123,8 @@ std::vector<int> contact_element_links(const mesh::Mesh& mesh, const inputs::Con
   return links;
 }
 
-void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* spec, int parts, std::vector<int>& part) {
+void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* spec, int parts, std::vector<int>& part,
+                           const parallel::AxisScale& scale) {
   if (!spec || parts <= 1) return;
   // The slave-side elements, ascending, and their face centroids (an element with several slave
   // faces: their mean); arrays by slave element, not by mesh element (rank 0 runs this on the whole mesh).
@@ -170,7 +154,7 @@ void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* sp
   const int patches = std::min(parts, count);
   std::vector<int> patch_of(slave.size(), -1), items(slave.size());
   std::iota(items.begin(), items.end(), 0);
-  bisect(items, 0, items.size(), 0, patches, centre, patch_of);
+  parallel::bisect_into_parts(items, 0, items.size(), 0, patches, centre, patch_of, scale);
   // Patch -> rank: largest overlap with the METIS parts first (ties: lower patch, then lower rank).
   std::vector<long long> overlap(static_cast<std::size_t>(patches) * parts, 0);
   for (int k = 0; k < count; ++k) ++overlap[static_cast<std::size_t>(patch_of[k]) * parts + part[slave[k]]];

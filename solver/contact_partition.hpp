@@ -7,8 +7,8 @@
 //   - the elements with a face in a slave surface of an interaction (both surfaces of a symmetric
 //     one; the slave the run enforces: callers pass as_enforced(spec), contact_setup.hpp, since
 //     build_contact swaps a stiff slave on a soft master) are cut into `parts` patches by recursive
-//     coordinate bisection of their face centroids (equal counts; the longest side of each box cut
-//     at its median);
+//     coordinate bisection of their face centroids (equal counts; the longest side of each box, after
+//     the deck's `coordinate scale`, cut at its median: parallel/coordinate_split.hpp);
 //   - patch k goes to the rank whose METIS part holds most of its elements (greedy, largest overlap
 //     first), so that few elements move;
 //   - each element of a master surface facing a slave face (the nearest within two face diagonals,
@@ -22,6 +22,7 @@
 
 #include "inputs/deck.hpp"
 #include "mesh/mesh.hpp"
+#include "solver/parallel/coordinate_split.hpp"
 
 namespace tribex::solver {
 
@@ -33,7 +34,9 @@ namespace tribex::solver {
 std::vector<int> contact_element_links(const mesh::Mesh& mesh, const inputs::ContactSpec* spec);
 
 /// Places the contact surfaces' elements of `part` [element] (a partition into `parts`) in patches as
-/// above. Nothing without `spec` or with one part. Deterministic.
-void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* spec, int parts, std::vector<int>& part);
+/// above, the sides of the bisection's boxes compared after `scale`. Nothing without `spec` or with one
+/// part. Deterministic.
+void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* spec, int parts, std::vector<int>& part,
+                           const parallel::AxisScale& scale = parallel::kUnitScale);
 
 }  // namespace tribex::solver

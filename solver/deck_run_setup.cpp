@@ -78,11 +78,14 @@ void DeckRun::build_parts() {
       whole.emplace(build_mesh(deck_));
       if (region_.contact) contact = contact_faces(*whole, *region_.contact);
       try {
-        part = parallel::partition_elements(*whole, ranks_);
+        const auto& decomposition = region_.decomposition;
+        part = decomposition.method == inputs::DecompositionSpec::Method::rcb
+                   ? parallel::partition_elements_rcb(*whole, ranks_, decomposition.coordinate_scale)
+                   : parallel::partition_elements(*whole, ranks_);
         if (region_.contact) {
           // The patches go to the surfaces the run enforces as slaves (build_contact may swap a pair).
           const inputs::ContactSpec enforced = as_enforced(*region_.contact, contact, block_wave_moduli(deck_, *whole));
-          place_contact_patches(*whole, &enforced, ranks_, part);
+          place_contact_patches(*whole, &enforced, ranks_, part, decomposition.coordinate_scale);
         }
       } catch (const std::runtime_error& e) {
         throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
@@ -114,13 +117,26 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
   for (int p : part) ++rank_elements[p];
   const auto [fewest, most] = std::minmax_element(rank_elements.begin(), rank_elements.end());
-  const int cluster = parallel::partition_cluster_size(whole.element_count(), ranks_);
-  const std::string graph = cluster > 1 ? format("graph of k-d clusters of up to %d elements", cluster) : "element graph";
-  log_.say(format("parallel: %d ranks, METIS k-way partition of the %s%s; %d-%d elements per rank; %d nodes on partition "
-                  "boundaries; every rank builds only its part",
-                  ranks_, graph.c_str(),
-                  region_.contact ? ", contact surfaces in one compact patch per rank" : "",
-                  *fewest, *most, shared));
+  const auto& decomposition = region_.decomposition;
+  const auto& scale = decomposition.coordinate_scale;
+  const bool scaled = scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0;
+  const std::string sides = scaled ? format(" (sides scaled %g %g %g)", scale[0], scale[1], scale[2]) : std::string();
+  std::string method;
+  if (decomposition.method == inputs::DecompositionSpec::Method::rcb) {
+    method = "recursive coordinate bisection of the element centroids" + sides;
+  } else {
+    const int cluster = parallel::partition_cluster_size(whole.element_count(), ranks_);
+    method = "METIS k-way partition of the " +
+             (cluster > 1 ? format("graph of k-d clusters of up to %d elements", cluster) : std::string("element graph"));
+  }
+  // The patches' bisection takes the scale with either method; with rcb the line says it once.
+  std::string patches;
+  if (region_.contact)
+    patches = ", contact surfaces in one compact patch per rank" +
+              (decomposition.method == inputs::DecompositionSpec::Method::metis ? sides : std::string());
+  log_.say(format("parallel: %d ranks, %s%s; %d-%d elements per rank; %d nodes on partition boundaries; every rank "
+                  "builds only its part",
+                  ranks_, method.c_str(), patches.c_str(), *fewest, *most, shared));
 }
 
 void DeckRun::report_mesh(const Model& model) {

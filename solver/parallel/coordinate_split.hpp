@@ -1,21 +1,44 @@
 // SPDX-License-Identifier: MIT
-// The step both geometric partitions take (the k-d clusters of element_clusters.cpp and the contact
-// patches of solver/contact_partition.cpp): split a range of points at a given rank along the longest
-// side of their box. Points are `items` (indices into `centre`, [item][3]); ties by item number, so
-// the same points give the same split on every machine.
+// The step the geometric partitions take (the k-d clusters of element_clusters.cpp, the coordinate
+// bisection of the volume, parallel/partition.hpp, and the contact patches of
+// solver/contact_partition.cpp): split a range of points at a given rank along the longest side of
+// their box. Points are `items` (indices into `centre`, [item][3]); ties by item number, so the same
+// points give the same split on every machine.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <vector>
 
+#include "mesh/mesh.hpp"
+
 namespace tribex::solver::parallel {
 
+/// [element][3] the element centroids (the mean of the 8 nodes), as `Real` (the clusters keep float:
+/// 12 B per element on rank 0).
+template <class Real>
+std::vector<Real> element_centres(const mesh::Mesh& mesh) {
+  const std::size_t ne = static_cast<std::size_t>(mesh.element_count());
+  std::vector<Real> centre(3 * ne, Real(0));
+  for (std::size_t e = 0; e < ne; ++e)
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i)
+        centre[3 * e + i] +=
+            static_cast<Real>(0.125 * mesh.coordinates[3 * static_cast<std::size_t>(mesh.connectivity[8 * e + a]) + i]);
+  return centre;
+}
+
+/// Multipliers of the coordinates when the sides of a box are compared (the deck's `coordinate scale`,
+/// LS-DYNA's decomposition transformation SX SY SZ): a small factor on an axis keeps the cuts along it.
+using AxisScale = std::array<double, 3>;
+inline constexpr AxisScale kUnitScale{1.0, 1.0, 1.0};
+
 /// Reorders items[begin, end) so that the first `mid - begin` are the lowest along the longest side
-/// of their bounding box (std::nth_element: linear time, neither half sorted).
+/// of their bounding box, sides measured after `scale` (std::nth_element: linear time, neither half sorted).
 template <class Real>
 void split_along_longest_side(std::vector<int>& items, std::size_t begin, std::size_t mid, std::size_t end,
-                              const std::vector<Real>& centre) {
+                              const std::vector<Real>& centre, const AxisScale& scale = kUnitScale) {
   if (end - begin < 2) return;
   auto at = [&](int item, int axis) { return centre[3 * static_cast<std::size_t>(item) + axis]; };
   Real lo[3], hi[3];
@@ -27,13 +50,30 @@ void split_along_longest_side(std::vector<int>& items, std::size_t begin, std::s
     }
   int axis = 0;
   for (int i = 1; i < 3; ++i)
-    if (hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
+    if (scale[i] * (hi[i] - lo[i]) > scale[axis] * (hi[axis] - lo[axis])) axis = i;
   const auto first = items.begin();
   std::nth_element(first + static_cast<std::ptrdiff_t>(begin), first + static_cast<std::ptrdiff_t>(mid),
                    first + static_cast<std::ptrdiff_t>(end), [&](int a, int b) {
                      const Real ca = at(a, axis), cb = at(b, axis);
                      return ca < cb || (ca == cb && a < b);
                    });
+}
+
+/// Recursive coordinate bisection: items[begin, end) into parts first .. first + count - 1, each part's
+/// share of the items proportional to its count of parts (an odd count splits count/2 : the rest);
+/// part_of[item] receives the part.
+template <class Real>
+void bisect_into_parts(std::vector<int>& items, std::size_t begin, std::size_t end, int first, int count,
+                       const std::vector<Real>& centre, std::vector<int>& part_of, const AxisScale& scale = kUnitScale) {
+  if (count == 1 || end - begin <= 1) {
+    for (std::size_t k = begin; k < end; ++k) part_of[static_cast<std::size_t>(items[k])] = first;
+    return;
+  }
+  const int left = count / 2;
+  const std::size_t mid = begin + (end - begin) * static_cast<std::size_t>(left) / static_cast<std::size_t>(count);
+  split_along_longest_side(items, begin, mid, end, centre, scale);
+  bisect_into_parts(items, begin, mid, first, left, centre, part_of, scale);
+  bisect_into_parts(items, mid, end, first + left, count - left, centre, part_of, scale);
 }
 
 }  // namespace tribex::solver::parallel

@@ -13,12 +13,7 @@ namespace {
 // k-d tree leaves over the element centroids, numbered left to right; `order` ends grouped by leaf.
 void split_into_leaves(const mesh::Mesh& mesh, int size, std::vector<int>& order, ElementClusters& out) {
   const int ne = mesh.element_count();
-  std::vector<float> centre(3 * static_cast<std::size_t>(ne), 0.0f);  // single precision: 12 B per element
-  for (int e = 0; e < ne; ++e)
-    for (int a = 0; a < 8; ++a)
-      for (int i = 0; i < 3; ++i)
-        centre[3 * static_cast<std::size_t>(e) + i] += static_cast<float>(
-            0.125 * mesh.coordinates[3 * static_cast<std::size_t>(mesh.connectivity[8 * static_cast<std::size_t>(e) + a]) + i]);
+  const std::vector<float> centre = element_centres<float>(mesh);  // single precision: 12 B per element
   order.resize(static_cast<std::size_t>(ne));
   std::iota(order.begin(), order.end(), 0);
   std::vector<std::pair<int, int>> stack{{0, ne}};

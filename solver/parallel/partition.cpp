@@ -4,6 +4,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -101,6 +102,18 @@ std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, int clust
                                          nullptr, data(g.edge_weight), &n_parts, nullptr, nullptr, options, &cut, result.data());
   if (status != METIS_OK) throw std::runtime_error("METIS_PartGraphKway failed (status " + std::to_string(status) + ")");
   for (int e = 0; e < ne; ++e) part[e] = static_cast<int>(result[cluster_of.empty() ? e : cluster_of[e]]);
+  return part;
+}
+
+std::vector<int> partition_elements_rcb(const mesh::Mesh& mesh, int parts, const AxisScale& scale) {
+  const int ne = mesh.element_count();
+  std::vector<int> part(static_cast<std::size_t>(ne), 0);
+  if (parts <= 1 || ne == 0) return part;
+  if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
+  const std::vector<double> centre = element_centres<double>(mesh);
+  std::vector<int> items(static_cast<std::size_t>(ne));
+  std::iota(items.begin(), items.end(), 0);
+  bisect_into_parts(items, 0, items.size(), 0, parts, centre, part, scale);
   return part;
 }
 

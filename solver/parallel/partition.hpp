@@ -1,14 +1,20 @@
 // SPDX-License-Identifier: MIT
-// Element partition of a mesh for a parallel run: METIS k-way (METIS_PartGraphKway) on the
-// element dual graph (two hex8 elements are neighbours when they share a face, 4 nodes), or for a
-// large mesh on the graph of compact clusters of elements (element_clusters.hpp), with a
-// fixed seed so that a run is partitioned the same way every time (rank 0 computes it and sends the
-// ranks their parts: parallel/mesh_part.hpp).
+// Element partition of a mesh for a parallel run (rank 0 computes it and sends the ranks their parts:
+// parallel/mesh_part.hpp), by the deck's `begin decomposition` method:
+//   - metis (default): METIS k-way (METIS_PartGraphKway) on the element dual graph (two hex8 elements
+//     are neighbours when they share a face, 4 nodes), or for a large mesh on the graph of compact
+//     clusters of elements (element_clusters.hpp), with a fixed seed so that a run is partitioned the
+//     same way every time;
+//   - rcb: recursive coordinate bisection of the element centroids (equal element counts; each box's
+//     longest side after the `coordinate scale` cut at its median). Planar cuts the user can steer: a
+//     contact zone that travels along y stays shared by the ranks when y's scale is small, since no
+//     cut then crosses the track (inputs/examples/afm_sliding).
 #pragma once
 
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "solver/parallel/coordinate_split.hpp"
 
 namespace tribex::solver::parallel {
 
@@ -19,6 +25,9 @@ namespace tribex::solver::parallel {
 /// that METIS's workspace on rank 0 stays small. The contact surfaces are placed afterwards
 /// (place_contact_patches, solver/contact_partition.hpp). Throws std::runtime_error when METIS fails.
 std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, int cluster_size = 0);
+/// [element] the part by recursive coordinate bisection of the element centroids, sides compared after
+/// `scale`. One part: all zeros. Deterministic. Throws std::runtime_error for more parts than elements.
+std::vector<int> partition_elements_rcb(const mesh::Mesh& mesh, int parts, const AxisScale& scale = kUnitScale);
 /// The cluster size partition_elements chooses for `elements` and `parts` (1: the element graph).
 int partition_cluster_size(int elements, int parts);
 

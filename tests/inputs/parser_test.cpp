@@ -4,6 +4,7 @@
 // definitions, so numbers are compared to a relative 1e-15.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -269,6 +270,25 @@ TEST(Parser, PrescribedForce) {
                                        "        component = z\n        function = f\n"
                                        "        scale factor = 2 nm\n      end\n"));
   EXPECT_TRUE(has_error(ds, 38, "needs a force (N)")) << all(ds);  // the scale factor line
+}
+
+TEST(Parser, Decomposition) {
+  // Without the block: METIS, unit scale.
+  const Deck plain = parse_deck_string(deck_with_region(""), "plain.i");
+  EXPECT_EQ(plain.procedure.region.decomposition.method, DecompositionSpec::Method::metis);
+  EXPECT_EQ(plain.procedure.region.decomposition.coordinate_scale, (std::array<double, 3>{1, 1, 1}));
+  const Deck d = parse_deck_string(deck_with_region("      begin decomposition\n        method = rcb\n"
+                                                    "        coordinate scale = 1 0.01 1\n      end\n"),
+                                   "dec.i");
+  const auto& dec = d.procedure.region.decomposition;
+  EXPECT_EQ(dec.method, DecompositionSpec::Method::rcb);
+  EXPECT_EQ(dec.coordinate_scale, (std::array<double, 3>{1, 0.01, 1}));
+  EXPECT_EQ(dec.where.line, 34);
+  // A zero scale would put every cut on one axis; a method not in the list is named with the choices.
+  auto ds = errors_of(deck_with_region("      begin decomposition\n        coordinate scale = 1 0 1\n      end\n"));
+  EXPECT_TRUE(has_error(ds, 35, "coordinate scale")) << all(ds);
+  ds = errors_of(deck_with_region("      begin decomposition\n        method = parmetis\n      end\n"));
+  EXPECT_TRUE(has_error(ds, 35, "metis")) << all(ds);
 }
 
 TEST(Parser, SurfaceLayerBlock) {

@@ -25,6 +25,8 @@
       runs DECK (meant to fail; not quiet, so that rank 0 prints its log); exit code C, TEXT printed
       exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
       ranks) from a restart file written by a one-rank run stopped after STEP.
+  agree ... --decomposition "rcb SX SY SZ": both runs of a deck given a `begin decomposition` block (written
+      to OUT/deck.i); the parallel run's log must name the coordinate bisection.
 """
 import argparse
 import csv
@@ -58,13 +60,38 @@ def read(path):
     return rows[0], [[float(x) for x in r] for r in rows[1:]]
 
 
+def with_decomposition(a):
+    """--decomposition "METHOD SX SY SZ": DECK with a `begin decomposition` block in its region, written to
+    OUT/deck.i (both runs take it; one rank ignores it). DECK must not name files relative to itself."""
+    if not a.decomposition:
+        return a.deck
+    method, *scale = a.decomposition.split()
+    with open(a.deck) as f:
+        lines = f.read().split("\n")
+    at = next(i for i, line in enumerate(lines) if line.strip().startswith("use finite element model"))
+    block = ["      begin decomposition", f"        method = {method}",
+             f"        coordinate scale = {' '.join(scale)}", "      end decomposition"]
+    os.makedirs(a.out, exist_ok=True)
+    deck = os.path.join(a.out, "deck.i")
+    with open(deck, "w") as f:
+        f.write("\n".join(lines[:at + 1] + block + lines[at + 1:]))
+    return deck
+
+
 def agree(a):
     serial, parallel = a.reference or os.path.join(a.out, "np1"), os.path.join(a.out, f"np{a.ranks}")
     for d in ((parallel,) if a.reference else (serial, parallel)):
         shutil.rmtree(d, ignore_errors=True)
+    deck = with_decomposition(a)
     if not a.reference:
-        run(a.tribex, a.deck, serial, 1)
-    run(a.tribex, a.deck, parallel, a.ranks)
+        run(a.tribex, deck, serial, 1)
+    run(a.tribex, deck, parallel, a.ranks)
+    if a.decomposition:
+        with open(os.path.join(parallel, "log.txt")) as f:
+            partition = next((line.strip() for line in f if line.startswith("parallel: ")), "")  # the set-up's line
+        print(partition)
+        if "recursive coordinate bisection" not in partition and a.decomposition.startswith("rcb"):
+            sys.exit("FAIL: the run did not partition by coordinate bisection")
     h1, r1 = read(os.path.join(serial, "history.csv"))
     h2, r2 = read(os.path.join(parallel, "history.csv"))
     if h1 != h2 or len(r1) != len(r2):
@@ -268,6 +295,8 @@ def main():
     ap.add_argument("--expect", default="")
     ap.add_argument("--serial-restart-at", type=int, default=-1)
     ap.add_argument("--termination", default="")
+    ap.add_argument("--decomposition", default="",
+                    help='agree: "METHOD SX SY SZ", both runs with this `begin decomposition` (OUT/deck.i)')
     ap.add_argument("--strict-region", action="store_true",
                     help="agree: also require that some rank's contact region holds fewer faces than the whole "
                          "surfaces (summary.json rank_counts contact_faces), so the distributed contact is exercised")

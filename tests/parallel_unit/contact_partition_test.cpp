@@ -146,3 +146,44 @@ TEST(ContactPartition, PatchesGoToTheSurfaceTheRunEnforcesAsSlave) {
   ASSERT_EQ(top_of.size(), 4u);
   for (const auto& [p, count] : top_of) EXPECT_EQ(count, 36) << "part " << p;
 }
+
+// `begin decomposition`, method = rcb: recursive coordinate bisection of the element centroids,
+// equal counts, each box's longest side (after the coordinate scale) cut at its median.
+TEST(Partition, CoordinateBisectionCutsTheScaledLongestSide) {
+  mesh::BoxSpec box;
+  box.name = "bar";
+  box.size = {8, 4, 2};
+  box.intervals = {8, 4, 2};
+  const mesh::Mesh m = mesh::generate_box(box);
+  auto index = [&](int e, int axis) { return static_cast<int>(std::floor(centroid(m, e)[axis])); };
+  // Unit scale: x (8) is longest, then each half is 4 x 4 x 2 and x comes first among equals: four
+  // slabs of two x columns.
+  const std::vector<int> slabs = solver::parallel::partition_elements_rcb(m, 4);
+  for (int e = 0; e < m.element_count(); ++e) EXPECT_EQ(slabs[e], index(e, 0) / 2) << "element " << e;
+  // x scaled by 0.01: no cut crosses x; y (4) is cut, then y (2) again before z (2): a part per y row.
+  const std::vector<int> rows = solver::parallel::partition_elements_rcb(m, 4, {0.01, 1.0, 1.0});
+  for (int e = 0; e < m.element_count(); ++e) EXPECT_EQ(rows[e], index(e, 1)) << "element " << e;
+  // Three parts: 64 elements split 21 : 43, then 21 : 22 (counts proportional to the parts).
+  const std::vector<int> three = solver::parallel::partition_elements_rcb(m, 3);
+  EXPECT_EQ(std::count(three.begin(), three.end(), 0), 21);
+  EXPECT_EQ(std::count(three.begin(), three.end(), 1), 21);
+  EXPECT_EQ(std::count(three.begin(), three.end(), 2), 22);
+  EXPECT_EQ(solver::parallel::partition_elements_rcb(m, 3), three) << "deterministic";
+  EXPECT_EQ(solver::parallel::partition_elements_rcb(m, 1), std::vector<int>(64, 0));
+  EXPECT_THROW(solver::parallel::partition_elements_rcb(m, 65), std::runtime_error);
+}
+
+// The case the scale is for: a contact zone that travels along y (a tip sliding on a track). With
+// y's scale small, the volume and the slave patches are both cut by the plane x = 6 through the
+// indenter's middle, so the patches move no element and wherever the indenter goes along y, half of
+// its footprint is on each rank. With unit scale the block (12 x 12) is cut across y as well.
+TEST(Partition, ScaledBisectionKeepsATravellingZoneShared) {
+  const mesh::Mesh m = block_and_indenter();
+  const inputs::ContactSpec spec = indenter_on_block();
+  const solver::parallel::AxisScale along_y{1.0, 0.01, 1.0};
+  const std::vector<int> volume = solver::parallel::partition_elements_rcb(m, 2, along_y);
+  std::vector<int> part = volume;
+  solver::place_contact_patches(m, &spec, 2, part, along_y);
+  EXPECT_EQ(part, volume) << "the patches agree with the volume's cut";
+  for (int e = 0; e < m.element_count(); ++e) EXPECT_EQ(part[e], centroid(m, e)[0] < 6.0 ? 0 : 1) << "element " << e;
+}

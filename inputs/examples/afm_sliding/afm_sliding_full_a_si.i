@@ -132,6 +132,10 @@ begin sierra afm_sliding_full_a_si
     begin presto region main
       use finite element model afm_track
       mass damping coefficient = 5e11 1/s
+      begin decomposition
+        method = rcb
+        coordinate scale = 1 0.01 1
+      end decomposition
       begin fixed displacement
         node set = substrate_bottom
         components = x y z

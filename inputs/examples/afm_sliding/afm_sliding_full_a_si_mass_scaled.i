@@ -136,6 +136,10 @@ begin sierra afm_sliding_full_a_si_mass_scaled
         largest factor = 8                  # target time step = 8 x the unscaled step
         maximum added mass fraction = 22
       end mass scaling
+      begin decomposition
+        method = rcb
+        coordinate scale = 1 0.01 1
+      end decomposition
       begin fixed displacement
         node set = substrate_bottom
         components = x y z

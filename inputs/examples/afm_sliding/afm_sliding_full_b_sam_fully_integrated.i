@@ -127,6 +127,10 @@ begin sierra afm_sliding_full_b_sam_fully_integrated
     begin presto region main
       use finite element model afm_track
       mass damping coefficient = 5e11 1/s
+      begin decomposition
+        method = rcb
+        coordinate scale = 1 0.01 1
+      end decomposition
       begin fixed displacement
         node set = substrate_bottom
         components = x y z

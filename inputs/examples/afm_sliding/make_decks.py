@@ -55,6 +55,16 @@ SPEED = 7.5           # m/s
 LOAD = 500            # nN
 
 
+# Parallel runs (full variant): the tip slides 70 nm along y, so the partition's cuts go along y
+# (recursive coordinate bisection, y's sides scaled by 0.01: no cut crosses the track) and the contact
+# zone stays shared by the ranks all the way; METIS's cut at y = 150 nm put it on one rank at a time
+# (README.md "Decomposition along the slide"). A serial run ignores the block.
+DECOMPOSITION_ALONG_SLIDE = """
+      begin decomposition
+        method = rcb
+        coordinate scale = 1 0.01 1
+      end decomposition"""
+
 RESTART_EVERY_10_MIN = """
       begin restart output
         wall time increment = 600 s
@@ -73,12 +83,12 @@ def load_fraction(t):
 VARIANTS = {
     "reduced": dict(window="102 153 40 36", track="106 156 28 30", h=1.0, depth=15, start=(120, 170),
                     touch=37.6126, distance=3.0, tip_width=26, tip_height=8, fine_half_width=11,
-                    tip_fine_depth=2, coating_layers=3, hist=2, fields=100, restart=""),
+                    tip_fine_depth=2, coating_layers=3, hist=2, fields=100, restart="", decomposition=""),
     "full": dict(window="100 100 100 100", track="102.5 100 35 100", h=0.5, depth=40, start=(120, 115),
                  touch=34.3498, distance=70.0, tip_width=30, tip_height=12, fine_half_width=13,
                  tip_fine_depth=3, coating_layers=6, hist=5, fields=1000,
                  # hours long: a restart file every 10 min of wall time (--restart OUT/restart.h5 resumes)
-                 restart=RESTART_EVERY_10_MIN),
+                 restart=RESTART_EVERY_10_MIN, decomposition=DECOMPOSITION_ALONG_SLIDE),
 }
 CASES = {
     "a_si": dict(title="(a) silicon on silicon", coating=False, tau=195,
@@ -144,7 +154,7 @@ begin sierra {name}
     end time control
     begin presto region main
       use finite element model afm_track
-      mass damping coefficient = 5e11 1/s
+      mass damping coefficient = 5e11 1/s{decomposition}
 {substrate_bottom}
       begin silent boundary
         side set = substrate_sides
@@ -247,7 +257,7 @@ def main():
                 tip_height=v["tip_height"], fine_half_width=v["fine_half_width"],
                 tip_fine_depth=v["tip_fine_depth"], x0=v["start"][0], y0=v["start"][1],
                 apex_z=v["touch"] + 0.3, blocks="\n".join(blocks),
-                substrate_bottom=fixed_displacement("substrate_bottom", "x y z"),
+                decomposition=v["decomposition"], substrate_bottom=fixed_displacement("substrate_bottom", "x y z"),
                 tip_top="\n".join([fixed_displacement("tip_top", "x"),
                                    prescribed("force", "tip_top", "z", "load", f"-{LOAD} nN"),
                                    prescribed("displacement", "tip_top", "y", "slide")]),
