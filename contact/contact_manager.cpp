@@ -50,8 +50,8 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
   fit_r2_.reserve(primary_slave_nodes);
   fit_p2_.reserve(primary_slave_nodes);
   plan_.assign(passes_.size(), 0.0);
-  located_value_.assign(3 + 3 * passes_.size(), 0.0);
-  located_node_.assign(3 + 3 * passes_.size(), -1);
+  located_value_.assign(4 + 3 * passes_.size(), 0.0);
+  located_node_.assign(4 + 3 * passes_.size(), -1);
   for (const auto& s : surfaces_) all_nodes_.insert(all_nodes_.end(), s.nodes.begin(), s.nodes.end());
   std::sort(all_nodes_.begin(), all_nodes_.end());
   all_nodes_.erase(std::unique(all_nodes_.begin(), all_nodes_.end()), all_nodes_.end());
@@ -187,6 +187,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
     traction_[3 * node] = traction_[3 * node + 1] = traction_[3 * node + 2] = 0.0;
   }
   if (std::any_of(passes_.begin(), passes_.end(), [](const Pass& p) { return p.search_due < 0; })) plan_searches(x);
+  long long step_pairs = 0;  // candidate pairs of this evaluation, all passes
   for (auto& p : passes_) {
     if (p.search_due) {
       search(p, x);
@@ -195,7 +196,7 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       ++work_.reuses;
     }
     p.search_due = -1;
-    if (!p.candidate_offset.empty()) work_.pairs += p.candidate_offset.back();
+    if (!p.candidate_offset.empty()) step_pairs += p.candidate_offset.back();
     p.gap.assign(surfaces_[p.slave].nodes.size(), NAN);
     p.stable_dt = INFINITY;
     if (v) track_motion(p, v);
@@ -205,7 +206,8 @@ ContactTotals ContactManager::compute_forces(const double* x, const double* v, d
       node_to_face(p, {x, v, other_force, dt, force}, totals, friction);
     if (axis_.set && p.primary) totals.radius_edge = edge_radius(p, x);
   }
-  reduce_totals(totals, friction);
+  work_.pairs += step_pairs;
+  reduce_totals(totals, friction, step_pairs);
   if (v)
     for (const auto& p : passes_) {
       const double capture = p.mortar && p.capture > 0.0 ? p.capture : p.margin;

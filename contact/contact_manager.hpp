@@ -150,6 +150,12 @@ class ContactManager {
     long long searches = 0;        // full broad-phase searches (the set-up one of initial_overlaps included)
     long long reuses = 0;          // pass-steps that kept the candidates of an earlier search
     long long pairs = 0;           // candidate node-face pairs evaluated
+    // Over the ranks, summed over the evaluations: the busiest rank's pairs and all ranks' pairs
+    // (one rank: both its own). balance() = busiest x ranks / all: 1 when the work is shared evenly,
+    // the rank count when one rank has it all (a contact zone on one rank: solver/README.md
+    // "Parallel runs", `begin decomposition`).
+    double busiest_pairs = 0.0, all_pairs = 0.0;
+    double balance(int ranks) const { return all_pairs > 0.0 ? busiest_pairs * ranks / all_pairs : 1.0; }
   };
   const Work& work() const { return work_; }
   /// Critical time step of the rough-surface contact at the last compute_forces: min over nodes of
@@ -229,7 +235,7 @@ class ContactManager {
   double motion_since_search(const Pass& p, const double* x) const;
   void track_motion(Pass& p, const double* v) const;
   void search(Pass& p, const double* x);
-  void reduce_totals(ContactTotals& totals, double friction[3]);
+  void reduce_totals(ContactTotals& totals, double friction[3], long long step_pairs);
   bool counts(int node) const { return counted_.empty() || counted_[node] != 0; }
 
   std::vector<ContactSurface> surfaces_;
@@ -262,7 +268,7 @@ class ContactManager {
   std::vector<double> plan_;    // [pass] scratch of plan_searches
   // Scratch of reduce_totals: the maxima (penetration, radius, each pass's stable step; no node) and
   // the located maxima (penetration ratio, each pass's fastest slave and master), one reduction.
-  std::vector<double> located_value_;  // [3 + 3 pass]
+  std::vector<double> located_value_;  // [4 + 3 pass]
   std::vector<int> located_node_;
   double largest_face_diameter_ = 0.0;  // over every surface in the reference positions, m (region_reach)
   Axis axis_;

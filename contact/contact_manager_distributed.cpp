@@ -118,11 +118,15 @@ void ContactManager::set_node_state(int node, const double* in) {
 }
 
 // The sums, maxima and minima of this step over the ranks: each rank summed only the nodes it counts.
-void ContactManager::reduce_totals(ContactTotals& t, double friction[3]) {
-  if (!reductions_) return;
+void ContactManager::reduce_totals(ContactTotals& t, double friction[3], long long step_pairs) {
+  if (!reductions_) {
+    work_.busiest_pairs += double(step_pairs);
+    work_.all_pairs += double(step_pairs);
+    return;
+  }
   double sums[] = {t.normal_force, t.compressive_force, t.adhesive_force, t.adhesion_energy, t.junction_capacity,
                    t.friction_power, t.area, double(t.nodes), t.real_area, t.asperity_contacts, t.nominal_area,
-                   friction[0], friction[1], friction[2]};
+                   friction[0], friction[1], friction[2], double(step_pairs)};
   reductions_->sum(sums, static_cast<int>(std::size(sums)));
   double* s = sums;
   for (double* field : {&t.normal_force, &t.compressive_force, &t.adhesive_force, &t.adhesion_energy,
@@ -131,15 +135,18 @@ void ContactManager::reduce_totals(ContactTotals& t, double friction[3]) {
   t.nodes = static_cast<int>(std::lround(*s++));
   for (double* field : {&t.real_area, &t.asperity_contacts, &t.nominal_area, &friction[0], &friction[1], &friction[2]})
     *field = *s++;
+  work_.all_pairs += *s++;
   // Maxima and located maxima in one reduction (a maximum located at node 0 is the plain maximum):
-  // the penetration, radius and the passes' stable steps as their negatives, then the penetration
-  // ratio and each pass's fastest slave and master speeds with their nodes.
-  const std::size_t np = passes_.size(), located = 2 + np;
+  // the penetration, radius, the passes' stable steps as their negatives and the busiest rank's
+  // candidate pairs, then the penetration ratio and each pass's fastest slave and master speeds with
+  // their nodes.
+  const std::size_t np = passes_.size(), located = 3 + np;
   double* value = located_value_.data();
   int* node = located_node_.data();
   value[0] = t.max_penetration;
   value[1] = t.radius_max;
   for (std::size_t i = 0; i < np; ++i) value[2 + i] = -passes_[i].stable_dt;
+  value[2 + np] = double(step_pairs);
   std::fill(node, node + located, 0);
   value[located] = t.max_penetration_ratio;
   node[located] = t.penetration_node;
@@ -152,6 +159,7 @@ void ContactManager::reduce_totals(ContactTotals& t, double friction[3]) {
   t.max_penetration = value[0];
   t.radius_max = value[1];
   for (std::size_t i = 0; i < np; ++i) passes_[i].stable_dt = -value[2 + i];
+  work_.busiest_pairs += value[2 + np];
   t.max_penetration_ratio = value[located];
   t.penetration_node = node[located];
   for (std::size_t i = 0; i < np; ++i)

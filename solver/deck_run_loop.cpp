@@ -247,6 +247,7 @@ void DeckRun::close() {
   summary.contact_seconds = integrator_->contact_seconds();
   summary.ranks = ranks_;
   summary.communication_seconds = model_->domain.communication_seconds;
+  if (model_->contact) summary.contact_balance = model_->contact->work().balance(ranks_);
   summary.final_time = integrator_->time();
   summary.energy_error = integrator_->energies().relative_error();
   summary.energies = integrator_->energies();
@@ -293,6 +294,16 @@ void DeckRun::close_log_lines() {
     log_.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", segment_contact_seconds,
                     summary.loop_seconds > 0 ? 100.0 * segment_contact_seconds / summary.loop_seconds : 0.0,
                     model_->contact->total_searches()));
+    if (ranks_ > 1) {
+      // A zone on one rank at a time (one that travels across the partition's cuts) leaves the others
+      // waiting: say so with the remedy. 0.75 x ranks: most of the work on one rank.
+      const bool lopsided = summary.contact_balance > 0.75 * ranks_;
+      log_.say(format("contact: the busiest rank evaluated %.2fx the even share of the candidate pairs%s",
+                      summary.contact_balance,
+                      lopsided ? "; the contact zone lay on few ranks: a zone that travels stays shared when the "
+                                 "partition's cuts run along its path (begin decomposition, docs/deck_reference.md)"
+                               : ""));
+    }
   }
   if (ranks_ > 1) {
     // Waiting at the exchange is most of it: the rank that waits least carries the most work.

@@ -169,6 +169,9 @@ std::span<const Field<RunSummary>> summary_fields() {
                                     "wall-clock time of the whole run over its segments (null: an earlier one unknown)"),
       field<&R::total_loop_seconds>("total_loop_time_s", "s", "loop time of the whole run over its segments"),
       field<&R::contact_seconds>("contact_time_s", "s", "part of the loop spent in contact search and enforcement"),
+      field<&R::contact_balance>("contact_balance", "-",
+                                 "the busiest rank's candidate contact pairs over the even share, summed over the "
+                                 "evaluations of this segment: 1 shared evenly, ranks: one rank has them all"),
       field<&R::ranks>("ranks", "count", "MPI ranks"),
       field<&R::communication_seconds>("communication_time_s", "s",
                                        "rank 0's loop time in halo exchange, surface gather and energy sums"),

@@ -30,6 +30,7 @@ struct RunSummary {
   double contact_seconds = 0.0;      // part of the loop spent in contact search and enforcement
   int ranks = 1;                     // MPI ranks of the run
   double communication_seconds = 0.0;  // rank 0's loop time in halo exchange, surface gather, energy sums
+  double contact_balance = 1.0;  // the busiest rank's contact pairs over the even share (ContactManager::Work)
   int elements = 0;
   int nodes = 0;
   double initial_stable_time_step = 0.0;  // s, the stable step at t = 0 (before the scale factor)

@@ -173,10 +173,10 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
   EXPECT_EQ(keys, (std::vector<std::string>{"status", "exit_code", "tribex_version", "deck", "deck_sha256", "started",
                                             "host", "steps", "final_time", "nodes", "elements", "wall_time_s",
                                             "loop_time_s", "ns_per_element_step", "first_step", "total_wall_time_s",
-                                            "total_loop_time_s", "contact_time_s", "ranks", "communication_time_s",
-                                            "initial_stable_time_step", "controlling_element", "energy_error",
-                                            "energy_unit", "warnings", "energies", "mass_scaling", "rank_counts",
-                                            "units"}));
+                                            "total_loop_time_s", "contact_time_s", "contact_balance", "ranks",
+                                            "communication_time_s", "initial_stable_time_step", "controlling_element",
+                                            "energy_error", "energy_unit", "warnings", "energies", "mass_scaling",
+                                            "rank_counts", "units"}));
   for (const char* expected :
        {"\"status\": \"numerical failure: element 8 \\\"inverted\\\"\",\n", "\"exit_code\": 3,\n", "\"steps\": 1234,\n",
         "\"final_time\": 0.125,\n", "\"deck_sha256\": null,\n", "\"total_wall_time_s\": null,\n",

@@ -18,6 +18,8 @@ runs DECK (a contact deck) on N ranks and checks, from OUT/summary.json:
     or a reuse of the candidates, plus the set-up search; pairs evaluated > 0; every rank searches at
     the same steps;
   - peak RSS > 0 and at the close >= at the end of set-up;
+  - contact_balance (the busiest rank's pairs over the even share, summed over the evaluations) between
+    the figure the ranks' mean pairs give and N; 1 on one rank;
   - with --scaling (issue 25's acceptance on a large model with owner-computes contact, e.g.
     tools/bench/counts_indenter.i at 16 ranks): every rank's peak RSS at most 1.3 x the one-rank
     peak / N + 100 MB; the largest rank's contact pairs at most twice the even share (one-rank pairs
@@ -103,6 +105,15 @@ def main():
                    f"{whole['contact_pairs_per_step']} (a slave node computed twice or not at all)")
             print(f"scaling: peak RSS largest {max(r['peak_rss_bytes'] for r in rc) / 1e6:.1f} MB (target "
                   f"{target / 1e6:.1f}); contact pairs largest {largest} (even share {even:.0f}), all {total}")
+    # contact_balance: the busiest rank's pairs over the even share, summed over the evaluations. Summing
+    # the per-step maximum gives at least the maximum of the ranks' sums: at least the mean-based figure
+    # from contact_pairs_per_step, at most n; exactly 1 on one rank.
+    mean_based = max(r["contact_pairs_per_step"] for r in rc) * n / sum(r["contact_pairs_per_step"] for r in rc)
+    balance = s["contact_balance"]
+    print(f"contact_balance {balance:.4f} (from the mean pairs per rank {mean_based:.4f})")
+    expect(mean_based * (1 - 1e-12) <= balance <= n * (1 + 1e-12), f"contact_balance {balance} outside "
+           f"[{mean_based}, {n}]")
+    expect(n > 1 or balance == 1.0, f"one rank: contact_balance {balance}, not 1")
     steps_run = s["steps"] - s["first_step"]
     for r in rc:
         expect(r["contact_evaluations"] == steps_run + 1, f"rank {r['rank']}: {r['contact_evaluations']} contact "
