@@ -118,6 +118,12 @@ class ContactManager {
   /// slave nodes it counts (a node it only holds, or a master node, needs no neighbours here: the
   /// ranks computing the slave nodes near it hold it as a ghost); otherwise every node it holds.
   bool seeds_region(int node) const { return !owner_computes_ || seeds_[node] != 0; }
+  /// The nodes whose rows the passes read until the next search ([node] 1: read), valid after a
+  /// compute_forces that searched: owner_computes(): the slave nodes this rank projects and the nodes
+  /// of their candidate faces (the face a node was over last step is one of them); otherwise every
+  /// node of the region. A distributed run refreshes only these ghost rows between searches
+  /// (ContactRegion::trim); the full region is refreshed at each search, which reads it all.
+  const std::vector<char>& rows_read();
   /// What the passes read of a node besides its position, so what a distributed run's ghost rows
   /// carry: its velocity (a law that reads velocities, or tangential pairs), its non-contact force
   /// (tangential pairs: the junction's slip prediction, contact/README.md).
@@ -260,6 +266,7 @@ class ContactManager {
   bool owner_computes_ = false;
   std::vector<char> projected_;
   std::vector<char> seeds_;  // owner_computes(): [node] counted slave nodes (seeds_region)
+  std::vector<char> read_;   // rows_read's answer, kept: sized once
   // owner_computes() with tangential pairs: scratch of the pairs' completed forces and master shares
   // [node][4] (PassView::completion); empty otherwise.
   std::vector<double> completed_;

@@ -76,6 +76,25 @@ double ContactManager::region_reach() const {
   return owner_computes_ ? hop + 1.5 * largest_face_diameter_ : hops * hop;
 }
 
+const std::vector<char>& ContactManager::rows_read() {
+  if (!owner_computes_) {
+    read_.assign(present_.begin(), present_.end());
+    return read_;
+  }
+  read_.assign(projected_.begin(), projected_.end());
+  for (const auto& p : passes_) {
+    const ContactSurface& slave = surfaces_[p.slave];
+    const ContactSurface& master = surfaces_[p.master];
+    if (p.candidate_offset.size() != static_cast<std::size_t>(slave.node_count()) + 1) continue;  // not searched
+    for (int k = 0; k < slave.node_count(); ++k)
+      for (int c = p.candidate_offset[k]; c < p.candidate_offset[k + 1]; ++c) {
+        const int* fn = &master.face_nodes[4 * p.candidates[c]];
+        for (int a = 0; a < 4; ++a) read_[fn[a]] = 1;
+      }
+  }
+  return read_;
+}
+
 ContactManager::GhostFields ContactManager::ghost_fields() const {
   GhostFields fields{false, false};
   for (const auto& p : passes_) {

@@ -255,8 +255,10 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
         }
       for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = 0.0;
     }
+    bool refreshed = false;
     if (contact_region_) {
-      if (model_.contact->plan_searches(x_.data())) {
+      refreshed = model_.contact->plan_searches(x_.data());
+      if (refreshed) {
         contact_region_->refresh(x_.data(), *model_.contact);
         model_.contact->set_present(contact_region_->present());
       }
@@ -264,6 +266,9 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
     }
     contact_totals_ = model_.contact->compute_forces(x_.data(), v_contact_.data(), f_contact_.data(),
                                                      f_other_contact_.data(), dt_half_);
+    // Until the next search only the ghost rows the passes read travel (owner computes: the nodes
+    // near this rank's slave nodes, not the whole band of the region).
+    if (refreshed && model_.contact->owner_computes()) contact_region_->trim(model_.contact->rows_read());
     if (contact_region_ && model_.contact->owner_computes()) complete_contact_forces();
     for (std::size_t k = 0; k < local.size(); ++k)
       if (const int l = local[k]; l >= 0)

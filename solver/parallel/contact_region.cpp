@@ -30,6 +30,8 @@ ContactRegion::ContactRegion(Domain& domain) : domain_(domain) {
   boxes_.assign(6 * static_cast<std::size_t>(members_), 0.0);
   send_offset_.assign(static_cast<std::size_t>(members_) + 1, 0);
   recv_offset_.assign(static_cast<std::size_t>(members_) + 1, 0);
+  fill_send_offset_ = send_offset_;
+  fill_recv_offset_ = recv_offset_;
   present_.assign(local.size(), 0);
   held_.assign(4 * domain.global_node.size(), 0.0);
   located_.reserve(64);
@@ -162,7 +164,7 @@ void ContactRegion::refresh(const double* xg, contact::ContactManager& manager) 
     send_.resize(static_cast<std::size_t>(width) * send_node_.size());
     recv_.resize(static_cast<std::size_t>(width) * recv_node_.size());
     for (std::size_t j = 0; j < send_node_.size(); ++j) manager.get_node_state(send_node_[j], &send_[width * j]);
-    exchange(width);
+    exchange(width, send_offset_, recv_offset_);
     for (std::size_t j = 0; j < recv_node_.size(); ++j) manager.set_node_state(recv_node_[j], &recv_[width * j]);
     size_buffers();
   }
@@ -185,6 +187,7 @@ void ContactRegion::exchange_node_numbers() {
 }
 
 void ContactRegion::size_buffers() {
+  fill_every_row();
   const auto& local = domain_.surface_local();
   for (std::size_t k = 0; k < local.size(); ++k) present_[k] = local[k] >= 0;
   for (int k : recv_node_) present_[static_cast<std::size_t>(k)] = 1;
@@ -197,20 +200,51 @@ void ContactRegion::size_buffers() {
   statuses_.resize(2 * static_cast<std::size_t>(members_));
 }
 
-void ContactRegion::exchange(int width) {
+void ContactRegion::fill_every_row() {
+  fill_send_offset_ = send_offset_;
+  fill_recv_offset_ = recv_offset_;
+  fill_send_node_.reserve(send_node_.size());  // trim's subsets fit without allocating
+  fill_recv_node_.reserve(recv_node_.size());
+  fill_send_node_.assign(send_node_.begin(), send_node_.end());
+  fill_recv_node_.assign(recv_node_.begin(), recv_node_.end());
+}
+
+void ContactRegion::trim(const std::vector<char>& read) {
+  if (comm_ == MPI_COMM_NULL) return;
+  const double start = now();
+  auto& keep = scratch_.recv_count;  // [member] ghost rows kept from it
+  auto& give = scratch_.send_count;  // [member] rows it keeps of this rank's
+  fill_recv_node_.clear();
+  for (int q = 0; q < members_; ++q) {
+    fill_recv_offset_[q] = static_cast<int>(fill_recv_node_.size());
+    for (int j = recv_offset_[q]; j < recv_offset_[q + 1]; ++j)
+      if (read[static_cast<std::size_t>(recv_node_[j])]) fill_recv_node_.push_back(recv_node_[j]);
+    keep[q] = static_cast<int>(fill_recv_node_.size()) - fill_recv_offset_[q];
+  }
+  fill_recv_offset_[members_] = static_cast<int>(fill_recv_node_.size());
+  MPI_Alltoall(keep.data(), 1, MPI_INT, give.data(), 1, MPI_INT, comm_);
+  fill_send_offset_[0] = 0;
+  for (int q = 0; q < members_; ++q) fill_send_offset_[q + 1] = fill_send_offset_[q] + give[q];
+  fill_send_node_.resize(static_cast<std::size_t>(fill_send_offset_[members_]));
+  MPI_Alltoallv(fill_recv_node_.data(), keep.data(), fill_recv_offset_.data(), MPI_INT, fill_send_node_.data(),
+                give.data(), fill_send_offset_.data(), MPI_INT, comm_);
+  domain_.communication_seconds += now() - start;
+}
+
+void ContactRegion::exchange(int width, const std::vector<int>& send_offset, const std::vector<int>& recv_offset) {
   requests_.clear();
   for (int q = 0; q < members_; ++q) {
-    const int count = recv_offset_[q + 1] - recv_offset_[q];
+    const int count = recv_offset[q + 1] - recv_offset[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Irecv(recv_.data() + static_cast<std::size_t>(width) * recv_offset_[q], width * count, MPI_DOUBLE, q, 7, comm_,
+    MPI_Irecv(recv_.data() + static_cast<std::size_t>(width) * recv_offset[q], width * count, MPI_DOUBLE, q, 7, comm_,
               &requests_.back());
   }
   for (int q = 0; q < members_; ++q) {
-    const int count = send_offset_[q + 1] - send_offset_[q];
+    const int count = send_offset[q + 1] - send_offset[q];
     if (count == 0) continue;
     requests_.emplace_back();
-    MPI_Isend(send_.data() + static_cast<std::size_t>(width) * send_offset_[q], width * count, MPI_DOUBLE, q, 7, comm_,
+    MPI_Isend(send_.data() + static_cast<std::size_t>(width) * send_offset[q], width * count, MPI_DOUBLE, q, 7, comm_,
               &requests_.back());
   }
   MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
@@ -292,24 +326,24 @@ void ContactRegion::fill_ghosts(double* xg, double* vg, double* fg) {
   // A row: x, then v and f where the passes read them.
   const std::size_t K = static_cast<std::size_t>(row_values_);
   double* fields[3] = {xg, fields_.velocity ? vg : nullptr, fields_.other_force ? fg : nullptr};
-  for (std::size_t j = 0; j < send_node_.size(); ++j) {
-    const std::size_t k = static_cast<std::size_t>(send_node_[j]);
+  for (std::size_t j = 0; j < fill_send_node_.size(); ++j) {
+    const std::size_t k = static_cast<std::size_t>(fill_send_node_[j]);
     double* row = &send_[K * j];
     for (const double* field : fields)
       if (field)
         for (int i = 0; i < 3; ++i) *row++ = field[3 * k + i];
   }
-  exchange(row_values_);
-  for (std::size_t j = 0; j < recv_node_.size(); ++j) {
-    const std::size_t k = static_cast<std::size_t>(recv_node_[j]);
+  exchange(row_values_, fill_send_offset_, fill_recv_offset_);
+  for (std::size_t j = 0; j < fill_recv_node_.size(); ++j) {
+    const std::size_t k = static_cast<std::size_t>(fill_recv_node_[j]);
     const double* row = &recv_[K * j];
     for (double* field : fields)
       if (field)
         for (int i = 0; i < 3; ++i) field[3 * k + i] = *row++;
   }
   ++domain_.traffic.surface_gathers;
-  domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * send_.size());
-  domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * recv_.size());
+  domain_.traffic.surface_sent += static_cast<long long>(sizeof(double) * K * fill_send_node_.size());
+  domain_.traffic.surface_received += static_cast<long long>(sizeof(double) * K * fill_recv_node_.size());
   domain_.communication_seconds += now() - start;
 }
 

@@ -16,7 +16,10 @@
 //     the tighter test where the cells are coarse against the model (small models);
 //   - fill_ghosts (every force evaluation): positions of the ghost nodes from their owners, and their
 //     velocities and non-contact forces where the passes read them (ContactManager::ghost_fields),
-//     point to point into buffers sized at the refresh;
+//     point to point into buffers sized at the refresh: every ghost row at a refresh step (the search
+//     reads them all), then (trim, owner computes) only the rows the passes read until the next search,
+//     the nodes of the candidate faces of the slave nodes the rank projects
+//     (ContactManager::rows_read): the region's band is for the search, the rows for the steps;
 //   - the ContactReductions the manager combines its totals with (MPI_Allreduce).
 // The reductions take every rank (MPI_COMM_WORLD): the totals are wanted on rank 0, which writes the
 // history, and by every rank's run guards.
@@ -49,8 +52,14 @@ class ContactRegion final : public contact::ContactReductions {
   /// present(), and the laws' state of the nodes sent, from `manager` to the other ranks' managers.
   void refresh(const double* xg, contact::ContactManager& manager);
   /// Ghost rows of xg, and of vg and fg where set_fields asked for them, [surface node][3], from their
-  /// owners (this rank's own rows current).
+  /// owners (this rank's own rows current): every ghost row after a refresh, then the rows trim kept.
   void fill_ghosts(double* xg, double* vg, double* fg);
+  /// After the search of a refresh step: until the next refresh, fill_ghosts moves only the ghost rows
+  /// `read` marks ([surface node], ContactManager::rows_read: what the passes read between searches);
+  /// each rank tells the owners which rows it keeps (MPI_Alltoall of the counts, MPI_Alltoallv of the
+  /// nodes). The other ghosts keep the positions of the refresh, which nothing reads before the next
+  /// one refills them all. refresh and restore_lists go back to every row.
+  void trim(const std::vector<char>& read);
   /// Owner-computes contact (ContactManager::owner_computes): the parts of a nodal sum, values
   /// [surface node][width] (width <= kMaxSumWidth), that this rank put on its ghost nodes go back to
   /// their owners, who add them to their rows (in member order), then the rows of surface nodes shared
@@ -74,8 +83,10 @@ class ContactRegion final : public contact::ContactReductions {
  private:
   void exchange_node_numbers();  // receive lists from the send lists
   void size_buffers();
-  /// Sends `width` doubles per listed node from `send_` and receives into `recv_` (fill_ghosts).
-  void exchange(int width);
+  void fill_every_row();  // fill lists = the region's lists
+  /// Sends `width` doubles per listed node from `send_` and receives into `recv_`, member by member as
+  /// the offsets say (the region's lists, or fill_ghosts' trimmed ones).
+  void exchange(int width, const std::vector<int>& send_offset, const std::vector<int>& recv_offset);
   /// The rows of `values` [surface node][width] along the send lists to the receive lists (reverse:
   /// the receive lists' rows back along the send lists), only those with a nonzero bit (sparse_rows.hpp):
   /// the receiver adds (reverse) or assigns each listed row's value, +0.0 for a row not sent, in list
@@ -93,6 +104,9 @@ class ContactRegion final : public contact::ContactReductions {
   std::vector<double> boxes_;            // [member][6] min xyz, max xyz of its surface nodes at the refresh
   std::vector<int> send_offset_, send_node_;  // [member + 1], surface nodes this rank sends each member
   std::vector<int> recv_offset_, recv_node_;  // [member + 1], ghost nodes from each member
+  // The rows fill_ghosts moves: the lists above after a refresh, the rows the passes read after trim
+  // (subsets in the same order; capacity reserved at the refresh: trim allocates nothing).
+  std::vector<int> fill_send_offset_, fill_send_node_, fill_recv_offset_, fill_recv_node_;
   std::vector<char> present_;
   std::vector<double> send_, recv_;
   std::vector<double> rows_send_, rows_recv_;  // [listed node][kMaxSumWidth + 1] of exchange_rows
