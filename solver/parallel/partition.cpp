@@ -53,6 +53,11 @@ Graph element_graph(const mesh::Mesh& mesh) {
   return g;
 }
 
+void require_parts_within(int elements, int parts) {
+  if (parts > elements)
+    throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(elements) + ")");
+}
+
 }  // namespace
 
 int partition_cluster_size(int elements, int parts) {
@@ -65,7 +70,7 @@ std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, int clust
   const int ne = mesh.element_count();
   std::vector<int> part(static_cast<std::size_t>(ne), 0);
   if (parts <= 1 || ne == 0) return part;
-  if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
+  require_parts_within(ne, parts);
   if (cluster_size <= 0) cluster_size = partition_cluster_size(ne, parts);
   Graph g;
   std::vector<int> cluster_of;  // [element] the graph's vertex, when it is a cluster graph
@@ -109,7 +114,7 @@ std::vector<int> partition_elements_rcb(const mesh::Mesh& mesh, int parts, const
   const int ne = mesh.element_count();
   std::vector<int> part(static_cast<std::size_t>(ne), 0);
   if (parts <= 1 || ne == 0) return part;
-  if (parts > ne) throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than elements (" + std::to_string(ne) + ")");
+  require_parts_within(ne, parts);
   const std::vector<double> centre = element_centres<double>(mesh);
   std::vector<int> items(static_cast<std::size_t>(ne));
   std::iota(items.begin(), items.end(), 0);

@@ -71,10 +71,15 @@ def with_decomposition(a):
     at = next(i for i, line in enumerate(lines) if line.strip().startswith("use finite element model"))
     block = ["      begin decomposition", f"        method = {method}",
              f"        coordinate scale = {' '.join(scale)}", "      end decomposition"]
+    return deck_copy(a, "\n".join(lines[:at + 1] + block + lines[at + 1:]))
+
+
+def deck_copy(a, text):
+    """`text` (an edited DECK) written to OUT/deck.i, which is returned."""
     os.makedirs(a.out, exist_ok=True)
     deck = os.path.join(a.out, "deck.i")
     with open(deck, "w") as f:
-        f.write("\n".join(lines[:at + 1] + block + lines[at + 1:]))
+        f.write(text)
     return deck
 
 
@@ -220,12 +225,9 @@ def sigterm(a):
     import json
     import re
     import signal
-    os.makedirs(a.out, exist_ok=True)
     with open(a.deck) as f:
         text = f.read()
-    deck = os.path.join(a.out, "deck.i")
-    with open(deck, "w") as f:
-        f.write(re.sub(r"termination time = [^\n#]*", f"termination time = {a.termination}", text, count=1))
+    deck = deck_copy(a, re.sub(r"termination time = [^\n#]*", f"termination time = {a.termination}", text, count=1))
     full, cut = os.path.join(a.out, "full"), os.path.join(a.out, "cut")
     for d in (full, cut):
         shutil.rmtree(d, ignore_errors=True)
