@@ -111,6 +111,33 @@ std::vector<std::pair<int, int>> facing_pairs(const mesh::Mesh& mesh, const inpu
   return pairs;
 }
 
+// Length of the diagonal of the faces' centroid box, its sides multiplied by `scale`.
+double scaled_extent(const SurfaceFaces& faces, const parallel::AxisScale& scale) {
+  if (faces.element.empty()) return 0.0;
+  double lo[3], hi[3], d2 = 0.0;
+  for (int i = 0; i < 3; ++i) lo[i] = hi[i] = faces.centre[i];
+  for (std::size_t f = 0; f < faces.element.size(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], faces.centre[3 * f + i]);
+      hi[i] = std::max(hi[i], faces.centre[3 * f + i]);
+    }
+  for (int i = 0; i < 3; ++i) d2 += scale[i] * scale[i] * (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  return std::sqrt(d2);
+}
+
+// [face][3] the face centroids of the smaller side (after `scale`; ties: the slave) of every interaction.
+std::vector<double> footprint_centres(const mesh::Mesh& mesh, const inputs::ContactSpec& spec,
+                                      const parallel::AxisScale& scale) {
+  std::vector<double> centre;
+  for (const auto& it : spec.interactions) {
+    const SurfaceFaces slave = faces_of(mesh, spec, it.slave), master = faces_of(mesh, spec, it.master);
+    const bool master_smaller = !master.element.empty() && scaled_extent(master, scale) < scaled_extent(slave, scale);
+    const SurfaceFaces& smaller = master_smaller ? master : slave;
+    centre.insert(centre.end(), smaller.centre.begin(), smaller.centre.end());
+  }
+  return centre;
+}
+
 }  // namespace
 
 std::vector<int> contact_element_links(const mesh::Mesh& mesh, const inputs::ContactSpec* spec) {
@@ -150,11 +177,19 @@ void place_contact_patches(const mesh::Mesh& mesh, const inputs::ContactSpec* sp
     k = end;
   }
   faces = {};
+  // The cuts come from the smaller surface of each interaction (its footprint holds the contact zone):
+  // on a track swept by a tip, the planes through the tip share the zone evenly, where the track's own
+  // median would follow its coarse faces away from the tip.
+  const std::vector<double> footprint = footprint_centres(mesh, *spec, scale);
   const int count = static_cast<int>(slave.size());
-  const int patches = std::min(parts, count);
-  std::vector<int> patch_of(slave.size(), -1), items(slave.size());
+  const int references = static_cast<int>(footprint.size() / 3);
+  const int patches = std::min({parts, count, references});
+  if (patches < 1) return;
+  std::vector<int> patch_of(slave.size(), -1), items(slave.size()), reference(static_cast<std::size_t>(references));
   std::iota(items.begin(), items.end(), 0);
-  parallel::bisect_into_parts(items, 0, items.size(), 0, patches, centre, patch_of, scale);
+  std::iota(reference.begin(), reference.end(), 0);
+  parallel::bisect_like(reference, 0, reference.size(), footprint, items, 0, items.size(), centre, 0, patches,
+                        patch_of, scale);
   // Patch -> rank: largest overlap with the METIS parts first (ties: lower patch, then lower rank).
   std::vector<long long> overlap(static_cast<std::size_t>(patches) * parts, 0);
   for (int k = 0; k < count; ++k) ++overlap[static_cast<std::size_t>(patch_of[k]) * parts + part[slave[k]]];

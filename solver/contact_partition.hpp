@@ -6,9 +6,13 @@
 // rank fall with the patch's perimeter): tools/bench/README.md "Counts per rank".
 //   - the elements with a face in a slave surface of an interaction (both surfaces of a symmetric
 //     one; the slave the run enforces: callers pass as_enforced(spec), contact_setup.hpp, since
-//     build_contact swaps a stiff slave on a soft master) are cut into `parts` patches by recursive
-//     coordinate bisection of their face centroids (equal counts; the longest side of each box, after
-//     the deck's `coordinate scale`, cut at its median: parallel/coordinate_split.hpp);
+//     build_contact swaps a stiff slave on a soft master) are cut into `parts` patches by the planes of
+//     a recursive coordinate bisection of the face centroids of each interaction's *smaller* surface
+//     (the diagonal of its centroid box, after the deck's `coordinate scale`; ties: the slave): equal
+//     counts of those faces, the longest side of each box cut midway between its halves
+//     (parallel/coordinate_split.hpp bisect_like). The contact zone lies within the smaller body's
+//     footprint, so the planes through it share the zone evenly; a track's own median would follow the
+//     coarse faces beside the track (inputs/examples/afm_sliding case (b): 59/41 of the pairs);
 //   - patch k goes to the rank whose METIS part holds most of its elements (greedy, largest overlap
 //     first), so that few elements move;
 //   - each element of a master surface facing a slave face (the nearest within two face diagonals,

@@ -2,7 +2,7 @@
 // The step the geometric partitions take (the k-d clusters of element_clusters.cpp, the coordinate
 // bisection of the volume, parallel/partition.hpp, and the contact patches of
 // solver/contact_partition.cpp): split a range of points at a given rank along the longest side of
-// their box. Points are `items` (indices into `centre`, [item][3]); ties by item number, so the same
+// their box, or (bisect_like) divide one set of points by the planes that bisect another. Points are `items` (indices into `centre`, [item][3]); ties by item number, so the same
 // points give the same split on every machine.
 #pragma once
 
@@ -34,12 +34,11 @@ std::vector<Real> element_centres(const mesh::Mesh& mesh) {
 using AxisScale = std::array<double, 3>;
 inline constexpr AxisScale kUnitScale{1.0, 1.0, 1.0};
 
-/// Reorders items[begin, end) so that the first `mid - begin` are the lowest along the longest side
-/// of their bounding box, sides measured after `scale` (std::nth_element: linear time, neither half sorted).
+/// The axis of the longest side of the bounding box of items[begin, end) (non-empty), sides measured
+/// after `scale`; the first among equals.
 template <class Real>
-void split_along_longest_side(std::vector<int>& items, std::size_t begin, std::size_t mid, std::size_t end,
-                              const std::vector<Real>& centre, const AxisScale& scale = kUnitScale) {
-  if (end - begin < 2) return;
+int longest_side(const std::vector<int>& items, std::size_t begin, std::size_t end, const std::vector<Real>& centre,
+                 const AxisScale& scale = kUnitScale) {
   auto at = [&](int item, int axis) { return centre[3 * static_cast<std::size_t>(item) + axis]; };
   Real lo[3], hi[3];
   for (int i = 0; i < 3; ++i) lo[i] = hi[i] = at(items[begin], i);
@@ -51,12 +50,25 @@ void split_along_longest_side(std::vector<int>& items, std::size_t begin, std::s
   int axis = 0;
   for (int i = 1; i < 3; ++i)
     if (scale[i] * (hi[i] - lo[i]) > scale[axis] * (hi[axis] - lo[axis])) axis = i;
+  return axis;
+}
+
+/// Reorders items[begin, end) so that the first `mid - begin` are the lowest along the longest side
+/// of their bounding box, sides measured after `scale` (std::nth_element: linear time, neither half
+/// sorted). Returns that axis (-1 for fewer than two items).
+template <class Real>
+int split_along_longest_side(std::vector<int>& items, std::size_t begin, std::size_t mid, std::size_t end,
+                             const std::vector<Real>& centre, const AxisScale& scale = kUnitScale) {
+  if (end - begin < 2) return -1;
+  const int axis = longest_side(items, begin, end, centre, scale);
+  auto at = [&](int item) { return centre[3 * static_cast<std::size_t>(item) + axis]; };
   const auto first = items.begin();
   std::nth_element(first + static_cast<std::ptrdiff_t>(begin), first + static_cast<std::ptrdiff_t>(mid),
                    first + static_cast<std::ptrdiff_t>(end), [&](int a, int b) {
-                     const Real ca = at(a, axis), cb = at(b, axis);
+                     const Real ca = at(a), cb = at(b);
                      return ca < cb || (ca == cb && a < b);
                    });
+  return axis;
 }
 
 /// Recursive coordinate bisection: items[begin, end) into parts first .. first + count - 1, each part's
@@ -74,6 +86,36 @@ void bisect_into_parts(std::vector<int>& items, std::size_t begin, std::size_t e
   split_along_longest_side(items, begin, mid, end, centre, scale);
   bisect_into_parts(items, begin, mid, first, left, centre, part_of, scale);
   bisect_into_parts(items, mid, end, first + left, count - left, centre, part_of, scale);
+}
+
+/// bisect_into_parts's cuts taken from one set of points and applied to another: the `reference`
+/// items [rbegin, rend) (points `reference_centre`) are bisected as there, and each cut is the plane
+/// midway between the two halves along the split axis; the `targets` items [tbegin, tend) (points
+/// `target_centre`) go to the side of each plane they lie on (on it: the upper side), and part_of[target]
+/// receives the part. Used where the work lies near a smaller body than the one being divided (the
+/// contact patches: solver/contact_partition.cpp). Targets outside the references' box still get a part.
+template <class Real>
+void bisect_like(std::vector<int>& reference, std::size_t rbegin, std::size_t rend, const std::vector<Real>& reference_centre,
+                 std::vector<int>& targets, std::size_t tbegin, std::size_t tend, const std::vector<Real>& target_centre,
+                 int first, int count, std::vector<int>& part_of, const AxisScale& scale = kUnitScale) {
+  if (count == 1 || rend - rbegin <= 1) {
+    for (std::size_t k = tbegin; k < tend; ++k) part_of[static_cast<std::size_t>(targets[k])] = first;
+    return;
+  }
+  const int left = count / 2;
+  const std::size_t mid = rbegin + (rend - rbegin) * static_cast<std::size_t>(left) / static_cast<std::size_t>(count);
+  const int axis = split_along_longest_side(reference, rbegin, mid, rend, reference_centre, scale);
+  auto ref_at = [&](std::size_t k) { return reference_centre[3 * static_cast<std::size_t>(reference[k]) + axis]; };
+  Real lower_top = ref_at(rbegin);
+  for (std::size_t k = rbegin; k < mid; ++k) lower_top = std::max(lower_top, ref_at(k));
+  const Real plane = lower_top + (ref_at(mid) - lower_top) / 2;  // ref_at(mid): the upper half's lowest
+  const auto split = std::partition(targets.begin() + static_cast<std::ptrdiff_t>(tbegin),
+                                    targets.begin() + static_cast<std::ptrdiff_t>(tend),
+                                    [&](int t) { return target_centre[3 * static_cast<std::size_t>(t) + axis] < plane; });
+  const std::size_t tmid = static_cast<std::size_t>(split - targets.begin());
+  bisect_like(reference, rbegin, mid, reference_centre, targets, tbegin, tmid, target_centre, first, left, part_of, scale);
+  bisect_like(reference, mid, rend, reference_centre, targets, tmid, tend, target_centre, first + left, count - left,
+              part_of, scale);
 }
 
 }  // namespace tribex::solver::parallel

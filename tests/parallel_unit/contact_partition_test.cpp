@@ -187,3 +187,35 @@ TEST(Partition, ScaledBisectionKeepsATravellingZoneShared) {
   EXPECT_EQ(part, volume) << "the patches agree with the volume's cut";
   for (int e = 0; e < m.element_count(); ++e) EXPECT_EQ(part[e], centroid(m, e)[0] < 6.0 ? 0 : 1) << "element " << e;
 }
+
+// The patches are cut through the smaller surface's footprint, where the contact zone is: an indenter
+// off the block's centre (x from 1 to 7) with the block's top as the slave (a soft track under a stiff
+// tip, as the run enforces it) gives the plane x = 4 through the indenter, not the block's own median
+// x = 6, so each rank holds half of the zone (18 of the 36 top elements under the indenter) and the
+// rest of the top by the side of the plane it lies on.
+TEST(ContactPartition, PatchesAreCutThroughTheSmallerSurface) {
+  mesh::BoxSpec block, indenter;
+  block.name = "block";
+  block.size = {12, 12, 4};
+  block.intervals = {12, 12, 4};
+  indenter.name = "indenter";
+  indenter.origin = {1, 3, 4};
+  indenter.size = {6, 6, 2};
+  indenter.intervals = {6, 6, 2};
+  mesh::Mesh m = mesh::generate_box(block);
+  mesh::append(m, mesh::generate_box(indenter));
+  const inputs::ContactSpec track_slave = test::one_contact("top", "block_zmax", "tip", "indenter_zmin");
+  std::vector<int> part = solver::parallel::partition_elements_rcb(m, 2, {1.0, 0.01, 1.0});
+  solver::place_contact_patches(m, &track_slave, 2, part, {1.0, 0.01, 1.0});
+  std::map<int, int> under_of;
+  for (int e = 0; e < kBlockElements; ++e) {
+    const auto c = centroid(m, e);
+    if (c[2] != 3.5) continue;
+    const int left_side = part[e] == part[0] ? 1 : 0;  // element 0 (x = 0.5) is left of the plane
+    EXPECT_EQ(left_side, c[0] < 4.0 ? 1 : 0) << "element " << e << " at x = " << c[0];
+    if (c[0] > 1 && c[0] < 7 && c[1] > 3 && c[1] < 9) ++under_of[part[e]];
+  }
+  ASSERT_EQ(under_of.size(), 2u);
+  for (const auto& [p, count] : under_of) EXPECT_EQ(count, 18) << "part " << p;
+  // The slave's own median, the old rule, would have cut at x = 6: 30 of the 36 on one side.
+}
