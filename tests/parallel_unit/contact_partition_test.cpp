@@ -17,16 +17,17 @@ using namespace tribex;
 
 namespace {
 
-// A 12 x 12 x 4 block of unit cubes and a 6 x 6 x 2 indenter on the centre of its top face.
+// A 12 x 12 x 4 block of unit cubes and a 6 x 6 x 2 indenter on its top face, from x = indenter_x
+// (default: on the centre).
 constexpr int kBlockElements = 12 * 12 * 4;
 
-mesh::Mesh block_and_indenter() {
+mesh::Mesh block_and_indenter(double indenter_x = 3) {
   mesh::BoxSpec block, indenter;
   block.name = "block";
   block.size = {12, 12, 4};
   block.intervals = {12, 12, 4};
   indenter.name = "indenter";
-  indenter.origin = {3, 3, 4};
+  indenter.origin = {indenter_x, 3, 4};
   indenter.size = {6, 6, 2};
   indenter.intervals = {6, 6, 2};
   mesh::Mesh m = mesh::generate_box(block);
@@ -194,16 +195,7 @@ TEST(Partition, ScaledBisectionKeepsATravellingZoneShared) {
 // x = 6, so each rank holds half of the zone (18 of the 36 top elements under the indenter) and the
 // rest of the top by the side of the plane it lies on.
 TEST(ContactPartition, PatchesAreCutThroughTheSmallerSurface) {
-  mesh::BoxSpec block, indenter;
-  block.name = "block";
-  block.size = {12, 12, 4};
-  block.intervals = {12, 12, 4};
-  indenter.name = "indenter";
-  indenter.origin = {1, 3, 4};
-  indenter.size = {6, 6, 2};
-  indenter.intervals = {6, 6, 2};
-  mesh::Mesh m = mesh::generate_box(block);
-  mesh::append(m, mesh::generate_box(indenter));
+  const mesh::Mesh m = block_and_indenter(1);
   const inputs::ContactSpec track_slave = test::one_contact("top", "block_zmax", "tip", "indenter_zmin");
   std::vector<int> part = solver::parallel::partition_elements_rcb(m, 2, {1.0, 0.01, 1.0});
   solver::place_contact_patches(m, &track_slave, 2, part, {1.0, 0.01, 1.0});
