@@ -2,8 +2,9 @@
 // The step the geometric partitions take (the k-d clusters of element_clusters.cpp, the coordinate
 // bisection of the volume, parallel/partition.hpp, and the contact patches of
 // solver/contact_partition.cpp): split a range of points at a given rank along the longest side of
-// their box, or (bisect_like) divide one set of points by the planes that bisect another. Points are `items` (indices into `centre`, [item][3]); ties by item number, so the same
-// points give the same split on every machine.
+// their box, or (bisect_like) divide one set of points by the planes that bisect another. Points are
+// `items` (indices into `centre`, [item][3]); ties by item number, so the same points give the same
+// split on every machine.
 #pragma once
 
 #include <algorithm>
