@@ -9,8 +9,9 @@
 //     build_contact swaps a stiff slave on a soft master) are cut into `parts` patches by the planes of
 //     a recursive coordinate bisection of the face centroids of each interaction's *smaller* surface
 //     (the diagonal of its centroid box, after the deck's `coordinate scale`; ties: the slave): equal
-//     counts of those faces, the longest side of each box cut midway between its halves
-//     (parallel/coordinate_split.hpp bisect_like). The contact zone lies within the smaller body's
+//     counts of those faces, each box cut midway between its halves across the longest side of the
+//     part of it the slave elements' box overlaps, so a tall tip is cut across the track, not along its
+//     height (parallel/coordinate_split.hpp bisect_like). The contact zone lies within the smaller body's
 //     footprint, so the planes through it share the zone evenly; a track's own median would follow the
 //     coarse faces beside the track (inputs/examples/afm_sliding case (b): 59/41 of the pairs);
 //   - patch k goes to the rank whose METIS part holds most of its elements (greedy, largest overlap

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "mesh/box.hpp"
 #include "solver/contact_partition.hpp"
@@ -17,19 +18,19 @@ using namespace tribex;
 
 namespace {
 
-// A 12 x 12 x 4 block of unit cubes and a 6 x 6 x 2 indenter on its top face, from x = indenter_x
-// (default: on the centre).
+// A 12 x 12 x 4 block of unit cubes and a 6 x 6 x `height` indenter of unit cubes on its top face, from
+// x = indenter_x (default: on the centre).
 constexpr int kBlockElements = 12 * 12 * 4;
 
-mesh::Mesh block_and_indenter(double indenter_x = 3) {
+mesh::Mesh block_and_indenter(double indenter_x = 3, int height = 2) {
   mesh::BoxSpec block, indenter;
   block.name = "block";
   block.size = {12, 12, 4};
   block.intervals = {12, 12, 4};
   indenter.name = "indenter";
   indenter.origin = {indenter_x, 3, 4};
-  indenter.size = {6, 6, 2};
-  indenter.intervals = {6, 6, 2};
+  indenter.size = {6, 6, static_cast<double>(height)};
+  indenter.intervals = {6, 6, height};
   mesh::Mesh m = mesh::generate_box(block);
   mesh::append(m, mesh::generate_box(indenter));
   return m;
@@ -210,4 +211,31 @@ TEST(ContactPartition, PatchesAreCutThroughTheSmallerSurface) {
   ASSERT_EQ(under_of.size(), 2u);
   for (const auto& [p, count] : under_of) EXPECT_EQ(count, 18) << "part " << p;
   // The slave's own median, the old rule, would have cut at x = 6: 30 of the 36 on one side.
+}
+
+// A tall smaller body (an indenter 8 high on a 6 x 6 footprint, its bottom and four sides the master
+// surface): its faces' box is longest in z, but the cuts go across the surface it stands on (the part
+// of its box the slave's box overlaps), so the block's top is cut into four quadrants about the
+// indenter's axis (x = 4, y = 6), 9 of the 36 elements under it in each. Cutting along the height would
+// put the whole flat top in the lower patches.
+TEST(ContactPartition, PatchesOfATallBodyAreCutAcrossTheSurface) {
+  const mesh::Mesh m = block_and_indenter(1, 8);
+  inputs::ContactSpec spec = test::one_contact("top", "block_zmax", "tip", "indenter_zmin");
+  spec.surfaces[1].side_sets = {"indenter_zmin", "indenter_xmin", "indenter_xmax", "indenter_ymin", "indenter_ymax"};
+  std::vector<int> part = solver::parallel::partition_elements(m, 4);
+  solver::place_contact_patches(m, &spec, 4, part);
+  std::map<int, int> part_of_quadrant, under_of;
+  for (int e = 0; e < kBlockElements; ++e) {
+    const auto c = centroid(m, e);
+    if (c[2] != 3.5) continue;
+    const int quadrant = (c[0] < 4.0 ? 0 : 1) + (c[1] < 6.0 ? 0 : 2);
+    const auto [it, first] = part_of_quadrant.emplace(quadrant, part[e]);
+    EXPECT_EQ(it->second, part[e]) << "element " << e << " at (" << c[0] << ", " << c[1] << ")";
+    if (c[0] > 1 && c[0] < 7 && c[1] > 3 && c[1] < 9) ++under_of[part[e]];
+  }
+  std::set<int> distinct;
+  for (const auto& [q, p] : part_of_quadrant) distinct.insert(p);
+  EXPECT_EQ(distinct.size(), 4u) << "a part per quadrant";
+  ASSERT_EQ(under_of.size(), 4u);
+  for (const auto& [p, count] : under_of) EXPECT_EQ(count, 9) << "part " << p;
 }
