@@ -335,11 +335,12 @@ struct MassScalingSpec {
 /// `begin decomposition` (solver/parallel/partition.hpp): how a parallel run splits the model. `rcb`
 /// bisects the element centroids; `coordinate scale` multiplies the coordinates when the sides of a
 /// box are compared (the volume's with rcb, the contact patches' with either method), so a small
-/// factor on the direction a contact zone travels keeps it shared by the ranks.
+/// factor on the direction a contact zone travels keeps it shared by the ranks. Not given: the run
+/// takes 0.01 on the direction the deck moves a contact body along (solver/contact_travel.hpp).
 struct DecompositionSpec {
   enum class Method { metis, rcb };
   Method method = Method::metis;
-  std::array<double, 3> coordinate_scale{1.0, 1.0, 1.0};
+  std::optional<std::array<double, 3>> coordinate_scale;  // the deck's; empty: from the contact's travel
   SourceLocation where;
 };
 

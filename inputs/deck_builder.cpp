@@ -498,7 +498,7 @@ class Builder {
         r.decomposition.where = c.where;
         if (word(c, "method") == "rcb") r.decomposition.method = DecompositionSpec::Method::rcb;
         if (auto scale = get(c, "coordinate scale"); scale && scale->numbers.size() == 3)
-          for (int i = 0; i < 3; ++i) r.decomposition.coordinate_scale[i] = scale->numbers[i];
+          r.decomposition.coordinate_scale = std::array<double, 3>{scale->numbers[0], scale->numbers[1], scale->numbers[2]};
       }
     }
     return r;

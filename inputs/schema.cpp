@@ -321,10 +321,13 @@ std::vector<BlockSchema> build_table() {
                {choice("method", ValueKind::enumeration, {"metis", "rcb"}, false, "metis",
                        "how a parallel run splits the elements: metis (graph partition, fewest shared nodes) or rcb "
                        "(recursive coordinate bisection of the element centroids: planar cuts)"),
-                reals("coordinate scale", dim::none, 3, positive(), false, "1 1 1",
+                reals("coordinate scale", dim::none, 3, positive(), false, "",
                       "sx sy sz: coordinates multiplied by these when the sides of a box are compared (rcb's volume, "
                       "and the contact patches with either method); a small factor on the direction a contact zone "
-                      "travels keeps the cuts along it, so the zone stays shared by the ranks")},
+                      "travels keeps the cuts along it, so the zone stays shared by the ranks. Default: 0.01 along "
+                      "the tangential component a prescribed displacement or velocity moves a contact body farthest "
+                      "over the run, where it moves farther than the smallest contact surface's extent along it over "
+                      "the rank count (the run log names it), else 1 1 1")},
                {},
                false, "how a parallel run partitions the model (solver/parallel/partition.hpp)"});
 

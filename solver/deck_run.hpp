@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/contact_travel.hpp"
 #include "solver/guards/block_translation.hpp"
 #include "solver/guards/run_guards.hpp"
 #include "solver/integrators/central_difference.hpp"
@@ -62,7 +63,8 @@ class DeckRun {
   // ---- stage 1: the model (a parallel run: this rank's part), checked and reported; nothing written ----
   void preflight();
   void build_parts();  // parallel: the whole mesh on rank 0, partitioned; every rank builds its part
-  void report_partition(const mesh::Mesh& whole, const std::vector<int>& part, const parallel::NodeHolders& holders);
+  void report_partition(const mesh::Mesh& whole, const std::vector<int>& part, const parallel::NodeHolders& holders,
+                        const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel);
   void report_mesh(const Model& model);
   // ---- stage 2: the integrator and the restart state ----
   void start_from_restart();

@@ -10,6 +10,7 @@
 #include "mesh/mesh_error.hpp"
 #include "solver/contact_partition.hpp"
 #include "solver/contact_setup.hpp"
+#include "solver/contact_travel.hpp"
 #include "solver/deck_run.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/output_folder.hpp"
@@ -77,15 +78,16 @@ void DeckRun::build_parts() {
     try {
       whole.emplace(build_mesh(deck_));
       if (region_.contact) contact = contact_faces(*whole, *region_.contact);
+      const std::optional<ContactTravel> travel = contact_travel(deck_, *whole);
+      const parallel::AxisScale scale = decomposition_scale(region_.decomposition, travel, ranks_);
       try {
-        const auto& decomposition = region_.decomposition;
-        part = decomposition.method == inputs::DecompositionSpec::Method::rcb
-                   ? parallel::partition_elements_rcb(*whole, ranks_, decomposition.coordinate_scale)
+        part = region_.decomposition.method == inputs::DecompositionSpec::Method::rcb
+                   ? parallel::partition_elements_rcb(*whole, ranks_, scale)
                    : parallel::partition_elements(*whole, ranks_);
         if (region_.contact) {
           // The patches go to the surfaces the run enforces as slaves (build_contact may swap a pair).
           const inputs::ContactSpec enforced = as_enforced(*region_.contact, contact, block_wave_moduli(deck_, *whole));
-          place_contact_patches(*whole, &enforced, ranks_, part, decomposition.coordinate_scale);
+          place_contact_patches(*whole, &enforced, ranks_, part, scale);
         }
       } catch (const std::runtime_error& e) {
         throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
@@ -93,7 +95,7 @@ void DeckRun::build_parts() {
       }
       holders = parallel::node_holders(*whole, part);
       mesh_hash_ = mesh_sha256(*whole);
-      report_partition(*whole, part, holders);
+      report_partition(*whole, part, holders, scale, travel);
     } catch (...) {
       error = std::current_exception();
     }
@@ -111,16 +113,22 @@ void DeckRun::build_parts() {
 }
 
 void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& part,
-                               const parallel::NodeHolders& holders) {
+                               const parallel::NodeHolders& holders, const parallel::AxisScale& scale,
+                               const std::optional<ContactTravel>& travel) {
   int shared = 0;
   for (int n = 0; n < whole.node_count(); ++n) shared += holders.count(n) > 1;
   std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
   for (int p : part) ++rank_elements[p];
   const auto [fewest, most] = std::minmax_element(rank_elements.begin(), rank_elements.end());
   const auto& decomposition = region_.decomposition;
-  const auto& scale = decomposition.coordinate_scale;
   const bool scaled = scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0;
-  const std::string sides = scaled ? format(" (sides scaled %g %g %g)", scale[0], scale[1], scale[2]) : std::string();
+  // A scale the run chose says why: the prescribed motion that carries the contact zone.
+  const bool chosen = !decomposition.coordinate_scale && travel && crosses_patches(*travel, ranks_);
+  const std::string why = chosen ? format(": contact travels %.3g m along %c, node set %s", travel->distance,
+                                          "xyz"[travel->axis], travel->node_set.c_str())
+                                 : std::string();
+  const std::string sides = scaled ? format(" (sides scaled %g %g %g%s)", scale[0], scale[1], scale[2], why.c_str())
+                                   : std::string();
   std::string method;
   if (decomposition.method == inputs::DecompositionSpec::Method::rcb) {
     method = "recursive coordinate bisection of the element centroids" + sides;

@@ -273,16 +273,17 @@ TEST(Parser, PrescribedForce) {
 }
 
 TEST(Parser, Decomposition) {
-  // Without the block: METIS, unit scale.
+  // Without the block: METIS, no scale (the run takes it from the contact's travel, contact_travel_test).
   const Deck plain = parse_deck_string(deck_with_region(""), "plain.i");
   EXPECT_EQ(plain.procedure.region.decomposition.method, DecompositionSpec::Method::metis);
-  EXPECT_EQ(plain.procedure.region.decomposition.coordinate_scale, (std::array<double, 3>{1, 1, 1}));
+  EXPECT_FALSE(plain.procedure.region.decomposition.coordinate_scale.has_value());
   const Deck d = parse_deck_string(deck_with_region("      begin decomposition\n        method = rcb\n"
                                                     "        coordinate scale = 1 0.01 1\n      end\n"),
                                    "dec.i");
   const auto& dec = d.procedure.region.decomposition;
   EXPECT_EQ(dec.method, DecompositionSpec::Method::rcb);
-  EXPECT_EQ(dec.coordinate_scale, (std::array<double, 3>{1, 0.01, 1}));
+  ASSERT_TRUE(dec.coordinate_scale.has_value());
+  EXPECT_EQ(*dec.coordinate_scale, (std::array<double, 3>{1, 0.01, 1}));
   EXPECT_EQ(dec.where.line, 34);
   // A zero scale would put every cut on one axis; a method not in the list is named with the choices.
   auto ds = errors_of(deck_with_region("      begin decomposition\n        coordinate scale = 1 0 1\n      end\n"));

@@ -25,8 +25,9 @@
       runs DECK (meant to fail; not quiet, so that rank 0 prints its log); exit code C, TEXT printed
       exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
       ranks) from a restart file written by a one-rank run stopped after STEP.
-  agree ... --decomposition "rcb SX SY SZ": both runs of a deck given a `begin decomposition` block (written
-      to OUT/deck.i); the parallel run's log must name the coordinate bisection.
+  agree ... --decomposition "rcb [SX SY SZ]": both runs of a deck given a `begin decomposition` block (written
+      to OUT/deck.i; without SX SY SZ the run chooses the scale); the parallel run's log must name the coordinate
+      bisection, and with --expect-partition TEXT its partition line must hold TEXT.
 """
 import argparse
 import csv
@@ -61,8 +62,9 @@ def read(path):
 
 
 def with_decomposition(a):
-    """--decomposition "METHOD SX SY SZ": DECK with a `begin decomposition` block in its region, written to
-    OUT/deck.i (both runs take it; one rank ignores it). DECK must not name files relative to itself."""
+    """--decomposition "METHOD [SX SY SZ]": DECK with a `begin decomposition` block in its region, written to
+    OUT/deck.i (both runs take it; one rank ignores it; no scale: the run's own). DECK must not name files
+    relative to itself."""
     if not a.decomposition:
         return a.deck
     method, *scale = a.decomposition.split()
@@ -70,7 +72,7 @@ def with_decomposition(a):
         lines = f.read().split("\n")
     at = next(i for i, line in enumerate(lines) if line.strip().startswith("use finite element model"))
     block = ["      begin decomposition", f"        method = {method}",
-             f"        coordinate scale = {' '.join(scale)}", "      end decomposition"]
+             *([f"        coordinate scale = {' '.join(scale)}"] if scale else []), "      end decomposition"]
     return deck_copy(a, "\n".join(lines[:at + 1] + block + lines[at + 1:]))
 
 
@@ -97,6 +99,8 @@ def agree(a):
         print(partition)
         if "recursive coordinate bisection" not in partition and a.decomposition.startswith("rcb"):
             sys.exit("FAIL: the run did not partition by coordinate bisection")
+        if a.expect_partition not in partition:
+            sys.exit(f"FAIL: the partition line does not say '{a.expect_partition}'")
     h1, r1 = read(os.path.join(serial, "history.csv"))
     h2, r2 = read(os.path.join(parallel, "history.csv"))
     if h1 != h2 or len(r1) != len(r2):
@@ -299,6 +303,8 @@ def main():
     ap.add_argument("--termination", default="")
     ap.add_argument("--decomposition", default="",
                     help='agree: "METHOD SX SY SZ", both runs with this `begin decomposition` (OUT/deck.i)')
+    ap.add_argument("--expect-partition", default="",
+                    help="agree with --decomposition: text the parallel run's partition line must hold")
     ap.add_argument("--strict-region", action="store_true",
                     help="agree: also require that some rank's contact region holds fewer faces than the whole "
                          "surfaces (summary.json rank_counts contact_faces), so the distributed contact is exercised")

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+#include "solver/contact_travel.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+#include "solver/time_function.hpp"
+
+namespace tribex::solver {
+namespace {
+
+// The connected pieces of the mesh: a representative node per node (union-find over each element's
+// nodes, path halving).
+class Pieces {
+ public:
+  explicit Pieces(const mesh::Mesh& mesh) : parent_(static_cast<std::size_t>(mesh.node_count())) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+    for (int e = 0; e < mesh.element_count(); ++e)
+      for (int a = 1; a < 8; ++a) join(mesh.connectivity[8 * e], mesh.connectivity[8 * e + a]);
+  }
+  int root(int n) {
+    while (parent_[n] != n) n = parent_[n] = parent_[parent_[n]];
+    return n;
+  }
+
+ private:
+  void join(int a, int b) {
+    a = root(a), b = root(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+  std::vector<int> parent_;
+};
+
+// The sum of a side set list's face area vectors (outward), m^2, and the sum of their magnitudes.
+struct AreaSum {
+  std::array<double, 3> vector{0, 0, 0};
+  double magnitude = 0.0;
+};
+
+AreaSum area_sum(const mesh::Mesh& mesh, const inputs::ContactSurfaceSpec& surface) {
+  AreaSum sum;
+  for (const auto& name : surface.side_sets) {
+    const auto it = mesh.side_sets.find(name);
+    if (it == mesh.side_sets.end()) continue;  // build_contact reports it
+    for (const auto& side : it->second) {
+      const auto n = mesh.side_nodes(side);
+      const double* p[4];
+      for (int a = 0; a < 4; ++a) p[a] = &mesh.coordinates[3 * static_cast<std::size_t>(n[a])];
+      // A quadrilateral's area vector: half the cross product of its diagonals.
+      const double d[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+      const double e[3] = {p[3][0] - p[1][0], p[3][1] - p[1][1], p[3][2] - p[1][2]};
+      const double a[3] = {0.5 * (d[1] * e[2] - d[2] * e[1]), 0.5 * (d[2] * e[0] - d[0] * e[2]),
+                           0.5 * (d[0] * e[1] - d[1] * e[0])};
+      for (int i = 0; i < 3; ++i) sum.vector[i] += a[i];
+      sum.magnitude += std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    }
+  }
+  return sum;
+}
+
+// The dominant component of the largest summed area vector of the contact surfaces, or -1. A surface
+// whose faces sum to under a quarter of their area (a closed or strongly curved one) decides nothing.
+int normal_axis(const mesh::Mesh& mesh, const inputs::ContactSpec& contact) {
+  int axis = -1;
+  double largest = 0.0;
+  for (const auto& surface : contact.surfaces) {
+    const AreaSum s = area_sum(mesh, surface);
+    const double length = std::hypot(s.vector[0], s.vector[1], s.vector[2]);
+    if (length <= 0.25 * s.magnitude || length <= largest) continue;
+    largest = length;
+    axis = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::abs(s.vector[i]) > std::abs(s.vector[axis])) axis = i;
+  }
+  return axis;
+}
+
+// The distance a prescribed motion covers from t0 to t1, m: the total variation of the displacement
+// scale * f(t), or the integral of |scale * v(t)| (exact for the piecewise-linear table: a segment
+// whose velocity changes sign is split at its zero).
+double motion_distance(const inputs::PrescribedMotionSpec& motion, const inputs::FunctionSpec& spec, double t0, double t1) {
+  const TimeFunction f(spec);
+  std::vector<double> times{t0};
+  for (double t : spec.abscissa)
+    if (t > t0 && t < t1) times.push_back(t);
+  times.push_back(t1);
+  double distance = 0.0;
+  for (std::size_t k = 0; k + 1 < times.size(); ++k) {
+    const double a = motion.scale_factor * f(times[k]), b = motion.scale_factor * f(times[k + 1]);
+    const double dt = times[k + 1] - times[k];
+    if (motion.kind == inputs::PrescribedMotionSpec::Kind::displacement)
+      distance += std::abs(b - a);
+    else if (a * b >= 0.0)
+      distance += 0.5 * std::abs(a + b) * dt;
+    else
+      distance += 0.5 * dt * (a * a + b * b) / (std::abs(a) + std::abs(b));
+  }
+  return distance;
+}
+
+// The smallest extent along `axis` of the contact surfaces' face nodes, m (surfaces without faces in
+// the mesh skipped).
+double smallest_extent(const mesh::Mesh& mesh, const inputs::ContactSpec& contact, int axis) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& surface : contact.surfaces) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& name : surface.side_sets) {
+      const auto it = mesh.side_sets.find(name);
+      if (it == mesh.side_sets.end()) continue;
+      for (const auto& side : it->second)
+        for (int n : mesh.side_nodes(side)) {
+          const double x = mesh.coordinates[3 * static_cast<std::size_t>(n) + static_cast<std::size_t>(axis)];
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+        }
+    }
+    if (hi >= lo) smallest = std::min(smallest, hi - lo);
+  }
+  return smallest;
+}
+
+}  // namespace
+
+std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh::Mesh& mesh) {
+  const auto& region = deck.procedure.region;
+  if (!region.contact || region.prescribed_motions.empty()) return std::nullopt;
+  Pieces pieces(mesh);
+  std::vector<char> contact_piece(static_cast<std::size_t>(mesh.node_count()), 0);  // [root]
+  for (const auto& surface : region.contact->surfaces)
+    for (const auto& name : surface.side_sets) {
+      const auto it = mesh.side_sets.find(name);
+      if (it == mesh.side_sets.end()) continue;
+      for (const auto& side : it->second) contact_piece[pieces.root(mesh.side_nodes(side)[0])] = 1;
+    }
+  const int normal = normal_axis(mesh, *region.contact);
+  const auto& time = deck.procedure.time_control;
+  std::optional<ContactTravel> travel;
+  for (const auto& motion : region.prescribed_motions) {
+    const int axis = static_cast<int>(motion.component);
+    const auto set = mesh.node_sets.find(motion.node_set);
+    const inputs::FunctionSpec* function = deck.find_function(motion.function);
+    if (axis == normal || set == mesh.node_sets.end() || !function) continue;
+    const bool moves_contact_body =
+        std::any_of(set->second.begin(), set->second.end(), [&](int n) { return contact_piece[pieces.root(n)] != 0; });
+    if (!moves_contact_body) continue;
+    const double distance = motion_distance(motion, *function, time.start_time, time.termination_time);
+    if (distance > 0.0 && (!travel || distance > travel->distance))
+      travel = ContactTravel{axis, distance, motion.node_set, normal};
+  }
+  if (travel) travel->zone_extent = smallest_extent(mesh, *region.contact, travel->axis);
+  return travel;
+}
+
+bool crosses_patches(const ContactTravel& travel, int parts) {
+  return travel.distance * parts > travel.zone_extent;
+}
+
+parallel::AxisScale decomposition_scale(const inputs::DecompositionSpec& spec, const std::optional<ContactTravel>& travel,
+                                        int parts) {
+  if (spec.coordinate_scale) return *spec.coordinate_scale;
+  parallel::AxisScale scale = parallel::kUnitScale;
+  if (travel && crosses_patches(*travel, parts)) scale[travel->axis] = kTravelScale;
+  return scale;
+}
+
+}  // namespace tribex::solver
