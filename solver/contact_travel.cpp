@@ -35,7 +35,18 @@ class Pieces {
   std::vector<int> parent_;
 };
 
-// The sum of a side set list's face area vectors (outward), m^2, and the sum of their magnitudes.
+// fn(the 4 nodes of a face) for every face of `surface` (side sets missing from the mesh skipped:
+// build_contact reports them).
+template <class Fn>
+void for_each_face(const mesh::Mesh& mesh, const inputs::ContactSurfaceSpec& surface, Fn&& fn) {
+  for (const auto& name : surface.side_sets) {
+    const auto it = mesh.side_sets.find(name);
+    if (it == mesh.side_sets.end()) continue;
+    for (const auto& side : it->second) fn(mesh.side_nodes(side));
+  }
+}
+
+// The sum of a surface's face area vectors (outward), m^2, and the sum of their magnitudes.
 struct AreaSum {
   std::array<double, 3> vector{0, 0, 0};
   double magnitude = 0.0;
@@ -43,22 +54,17 @@ struct AreaSum {
 
 AreaSum area_sum(const mesh::Mesh& mesh, const inputs::ContactSurfaceSpec& surface) {
   AreaSum sum;
-  for (const auto& name : surface.side_sets) {
-    const auto it = mesh.side_sets.find(name);
-    if (it == mesh.side_sets.end()) continue;  // build_contact reports it
-    for (const auto& side : it->second) {
-      const auto n = mesh.side_nodes(side);
-      const double* p[4];
-      for (int a = 0; a < 4; ++a) p[a] = &mesh.coordinates[3 * static_cast<std::size_t>(n[a])];
-      // A quadrilateral's area vector: half the cross product of its diagonals.
-      const double d[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-      const double e[3] = {p[3][0] - p[1][0], p[3][1] - p[1][1], p[3][2] - p[1][2]};
-      const double a[3] = {0.5 * (d[1] * e[2] - d[2] * e[1]), 0.5 * (d[2] * e[0] - d[0] * e[2]),
-                           0.5 * (d[0] * e[1] - d[1] * e[0])};
-      for (int i = 0; i < 3; ++i) sum.vector[i] += a[i];
-      sum.magnitude += std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    }
-  }
+  for_each_face(mesh, surface, [&](const std::array<int, 4>& n) {
+    const double* p[4];
+    for (int a = 0; a < 4; ++a) p[a] = &mesh.coordinates[3 * static_cast<std::size_t>(n[a])];
+    // A quadrilateral's area vector: half the cross product of its diagonals.
+    const double d[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+    const double e[3] = {p[3][0] - p[1][0], p[3][1] - p[1][1], p[3][2] - p[1][2]};
+    const double a[3] = {0.5 * (d[1] * e[2] - d[2] * e[1]), 0.5 * (d[2] * e[0] - d[0] * e[2]),
+                         0.5 * (d[0] * e[1] - d[1] * e[0])};
+    for (int i = 0; i < 3; ++i) sum.vector[i] += a[i];
+    sum.magnitude += std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  });
   return sum;
 }
 
@@ -102,22 +108,19 @@ double motion_distance(const inputs::PrescribedMotionSpec& motion, const inputs:
   return distance;
 }
 
-// The smallest extent along `axis` of the contact surfaces' face nodes, m (surfaces without faces in
-// the mesh skipped).
+// The smallest extent along `axis` of the contact surfaces' face nodes, m (surfaces without faces
+// skipped).
 double smallest_extent(const mesh::Mesh& mesh, const inputs::ContactSpec& contact, int axis) {
   double smallest = std::numeric_limits<double>::infinity();
   for (const auto& surface : contact.surfaces) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& name : surface.side_sets) {
-      const auto it = mesh.side_sets.find(name);
-      if (it == mesh.side_sets.end()) continue;
-      for (const auto& side : it->second)
-        for (int n : mesh.side_nodes(side)) {
-          const double x = mesh.coordinates[3 * static_cast<std::size_t>(n) + static_cast<std::size_t>(axis)];
-          lo = std::min(lo, x);
-          hi = std::max(hi, x);
-        }
-    }
+    for_each_face(mesh, surface, [&](const std::array<int, 4>& nodes) {
+      for (int n : nodes) {
+        const double x = mesh.coordinates[3 * static_cast<std::size_t>(n) + static_cast<std::size_t>(axis)];
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+    });
     if (hi >= lo) smallest = std::min(smallest, hi - lo);
   }
   return smallest;
@@ -131,11 +134,7 @@ std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh
   Pieces pieces(mesh);
   std::vector<char> contact_piece(static_cast<std::size_t>(mesh.node_count()), 0);  // [root]
   for (const auto& surface : region.contact->surfaces)
-    for (const auto& name : surface.side_sets) {
-      const auto it = mesh.side_sets.find(name);
-      if (it == mesh.side_sets.end()) continue;
-      for (const auto& side : it->second) contact_piece[pieces.root(mesh.side_nodes(side)[0])] = 1;
-    }
+    for_each_face(mesh, surface, [&](const std::array<int, 4>& n) { contact_piece[pieces.root(n[0])] = 1; });
   const int normal = normal_axis(mesh, *region.contact);
   const auto& time = deck.procedure.time_control;
   std::optional<ContactTravel> travel;
