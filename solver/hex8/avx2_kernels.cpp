@@ -3,25 +3,18 @@
 // Everything it calls is inlined into the one entry point (flatten), so the object defines no
 // inline function that another object also defines: no AVX code can stand in for the baseline
 // code of a shared inline function (CTest `avx2_kernels_isolated` checks the object's symbols).
-// add_internal_forces calls it only where the CPU has AVX2 (element_lane_width()).
+// add_internal_forces calls it where the CPU has AVX2 but not AVX-512 (element_isa()).
 #ifdef __AVX2__
-#include "solver/hex8/fully_integrated.hpp"
-#include "solver/hex8/mean_quadrature.hpp"
+#include "solver/hex8/block_kernels.hpp"
 
 namespace tribex::solver::hex8::avx2 {
 
 __attribute__((flatten)) ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity,
-                                                          const double* coordinates, const double* u, const double* v, double* force, double dt,
-                                                          bool want_stress, bool want_stable_step) {
-  using materials::double4;
-  return std::visit(
-      [&](const auto& mat) {
-        if (block.formulation == inputs::ElementFormulation::mean_quadrature)
-          return mean_quadrature_forces<double4>(mat, block, connectivity, u, v, force, dt, want_stress, want_stable_step);
-        return fully_integrated_forces<double4>(mat, block, connectivity, coordinates, u, v, force, dt, want_stress,
-                                                want_stable_step);
-      },
-      block.material);
+                                                          const double* coordinates, const double* u, const double* v,
+                                                          double* force, double dt, bool want_stress,
+                                                          bool want_stable_step) {
+  return block_internal_forces<materials::double4>(block, connectivity, coordinates, u, v, force, dt, want_stress,
+                                                   want_stable_step);
 }
 
 }  // namespace tribex::solver::hex8::avx2

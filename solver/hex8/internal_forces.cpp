@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "solver/hex8/internal_forces.hpp"
 
-#include "solver/hex8/fully_integrated.hpp"
-#include "solver/hex8/mean_quadrature.hpp"
+#include "solver/hex8/block_kernels.hpp"
 
 namespace tribex::solver {
 
+// The instruction-set files' entry points, with add_internal_forces's signature.
 #ifdef TRIBEX_AVX2_KERNELS
 namespace hex8::avx2 {
-// avx2_kernels.cpp
+// avx2_kernels.cpp: four lanes
 ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
                                   const double* u, const double* v, double* force, double dt, bool want_stress,
                                   bool want_stable_step);
@@ -16,34 +16,46 @@ ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, 
 #endif
 #ifdef TRIBEX_AVX512_KERNELS
 namespace hex8::avx512 {
-// avx512_kernels.cpp
+// avx512_kernels.cpp: eight lanes, and four lanes with 32 registers
 ElementPassTotals internal_forces(ElementBlock& block, const int* connectivity, const double* coordinates,
                                   const double* u, const double* v, double* force, double dt, bool want_stress,
                                   bool want_stable_step);
+ElementPassTotals internal_forces_four_lanes(ElementBlock& block, const int* connectivity, const double* coordinates,
+                                             const double* u, const double* v, double* force, double dt, bool want_stress,
+                                             bool want_stable_step);
 }  // namespace hex8::avx512
 #endif
 
 namespace {
 
-int cpu_lane_width() {
+KernelIsa cpu_isa() {
   __builtin_cpu_init();
 #ifdef TRIBEX_AVX512_KERNELS
   // libgcc's test includes the OS's (XGETBV) enabling of the 512-bit register state
-  if (__builtin_cpu_supports("avx512f")) return 8;
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) return KernelIsa::avx512;
 #endif
 #ifdef TRIBEX_AVX2_KERNELS
-  if (__builtin_cpu_supports("avx2")) return 4;
+  if (__builtin_cpu_supports("avx2")) return KernelIsa::avx2;
 #endif
-  return 2;
+  return KernelIsa::sse2;
 }
 
 int forced_lane_width = 0;
+KernelIsa isa_limit = KernelIsa::avx512;
 
 }  // namespace
 
+KernelIsa element_isa() {
+  static const KernelIsa cpu = cpu_isa();
+  return cpu < isa_limit ? cpu : isa_limit;
+}
+
+void limit_element_isa(KernelIsa isa) { isa_limit = isa; }
+
 int element_lane_width() {
-  static const int cpu = cpu_lane_width();
-  return forced_lane_width > 0 && forced_lane_width <= cpu ? forced_lane_width : cpu;
+  const KernelIsa isa = element_isa();
+  const int widest = isa == KernelIsa::avx512 ? 8 : isa == KernelIsa::avx2 ? 4 : 2;
+  return forced_lane_width > 0 && forced_lane_width <= widest ? forced_lane_width : widest;
 }
 
 int element_lane_width(inputs::ElementFormulation formulation) {
@@ -61,21 +73,16 @@ ElementPassTotals add_internal_forces(ElementBlock& block, const int* connectivi
 #ifdef TRIBEX_AVX512_KERNELS
   if (lanes == 8)
     return hex8::avx512::internal_forces(block, connectivity, coordinates, u, v, force, dt, want_stress, want_stable_step);
+  if (lanes == 4 && element_isa() == KernelIsa::avx512)
+    return hex8::avx512::internal_forces_four_lanes(block, connectivity, coordinates, u, v, force, dt, want_stress,
+                                                    want_stable_step);
 #endif
 #ifdef TRIBEX_AVX2_KERNELS
   if (lanes == 4)
     return hex8::avx2::internal_forces(block, connectivity, coordinates, u, v, force, dt, want_stress, want_stable_step);
 #endif
-  return std::visit(
-      [&](const auto& mat) {
-        using materials::double2;
-        if (block.formulation == inputs::ElementFormulation::mean_quadrature)
-          return hex8::mean_quadrature_forces<double2>(mat, block, connectivity, u, v, force, dt, want_stress,
-                                                              want_stable_step);
-        return hex8::fully_integrated_forces<double2>(mat, block, connectivity, coordinates, u, v, force, dt, want_stress,
-                                                              want_stable_step);
-      },
-      block.material);
+  return hex8::block_internal_forces<materials::double2>(block, connectivity, coordinates, u, v, force, dt, want_stress,
+                                                         want_stable_step);
 }
 
 }  // namespace tribex::solver

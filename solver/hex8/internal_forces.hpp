@@ -19,13 +19,21 @@ struct ElementPassTotals {
   hex8::StableStepMin stable;     // when asked for: the block's stable step at this u (stable_time_step.hpp)
 };
 
-/// The widest element batch the CPU runs: 8 (AVX-512F) or 4 (AVX2) where it has them, else 2 (SSE2,
-/// every x86-64); or the width forced by set_element_lane_width. The results are bitwise the same
-/// at every width (mean_quadrature.hpp).
+/// The instruction sets the element kernels are built for, in order (avx512: AVX-512F with VL).
+enum class KernelIsa { sse2, avx2, avx512 };
+/// The best of them the CPU has, or the limit set by limit_element_isa where that is lower.
+KernelIsa element_isa();
+/// Run the kernels with at most this instruction set (tests and `tribex bench block --isa`; the
+/// default, avx512, leaves the CPU's best). The results are bitwise the same with every one.
+void limit_element_isa(KernelIsa isa);
+
+/// The widest element batch the instruction set runs: 8 (avx512), 4 (avx2) or 2 (sse2, every
+/// x86-64); or the width forced by set_element_lane_width. The results are bitwise the same at
+/// every width (mean_quadrature.hpp).
 int element_lane_width();
 /// Elements per kernel call for a block of this formulation: the forced width, else the CPU's
 /// widest but at most 4 for mean quadrature, whose eight-lane kernel measured about 10 % slower
-/// than the four-lane one at 40^3 on an AMD EPYC with AVX-512 (while the fully integrated one gained
+/// than the four-lane one at 40^3 on an AMD EPYC and an Intel Xeon with AVX-512 (while the fully integrated one gained
 /// 13-16 %: tools/bench/README.md, "Eight lanes").
 int element_lane_width(inputs::ElementFormulation formulation);
 /// Force the width (2, 4 or 8; a width above the CPU's widest gives its widest; 0: the default

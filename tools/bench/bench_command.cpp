@@ -27,12 +27,14 @@ const char* usage =
     "tribex bench contact [--faces N] [--steps S]   (search + enforcement cost, see --help)\n"
     "tribex bench broad-phase [--faces N]           (bucket grid against CGAL box_intersection_d)\n"
     "tribex bench block [--n N] [--element mean_quadrature|fully_integrated]\n"
-    "                   [--material elastic|neohookean] [--steps S] [--lanes 2|4|8]\n"
+    "                   [--material elastic|neohookean] [--steps S] [--lanes 2|4|8] [--isa sse2|avx2|avx512]\n"
     "  Times the explicit loop on a unit cube of N^3 hex8 elements (default N 20, 200 steps).\n"
     "  Prints loop-only and whole-command ns per element per step, heap allocations inside the\n"
     "  loop and the peak resident memory; the last line is ns_per_element_step=VALUE (loop only).\n"
     "  --lanes: elements per kernel call (default: the widest the CPU has, 8 with AVX-512F, 4 with AVX2,\n"
-    "  else 2, but at most 4 for mean quadrature; a width the CPU lacks runs at its widest).\n";
+    "  else 2, but at most 4 for mean quadrature; a width the CPU lacks runs at its widest).\n"
+    "  --isa: the best instruction set the kernels may use (default: the CPU's best; four lanes run\n"
+    "  with AVX-512VL's 32 registers where the CPU has them, with AVX2's 16 under --isa avx2).\n";
 
 inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::MaterialModel model) {
   const double K = 160e9, G = 80e9;
@@ -76,12 +78,16 @@ int bench_command(const std::vector<std::string>& argv) {
   const std::string element = args.text("--element", "mean_quadrature");
   const std::string material = args.text("--material", "elastic");
   const long lanes = args.integer("--lanes", 0);
+  const std::string isa = args.text("--isa", "avx512");
   args.finish();
   if (what != "block") throw tools::BadInput("tribex bench: unknown benchmark '" + what + "' (known: block, contact, broad-phase)");
   if (n < 1 || n > 400) throw tools::BadInput("tribex bench: --n must be in 1..400");
   if (steps < 1) throw tools::BadInput("tribex bench: --steps must be >= 1");
   if (lanes != 0 && lanes != 2 && lanes != 4 && lanes != 8) throw tools::BadInput("tribex bench: --lanes must be 2, 4 or 8");
   solver::set_element_lane_width(static_cast<int>(lanes));
+  if (isa == "sse2") solver::limit_element_isa(solver::KernelIsa::sse2);
+  else if (isa == "avx2") solver::limit_element_isa(solver::KernelIsa::avx2);
+  else if (isa != "avx512") throw tools::BadInput("tribex bench: --isa must be sse2, avx2 or avx512");
   inputs::ElementFormulation formulation;
   if (element == "mean_quadrature") formulation = inputs::ElementFormulation::mean_quadrature;
   else if (element == "fully_integrated") formulation = inputs::ElementFormulation::fully_integrated;
@@ -106,8 +112,10 @@ int bench_command(const std::vector<std::string>& argv) {
   getrusage(RUSAGE_SELF, &usage_info);
   const double elements = double(m.mesh.element_count());
   const double per = 1e9 * loop / (elements * double(steps));
-  std::printf("block %ld^3 = %.0f elements, %s, %s, %d lanes, %ld steps of %.4g s\n", n, elements, element.c_str(),
-              material.c_str(), solver::element_lane_width(formulation), steps, integrator.next_dt());
+  const char* isa_names[] = {"sse2", "avx2", "avx512"};
+  std::printf("block %ld^3 = %.0f elements, %s, %s, %d lanes (%s), %ld steps of %.4g s\n", n, elements, element.c_str(),
+              material.c_str(), solver::element_lane_width(formulation), isa_names[int(solver::element_isa())], steps,
+              integrator.next_dt());
   std::printf("loop %.4f s, whole command %.4f s\n", loop, total);
   std::printf("whole_command_ns_per_element_step=%.2f\n", 1e9 * total / (elements * double(steps)));
   std::printf("heap_allocations_in_loop=%llu\n", static_cast<unsigned long long>(allocations));
