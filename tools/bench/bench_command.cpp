@@ -31,7 +31,7 @@ const char* usage =
     "  Times the explicit loop on a unit cube of N^3 hex8 elements (default N 20, 200 steps).\n"
     "  Prints loop-only and whole-command ns per element per step, heap allocations inside the\n"
     "  loop and the peak resident memory; the last line is ns_per_element_step=VALUE (loop only).\n"
-    "  --lanes: elements per kernel call (default: the widest the CPU has, 8 with AVX-512F, 4 with AVX2,\n"
+    "  --lanes: elements per kernel call (default: the widest the CPU has, 8 with AVX-512F and VL, 4 with AVX2,\n"
     "  else 2, but at most 4 for mean quadrature; a width the CPU lacks runs at its widest).\n"
     "  --isa: the best instruction set the kernels may use (default: the CPU's best; four lanes run\n"
     "  with AVX-512VL's 32 registers where the CPU has them, with AVX2's 16 under --isa avx2).\n";
