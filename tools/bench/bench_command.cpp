@@ -4,8 +4,11 @@
 // nodes on x = 1 pulled at 10 m/s in x, time step half the stable estimate, no output in the loop.
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <iterator>
+#include <string_view>
 
 #include "inputs/cube_deck.hpp"
 #include "solver/integrators/central_difference.hpp"
@@ -35,6 +38,9 @@ const char* usage =
     "  else 2, but at most 4 for mean quadrature; a width the CPU lacks runs at its widest).\n"
     "  --isa: the best instruction set the kernels may use (default: the CPU's best; four lanes run\n"
     "  with AVX-512VL's 32 registers where the CPU has them, with AVX2's 16 under --isa avx2).\n";
+
+// `--isa` values, in solver::KernelIsa's order
+constexpr std::string_view isa_names[] = {"sse2", "avx2", "avx512"};
 
 inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::MaterialModel model) {
   const double K = 160e9, G = 80e9;
@@ -85,9 +91,9 @@ int bench_command(const std::vector<std::string>& argv) {
   if (steps < 1) throw tools::BadInput("tribex bench: --steps must be >= 1");
   if (lanes != 0 && lanes != 2 && lanes != 4 && lanes != 8) throw tools::BadInput("tribex bench: --lanes must be 2, 4 or 8");
   solver::set_element_lane_width(static_cast<int>(lanes));
-  if (isa == "sse2") solver::limit_element_isa(solver::KernelIsa::sse2);
-  else if (isa == "avx2") solver::limit_element_isa(solver::KernelIsa::avx2);
-  else if (isa != "avx512") throw tools::BadInput("tribex bench: --isa must be sse2, avx2 or avx512");
+  const auto* named_isa = std::find(std::begin(isa_names), std::end(isa_names), isa);
+  if (named_isa == std::end(isa_names)) throw tools::BadInput("tribex bench: --isa must be sse2, avx2 or avx512");
+  solver::limit_element_isa(static_cast<solver::KernelIsa>(named_isa - std::begin(isa_names)));
   inputs::ElementFormulation formulation;
   if (element == "mean_quadrature") formulation = inputs::ElementFormulation::mean_quadrature;
   else if (element == "fully_integrated") formulation = inputs::ElementFormulation::fully_integrated;
@@ -112,9 +118,8 @@ int bench_command(const std::vector<std::string>& argv) {
   getrusage(RUSAGE_SELF, &usage_info);
   const double elements = double(m.mesh.element_count());
   const double per = 1e9 * loop / (elements * double(steps));
-  const char* isa_names[] = {"sse2", "avx2", "avx512"};
   std::printf("block %ld^3 = %.0f elements, %s, %s, %d lanes (%s), %ld steps of %.4g s\n", n, elements, element.c_str(),
-              material.c_str(), solver::element_lane_width(formulation), isa_names[int(solver::element_isa())], steps,
+              material.c_str(), solver::element_lane_width(formulation), isa_names[int(solver::element_isa())].data(), steps,
               integrator.next_dt());
   std::printf("loop %.4f s, whole command %.4f s\n", loop, total);
   std::printf("whole_command_ns_per_element_step=%.2f\n", 1e9 * total / (elements * double(steps)));
