@@ -82,6 +82,8 @@ def main():
     a = ap.parse_args()
     if any(n < 1 for n in a.ranks):
         fail(f"--ranks {' '.join(map(str, a.ranks))}: rank counts must be 1 or more")
+    if a.termination is not None and not a.run:
+        fail(f"--termination {a.termination} changes the runs, and there are none without --run; add --run")
     deck = deck_with_termination(a.deck, a.termination, a.out) if a.run else a.deck
     rows = []
     for n in a.ranks:
