@@ -16,6 +16,7 @@
 #include "solver/contact_travel.hpp"
 #include "solver/guards/block_translation.hpp"
 #include "solver/guards/run_guards.hpp"
+#include "solver/guards/strain_guard.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/model.hpp"
 #include "solver/output/exodus_writer.hpp"
@@ -121,6 +122,7 @@ class DeckRun {
   std::optional<CentralDifference> integrator_;
   std::optional<RunGuards> guards_;
   std::optional<BlockTranslation> block_translation_;
+  std::optional<StrainGuard> strain_guard_;
   std::optional<StateArchive> resume_;
   // stage 3
   std::filesystem::path out_;

@@ -180,9 +180,12 @@ void DeckRun::start_from_restart() {
   stop_before_outputs("after the model was built");
   // A restart file is read and checked against the model before any output file is touched.
   integrator_.emplace(*model_, tc_);
-  guards_.emplace(region_.guards, model_->setup, static_cast<long>(std::ceil(est_steps_)),
+  SetupFindings findings = model_->setup;
+  for (const auto& b : model_->blocks) findings.block_names.push_back(b.name);
+  guards_.emplace(region_.guards, std::move(findings), static_cast<long>(std::ceil(est_steps_)),
                   [this](const RunWarning& w) { announce(w); });
   block_translation_.emplace(*model_);
+  strain_guard_.emplace(model_->blocks, model_->domain.global_element);
   if (options_.restart_path.empty()) return;
   std::exception_ptr error;
   try {

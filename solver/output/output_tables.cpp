@@ -89,6 +89,22 @@ std::span<const Field<RunWarning>> warning_fields() {
         f.json = [](const W& w) { return w.node >= 0 ? std::to_string(w.node + 1) : std::string("null"); };
         return f;
       }(),
+      [] {
+        auto f = field<&W::source>("source", "", "energy_error: the ledger term named as the likely source (null: none)");
+        f.json = [](const W& w) {
+          return w.source == EnergySource::none ? std::string("null") : json_string(source_name(w.source));
+        };
+        return f;
+      }(),
+      field<&W::source_change>("source_change", "J",
+                               "energy_error: that term's change since since_step (contact_work: the energy the contact "
+                               "gave the bodies)"),
+      [] {
+        auto f = field<&W::block>("block", "", "large_strain: the block's index in the deck's order (null: none)");
+        f.json = [](const W& w) { return w.block >= 0 ? std::to_string(w.block) : std::string("null"); };
+        return f;
+      }(),
+      field<&W::since_step>("since_step", "count", "energy_error: the step the error was last below half the warning"),
       {"message", "", "one line: what, where, and what to change", nullptr, nullptr,
        [](const W& w) { return json_string(w.message); }},
   };
@@ -206,7 +222,7 @@ std::span<const Field<RunSummary>> summary_fields() {
       text("mass_scaling",
            "begin mass scaling (null without): target and unscaled time step (s), unscaled and added mass (kg), the "
            "added fraction (the contact surface nodes' included), the contact surface nodes raised, their mass factor "
-           "s (dt / dt_0)^2 / max(s, 2) and added mass (kg), and per block the scaled elements, mass, added mass and largest density "
+           "(dt / dt_0)^2 and added mass (kg), and per block the scaled elements, mass, added mass and largest density "
            "factor",
            [](const R& s) {
              const MassScalingReport& m = s.mass_scaling;
