@@ -81,6 +81,17 @@ TEST(LayeredCli, BadArgumentsExit2WithOneLineAndNothingWritten) {
   }
 }
 
+TEST(LayeredCli, TopLayerTooThinForTheContactIsANumericalFailure) {
+  // a/h_top = 3 nm / 0.001 nm needs 18,000 Nystrom nodes: exit 3, one line, nothing written.
+  const std::filesystem::path out = dir / "thin";
+  std::filesystem::remove_all(out);
+  const auto [code, err] = run({"--radius", "27nm", "--thickness", "0.001nm", "--layer-youngs", "8GPa", "--layer-poisson",
+                                "0.4", "--loads", "50nN", "--no-plot", "-o", out.string()});
+  EXPECT_EQ(code, 3) << err;
+  EXPECT_NE(err.find("too thin"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(LayeredCli, ContinuumTableIsACoatingTable) {
   // verification/coated/reference.csv (compare_reference.py table) in `tribex fit friction --coating-table` form.
   const auto t = tribex::fit::CoatingTable::read(std::string(TRIBEX_SOURCE_DIR) + "/verification/coated/reference.csv");
