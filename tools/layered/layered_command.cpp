@@ -211,8 +211,9 @@ int run(const std::vector<std::string>& argv) {
   std::filesystem::create_directories(dir);
   std::ostringstream about;
   about << stack.layers.size() << " layer(s), top h = " << stack.layers.front().thickness * 1e9 << " nm, E = "
-        << stack.top().youngs * 1e-9 << " GPa; base " << (stack.substrate ? "elastic, E = " + std::to_string(stack.substrate->youngs * 1e-9) + " GPa" : "rigid")
-        << "; R = " << *radius * 1e9 << " nm";
+        << stack.top().youngs * 1e-9 << " GPa; base ";
+  if (stack.substrate) about << "elastic, E = " << stack.substrate->youngs * 1e-9 << " GPa"; else about << "rigid";
+  about << "; R = " << *radius * 1e9 << " nm";
   tools::write_text_file(dir + "/layered.csv", csv_text(curve, about.str()));
   if (pressure_radii > 0) tools::write_text_file(dir + "/pressure.csv", pressure_text(contact, p_tilde, scale, pressure_radii));
   std::ostringstream js;
