@@ -172,6 +172,11 @@ std::span<const Field<RunSummary>> summary_fields() {
       }),
       text("started", "start time, ISO 8601 UTC", [](const R& s) { return json_string(s.identity.started_utc); }),
       text("host", "host name", [](const R& s) { return json_string(s.identity.host); }),
+      text("run_id", "the run's identity (32 hex digits; kept by the runs resumed from its restart files), also in "
+                     "log.txt, results.h5, the restart files and the output folder's .tribex_manifest.json",
+           [](const R& s) { return json_string(s.identity.run_id); }),
+      text("mesh_sha256", "SHA-256 of the mesh's coordinates and connectivity (restart files check it)",
+           [](const R& s) { return json_string(s.identity.mesh_sha256); }),
       field<&R::steps>("steps", "count", "step index at the end"),
       field<&R::final_time>("final_time", "s", "simulated time at the end"),
       field<&R::nodes>("nodes", "count", "nodes of the mesh"),
