@@ -14,7 +14,7 @@
 namespace tribex::solver {
 
 /// The strain above which a small-strain elastic block warns (dimensionless, largest principal strain).
-inline constexpr double small_strain_warning = 0.05;
+inline constexpr double small_strain_warning = 0.10;
 
 /// The largest |principal strain| of eps = (sigma - lambda / (3 lambda + 2 mu) tr(sigma) I) / (2 mu), sigma
 /// the Cauchy stress in Voigt order xx yy zz xy yz zx (Pa); lambda, mu the Lame constants (Pa).
