@@ -71,7 +71,7 @@ class DeckRun {
   // ---- stage 3: the output folder, history.csv, results.h5, restart output ----
   void open_outputs();
   void choose_history_columns();
-  void note_mpiexec_signal_grace();  // the Open MPI kill delay that can cost a signalled run its restart file  // every rank: the row is built everywhere, written by rank 0
+  void note_mpirun_signal_grace();  // the Open MPI kill delay that can cost a signalled run its restart file
   void open_results();  // results.h5 + results.xdmf and/or results.exo (`format`)
   // ---- stage 4: the loop and what it writes at time n ----
   void loop();
@@ -142,6 +142,8 @@ class DeckRun {
   Clock::time_point loop_start_;
   double loop_start_time_ = 0.0;  // s of simulated time at loop_start_ (the restart time on a resume)
   bool closing_ = false;
+  bool stopped_by_signal_ = false;  // agreed by the ranks: the loop stopped for a signal
+  Clock::time_point stop_seen_;     // when it did (the stop's time is logged at the close)
   std::vector<double> row_;
   std::vector<double> globals_;  // results.exo: step, then row_
   std::vector<double> element_stress_, element_plastic_strain_;
