@@ -17,7 +17,9 @@
 #include "solver/guards/block_translation.hpp"
 #include "solver/guards/run_guards.hpp"
 #include "solver/integrators/central_difference.hpp"
+#include "solver/errors.hpp"
 #include "solver/model.hpp"
+#include "solver/out_of_memory.hpp"
 #include "solver/output/exodus_writer.hpp"
 #include "solver/output/history_writer.hpp"
 #include "solver/output/results_writer.hpp"
@@ -45,14 +47,14 @@ class DeckRun {
         root_(parallel::is_root()), ranks_(parallel::size()), log_(options.quiet || !root_) {}
 
   RunSummary run() {
-    preflight();
+    set_up("building the model", [this] { preflight(); });
     if (options_.check_only) {
       summary_.status = "checked";
       return summary_;
     }
-    start_from_restart();
+    set_up("reading the restart state", [this] { start_from_restart(); });
     stop_before_outputs("before the output files were opened");
-    open_outputs();
+    set_up("opening the output files", [this] { open_outputs(); });
     peak_rss_setup_ = parallel::peak_rss_bytes();  // set-up's high-water mark, before the loop adds to it
     loop();
     close();
@@ -85,6 +87,21 @@ class DeckRun {
   void close();
   void close_log_lines();
 
+  /// A set-up stage: out of memory or a full disk here is exit 2 (a SetupError naming the stage and the
+  /// size, or the free space), not an internal error or a loop's exit 3; nothing has run yet.
+  template <class F>
+  void set_up(const char* stage, F&& body) {
+    try {
+      body();
+    } catch (const std::bad_alloc&) {
+      throw SetupError(out_of_memory_text(stage) + " for a model of " + std::to_string(elements_) +
+                       " elements; run on more ranks (mpirun -np N), on a machine with more memory, or a coarser mesh");
+    } catch (const OutputError& e) {
+      std::string what = e.what();  // nothing of the run's is kept: the loop's closing words go
+      what = what.substr(0, what.find("; the files up to the last complete output step are kept"));
+      throw SetupError("cannot set up the outputs: " + what);
+    }
+  }
   /// A stop that arrives before the outputs exist ends the run here, with nothing written (every
   /// rank at the same point): set-up is not interrupted half-way.
   void stop_before_outputs(const char* stage) {

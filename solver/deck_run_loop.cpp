@@ -227,6 +227,11 @@ void DeckRun::loop() {
   } catch (const OutputError& e) {
     summary_.exit_code = 3;
     summary_.status = std::string("output failure: ") + e.what();
+  } catch (const std::bad_alloc&) {
+    // The failed request is freed; what the close needs (summary.json, a few KB) is small.
+    summary_.exit_code = 3;
+    summary_.status = out_of_memory_text(format("running step %ld", integrator_->step_index() + 1)) +
+                      "; the files up to the last complete output step are kept";
   }
   summary_.loop_seconds = seconds_since(loop_start_);
   if (terminal_) std::fprintf(stderr, "\n");

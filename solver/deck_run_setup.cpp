@@ -262,7 +262,16 @@ void DeckRun::open_outputs() {
   }
   if (region_.restart) restart_output_.emplace(*region_.restart, out_.string());
   if (region_.restart) note_mpirun_signal_grace();
-  if (root_) reserve_summary_json((out_ / "summary.json").string());
+  // summary.json's space is taken before the loop (solver/output/summary_writer.hpp); agreed, as it can fail.
+  std::exception_ptr reserve_error;
+  if (root_) {
+    try {
+      reserve_summary_json((out_ / "summary.json").string(), summary_json_reserve_bytes(ranks_));
+    } catch (...) {
+      reserve_error = std::current_exception();
+    }
+  }
+  agree_on_errors(reserve_error);
 }
 
 // Under mpirun a SIGTERM or SIGINT leaves the ranks 2 x odls_base_sigkill_timeout to stop
