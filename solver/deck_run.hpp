@@ -56,7 +56,12 @@ class DeckRun {
     stop_before_outputs("before the output files were opened");
     set_up("opening the output files", [this] { open_outputs(); });
     peak_rss_setup_ = parallel::peak_rss_bytes();  // set-up's high-water mark, before the loop adds to it
-    loop();
+    try {
+      loop();  // its steps catch their own failures; this: the loop's buffers (fields, rows), before step 1
+    } catch (const std::bad_alloc&) {
+      summary_.exit_code = 3;
+      summary_.status = out_of_memory_text("allocating the loop's output buffers");
+    }
     close();
     return summary_;
   }
@@ -94,8 +99,8 @@ class DeckRun {
     try {
       body();
     } catch (const std::bad_alloc&) {
-      throw SetupError(out_of_memory_text(stage) + " for a model of " + std::to_string(elements_) +
-                       " elements; run on more ranks (mpirun -np N), on a machine with more memory, or a coarser mesh");
+      const std::string model = elements_ > 0 ? " for a model of " + std::to_string(elements_) + " elements" : "";
+      throw SetupError(out_of_memory_text(stage) + model + "; run on more ranks (mpirun -np N), on a machine with more memory, or a coarser mesh");
     } catch (const OutputError& e) {
       std::string what = e.what();  // nothing of the run's is kept: the loop's closing words go
       what = what.substr(0, what.find("; the files up to the last complete output step are kept"));

@@ -253,6 +253,11 @@ void DeckRun::close() {
       summary.exit_code = 3;
       summary.status = std::string("output failure: ") + e.what();
     }
+  } catch (const std::bad_alloc&) {
+    if (summary.exit_code == 0 || summary.exit_code == 130) {
+      summary.exit_code = 3;
+      summary.status = out_of_memory_text("closing the results files");
+    }
   }
   summary.steps = integrator_->step_index();
   summary.first_step = first_step_;

@@ -27,6 +27,9 @@ std::string no_space_reason(const std::string& what) {
 }
 
 OutputError output_failure(const std::string& path, int error_number) {
+  if (error_number == ENOMEM)  // a library's allocation failed while writing (HDF5's buffers)
+    return OutputError("out of memory while writing " + path + "; run on more ranks or a machine with more memory; the " +
+                       "files up to the last complete output step are kept");
   const bool full = error_number == ENOSPC || error_number == EDQUOT;
   const std::string reason = full ? no_space_reason(path) : error_number ? std::strerror(error_number) : "write failed";
   return OutputError(reason + " while writing " + path +
