@@ -65,15 +65,14 @@ void ContactManager::set_unscaled_penalty_reference(std::vector<double> unscaled
       p.penalty_per_area =
           std::min(mortar_penalty_per_area(surfaces_[p.slave], surfaces_[p.master], penalty_mass_, p.penalty_scale,
                                            penalty_dt_),
-                   mortar_penalty_per_area(surfaces_[p.slave], surfaces_[p.master], mass_,
-                                           scaled_penalty_cap(p.penalty_scale), dt_ref_));
+                   mortar_penalty_per_area(surfaces_[p.slave], surfaces_[p.master], mass_, p.penalty_scale, dt_ref_));
 }
 
 double ContactManager::penalty_stiffness(double scale, const ContactPoint& point) const {
   const double k = scale * effective_mass(mass_, point) / (dt_ref_ * dt_ref_);
   if (penalty_mass_.empty()) return k;
   const double unscaled = scale * effective_mass(penalty_mass_, point) / (penalty_dt_ * penalty_dt_);
-  return std::min(unscaled, scaled_penalty_cap(scale) / scale * k);
+  return std::min(unscaled, k);
 }
 
 void ContactManager::set_axis(const double point[3], const double direction[3]) {

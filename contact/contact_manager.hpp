@@ -79,12 +79,11 @@ class ContactManager {
   /// Mass-scaled runs (solver/mass_scaling.hpp, docs/theory.md 1.4.1): the penalty stiffness is taken
   /// from the unscaled lumped masses `unscaled_mass` [node] and the unscaled step `unscaled_dt`, as the
   /// same deck without mass scaling would have it, so that mass scaling leaves the contact stiffness
-  /// (and with it the penetration and contact area) unchanged; capped at k dt^2 / m_eff = max(s, 2) on
-  /// the scaled masses and step (half the explicit limit 4 of the node-face spring alone). Without
-  /// this call the penalty is s m_eff / dt_ref^2 on the masses given to the constructor.
+  /// (and with it the penetration and contact area) unchanged; never above s m_eff / dt_ref^2 on the
+  /// scaled masses and step, the unscaled run's k dt^2 / m_eff = s (the solver gives the contact
+  /// surface nodes (dt / dt_0)^2 times their unscaled mass, so that this bound does not bind: docs/theory.md
+  /// 1.4.1). Without this call the penalty is s m_eff / dt_ref^2 on the masses given to the constructor.
   void set_unscaled_penalty_reference(std::vector<double> unscaled_mass, double unscaled_dt);
-  /// The largest k dt^2 / m_eff of a mass-scaled run's penalty (the cap above) for penalty scale `s`.
-  static double scaled_penalty_cap(double s) { return s > 2.0 ? s : 2.0; }
 
   /// Distributed runs (contact/README.md "Distributed contact", solver/parallel/contact_region.hpp):
   /// this rank reports the totals, search decision and motion of the nodes with `counted` [node]

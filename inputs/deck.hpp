@@ -377,6 +377,7 @@ struct ProcedureSpec {
 struct Deck {
   std::string name;
   std::string path;  // the deck file as given
+  std::vector<std::string> files_read;  // the deck and every file it includes, as opened (a run never writes them)
   std::vector<FunctionSpec> functions;
   std::vector<MaterialSpec> materials;
   std::vector<SectionSpec> sections;

@@ -13,6 +13,8 @@ Deck parse_lines(const std::vector<LogicalLine>& lines, const std::string& file_
   Deck deck = build_deck(root, file_name, sink);
   sink.throw_if_any();
   deck.resolved_text = resolved_text(root);
+  for (const auto& line : lines)  // the deck and its includes (an output folder must not overwrite them)
+    if (deck.files_read.empty() || deck.files_read.back() != line.where().file) deck.files_read.push_back(line.where().file);
   return deck;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mesh/mesh_error.hpp"
+#include "mesh/output_target.hpp"
 
 namespace tribex::mesh {
 namespace {
@@ -349,6 +350,8 @@ void write_exodus(const Mesh& mesh, const std::string& path, ExodusFormat format
   hidden += target.filename().string();
   hidden += ".partial";
   const fs::path partial = target.parent_path() / hidden;
+  require_output_target(path);  // only a regular file is replaced (a FIFO, device or folder: exit 2)
+  require_output_target(partial.string());
   {
     ExoFile f;
     try {

@@ -18,6 +18,7 @@
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/msh_prescan.hpp"
+#include "mesh/output_target.hpp"
 
 namespace tribex::mesh {
 
@@ -396,6 +397,8 @@ void write_gmsh(const Mesh& mesh, const std::string& path) {
   const std::filesystem::path target(path);
   std::filesystem::path tmp = target;
   tmp.replace_filename("." + target.filename().string() + ".partial.msh");  // renamed at the end: never half-written
+  require_output_target(path);  // only a regular file is replaced (a FIFO, device or folder: exit 2)
+  require_output_target(tmp.string());
 
   GmshSession session;
   GmshScratchModel model("write");

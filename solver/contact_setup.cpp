@@ -290,6 +290,10 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
     }
     if (findings && s.enforcement == contact::Enforcement::node_to_face && contact::uses_penalty(s.law))
       note_one_point_elements(it, spec, model, faces, *findings);
+    if (findings) {
+      findings->contact_interactions += (findings->contact_interactions.empty() ? "'" : ", '") + it.name + "'";
+      findings->mass_scaled = model.mass_scaling.active;
+    }
     interactions.push_back(s);
   }
   auto manager = std::make_unique<contact::ContactManager>(std::move(surfaces), std::move(interactions), geometry.mass,

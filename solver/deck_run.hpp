@@ -16,12 +16,14 @@
 #include "solver/contact_travel.hpp"
 #include "solver/guards/block_translation.hpp"
 #include "solver/guards/run_guards.hpp"
+#include "solver/guards/strain_guard.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/errors.hpp"
 #include "solver/model.hpp"
 #include "solver/out_of_memory.hpp"
 #include "solver/output/exodus_writer.hpp"
 #include "solver/output/history_writer.hpp"
+#include "solver/output/output_folder.hpp"
 #include "solver/output/results_writer.hpp"
 #include "solver/output/run_log.hpp"
 #include "solver/output/schedule.hpp"
@@ -54,6 +56,7 @@ class DeckRun {
     }
     set_up("reading the restart state", [this] { start_from_restart(); });
     stop_before_outputs("before the output files were opened");
+    set_up("claiming the output folder", [this] { claim_output_folder(); });
     set_up("opening the output files", [this] { open_outputs(); });
     peak_rss_setup_ = parallel::peak_rss_bytes();  // set-up's high-water mark, before the loop adds to it
     try {
@@ -76,6 +79,9 @@ class DeckRun {
   // ---- stage 2: the integrator and the restart state ----
   void start_from_restart();
   // ---- stage 3: the output folder, history.csv, results.h5, restart output ----
+  void claim_output_folder();  // every check, the lock, the manifest, the earlier run's files removed (rank 0)
+  std::vector<std::string> deck_input_files() const;
+  void report_output_folder();  // log.txt: a stale lock taken over, files removed or kept
   void open_outputs();
   void choose_history_columns();
   void note_mpirun_signal_grace();  // the Open MPI kill delay that can cost a signalled run its restart file
@@ -139,13 +145,16 @@ class DeckRun {
   std::optional<mesh::Mesh> whole_mesh_;  // parallel runs, rank 0: kept until results.h5 holds it
   std::map<std::string, double> set_size_;  // node-set sizes of the whole mesh
   std::string mesh_hash_;                   // of the whole mesh (restart files)
+  std::string restart_run_id_;              // rank 0: the run id the restart file carries ("" none or legacy)
   // stage 2
   std::optional<CentralDifference> integrator_;
   std::optional<RunGuards> guards_;
   std::optional<BlockTranslation> block_translation_;
+  std::optional<StrainGuard> strain_guard_;
   std::optional<StateArchive> resume_;
   // stage 3
   std::filesystem::path out_;
+  std::optional<FolderClaim> folder_;  // rank 0: the lock and the manifest, held to the end of the run
   bool material_dissipation_ = false;
   std::vector<ColumnInfo> history_columns_;  // step, the standard columns present, the node-set columns
   std::optional<HistoryWriter> history_;

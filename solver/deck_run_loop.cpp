@@ -159,6 +159,10 @@ void DeckRun::write_outputs() {
   }
   guards_->observe(n, t, E, model_->contact ? &integrator_->contact_totals() : nullptr,
                    guards_->wants_sample(n) ? block_translation_->kinetic_energy(integrator_->velocity()) : 0.0);
+  if (strain_guard_->due(n) && n > 0) {
+    const StrainPeak peak = strain_guard_->peak(model_->blocks);
+    guards_->observe_strain(n, t, peak.value, peak.element, peak.block);
+  }
   if (terminal_ && seconds_since(last_progress_) > 0.5) {
     last_progress_ = Clock::now();
     std::fprintf(stderr, "\r  %s   ", progress_text(n, t, E.relative_error()).c_str());
@@ -173,8 +177,9 @@ void DeckRun::write_outputs() {
 void DeckRun::loop() {
   const double end_time = tc_.termination_time;
   integrator_->set_stress_request([this, end_time](double t, long n) {
-    return field_schedule_ && !region_.results->element_variables.empty() &&
-           field_schedule_->due(t, n, t >= end_time * (1 - 1e-14));
+    return (field_schedule_ && !region_.results->element_variables.empty() &&
+            field_schedule_->due(t, n, t >= end_time * (1 - 1e-14))) ||
+           strain_guard_->due(n);
   });
   row_.reserve(history_columns_.size());
   globals_.reserve(history_columns_.size());

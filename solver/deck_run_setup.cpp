@@ -14,7 +14,6 @@
 #include "solver/deck_run.hpp"
 #include "solver/errors.hpp"
 #include "solver/mpirun_grace.hpp"
-#include "solver/output/output_folder.hpp"
 #include "solver/output/summary_writer.hpp"
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/run_fingerprint.hpp"
@@ -24,6 +23,10 @@ namespace tribex::solver {
 void DeckRun::preflight() {
   fault_signal_point("setup");
   summary_.identity = identify_run(deck_.path, ranks_);
+  // The run id: a resumed run keeps the one of the run that wrote its restart file.
+  if (root_ && !options_.restart_path.empty()) restart_run_id_ = h5_run_id(options_.restart_path);
+  if (root_) summary_.identity.run_id = restart_run_id_.empty() ? new_run_id() : restart_run_id_;
+  if (ranks_ > 1) parallel::broadcast(summary_.identity.run_id, 0);
   log_.say(identity_line(summary_.identity));
   // Bad input is found here, before any file is written: one rank builds the whole model; in a
   // parallel run every rank builds its part (the same checks, an error stops every rank).
@@ -34,6 +37,7 @@ void DeckRun::preflight() {
   } else {
     build_parts();
   }
+  summary_.identity.mesh_sha256 = mesh_hash_;
   const Model& model = *model_;
   report_mesh(model);
   stable0_ = whole_model_stable_time_step(model);
@@ -181,9 +185,12 @@ void DeckRun::start_from_restart() {
   stop_before_outputs("after the model was built");
   // A restart file is read and checked against the model before any output file is touched.
   integrator_.emplace(*model_, tc_);
-  guards_.emplace(region_.guards, model_->setup, static_cast<long>(std::ceil(est_steps_)),
+  SetupFindings findings = model_->setup;
+  for (const auto& b : model_->blocks) findings.block_names.push_back(b.name);
+  guards_.emplace(region_.guards, std::move(findings), static_cast<long>(std::ceil(est_steps_)),
                   [this](const RunWarning& w) { announce(w); });
   block_translation_.emplace(*model_);
+  strain_guard_.emplace(model_->blocks, model_->domain.global_element);
   if (options_.restart_path.empty()) return;
   std::exception_ptr error;
   try {
@@ -204,19 +211,63 @@ void DeckRun::start_from_restart() {
                   integrator_->step_index(), integrator_->time()));
 }
 
+// The files the deck reads besides itself and its includes: the mesh file, the AFM height map, the
+// contact laws' data files (a fresh run never removes or replaces them, README.md "The output folder").
+std::vector<std::string> DeckRun::deck_input_files() const {
+  std::vector<std::string> files = deck_.files_read;
+  files.push_back(deck_.path);
+  for (const auto& m : deck_.models) {
+    files.push_back(m.database_path);
+    if (m.afm_surface) files.push_back(m.afm_surface->file);
+  }
+  if (region_.contact)
+    for (const auto& i : region_.contact->interactions)
+      for (const auto& [key, path] : i.values.paths) files.push_back(path);
+  return files;
+}
+
+void DeckRun::claim_output_folder() {
+  out_ = options_.output_directory;
+  std::exception_ptr error;
+  if (root_) {
+    try {
+      FolderRequest r;
+      r.folder = out_;
+      r.names = planned_output_names(region_.results && region_.results->xdmf, region_.results && region_.results->exodus,
+                                     region_.restart ? region_.restart->ring_size : 0);
+      r.inputs = deck_input_files();
+      const RunIdentity& id = summary_.identity;
+      r.identity = OutputManifest{id.run_id, id.deck_path, id.deck_sha256, mesh_hash_, id.started_utc, id.host, {}};
+      r.resume = resume_.has_value();
+      r.restart_path = options_.restart_path;
+      r.restart_run_id = restart_run_id_;
+      folder_.emplace(solver::claim_output_folder(r));
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  agree_on_errors(error);
+}
+
+void DeckRun::report_output_folder() {
+  const FolderClaim& f = *folder_;
+  if (!f.lock->stale_holder().empty())
+    log_.say("output folder " + out_.string() + ": took over the lock of a run that ended without releasing it (" +
+             f.lock->stale_holder() + ")");
+  if (!f.removed.empty())
+    log_.say(format("output folder %s: removed %zu file(s) of an earlier run (those its manifest lists, unchanged)",
+                    out_.string().c_str(), f.removed.size()));
+  for (const auto& name : f.kept_inputs)
+    log_.say("output folder " + out_.string() + ": kept the earlier run's " + name + ": the deck reads it");
+}
+
 void DeckRun::open_outputs() {
   namespace fs = std::filesystem;
-  out_ = options_.output_directory;
   std::exception_ptr output_error;  // files are made by rank 0; agreed on below
   if (root_) {
     try {
-      std::error_code ec;
-      const std::size_t cleared = resume_ ? 0 : clear_owned_outputs(out_);
-      fs::create_directories(options_.output_directory, ec);
-      if (ec) throw SetupError("cannot create output folder " + options_.output_directory + ": " + ec.message());
       log_.open((out_ / "log.txt").string(), resume_.has_value());
-      if (cleared) log_.say(format("output folder %s: removed %zu file(s) of an earlier run (outputs, restart files)",
-                                   out_.string().c_str(), cleared));
+      report_output_folder();
       log_.record("# resolved deck (defaults filled in, SI units)\n" + deck_.resolved_text + "\n");
     } catch (...) {
       output_error = std::current_exception();
@@ -260,7 +311,7 @@ void DeckRun::open_outputs() {
     earlier_wall_seconds_ = resume_->has("run_wall_seconds") ? resume_->scalar("run_wall_seconds") : NAN;
     earlier_loop_seconds_ = resume_->has("run_loop_seconds") ? resume_->scalar("run_loop_seconds") : NAN;
   }
-  if (region_.restart) restart_output_.emplace(*region_.restart, out_.string());
+  if (region_.restart) restart_output_.emplace(*region_.restart, out_.string(), summary_.identity.run_id);
   if (region_.restart) note_mpirun_signal_grace();
   // summary.json's space is taken before the loop (solver/output/summary_writer.hpp); agreed, as it can fail.
   std::exception_ptr reserve_error;
@@ -272,6 +323,13 @@ void DeckRun::open_outputs() {
     }
   }
   agree_on_errors(reserve_error);
+  if (root_) {
+    try {
+      record_written_files(out_, folder_->manifest);
+    } catch (const SetupError& e) {
+      log_.say(std::string("warning: ") + e.what());  // a later fresh run then keeps those files (safe)
+    }
+  }
 }
 
 // Under mpirun a SIGTERM or SIGINT leaves the ranks 2 x odls_base_sigkill_timeout to stop
@@ -325,7 +383,7 @@ void DeckRun::open_results() {
     const auto resume_time = resume_ ? std::optional<double>(integrator_->time()) : std::nullopt;
     if (region_.results->xdmf)
       results_ = std::make_unique<ResultsWriter>(out_.string(), mesh, ranks_ > 1 ? &slab_ : nullptr, resume_time,
-                                                 ResultsOptions{region_.results->length_unit});
+                                                 ResultsOptions{region_.results->length_unit, 1, summary_.identity.run_id, mesh_hash_});
     if (region_.results->exodus) {
       std::vector<std::string> globals;  // the history columns, `step` first
       for (const auto& c : history_columns_) globals.push_back(c.name);

@@ -129,18 +129,28 @@ std::vector<std::string> MassScalingReport::lines() const {
                                     b.mass, b.largest_scale)
                            : format("  block %-16s not scaled (not in 'blocks')", b.name.c_str()));
   if (contact_nodes > 0)
-    out.push_back(format("  contact surfaces: %d nodes raised to %.3g x their unscaled mass (s (dt / dt_0)^2 / max(s, 2): "
-                         "the unscaled penalty within its stability cap at the scaled step), added %.6g kg",
+    out.push_back(format("  contact surfaces: %d nodes raised to %.3g x their unscaled mass ((dt / dt_0)^2: the unscaled "
+                         "penalty and the nodes' own elements at the scaled step as unscaled), added %.6g kg",
                          contact_nodes, contact_mass_factor, contact_added_mass));
   return out;
 }
 
 std::string MassScalingReport::limit_message() const {
+  // The largest contributors first, each as a share of the model's mass, so the user sees what to restrict.
+  std::vector<std::pair<double, std::string>> parts;
+  for (const auto& b : blocks)
+    if (b.added_mass > 0.0) parts.emplace_back(b.added_mass, "block '" + b.name + "'");
+  if (contact_added_mass > 0.0) parts.emplace_back(contact_added_mass, "the contact surface nodes");
+  std::sort(parts.begin(), parts.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::string from;
+  for (std::size_t k = 0; k < parts.size() && k < 3; ++k)
+    from += format("%s%s %.3g %%", k ? ", " : "", parts[k].second.c_str(), 100 * parts[k].first / unscaled_mass);
   return format("mass scaling adds %.6g kg, %.3g %% of the model's %.6g kg, above 'maximum added mass fraction' %.3g %% "
-                "(target time step %.6g s): the added inertia would change the response; lower the target, restrict "
-                "'blocks', or raise the limit knowingly",
+                "(target time step %.6g s, %.3g x the unscaled step): most from %s; the added inertia would change "
+                "the response; lower the target (the added mass grows about as its square), restrict 'blocks', or "
+                "raise the limit knowingly",
                 added_mass, 100 * added_fraction(), unscaled_mass, 100 * maximum_added_mass_fraction,
-                target_time_step);
+                target_time_step, target_time_step / unscaled_time_step, from.c_str());
 }
 
 }  // namespace tribex::solver

@@ -240,19 +240,18 @@ SurfaceValues surface_values(const Model& model, const ContactFaces& faces, cons
   return v;
 }
 
-// The contact surface nodes of a mass-scaled run raised to s (dt / dt_0)^2 / max(s, 2) times their
-// unscaled mass (solver/mass_scaling.hpp raise_contact_node_masses; s the penalty scale factor), counted in
-// the report over the ranks. `mass` and `unscaled_mass` are summed over the ranks already, so every copy
-// of a shared node gets the same value.
-void raise_contact_masses(Model& model, const ContactFaces& faces, const std::vector<double>& unscaled_mass, double dt,
-                          double penalty_scale) {
+// The contact surface nodes of a mass-scaled run raised to (dt / dt_0)^2 times their unscaled mass
+// (solver/mass_scaling.hpp raise_contact_node_masses; docs/theory.md 1.4.1), counted in the report over
+// the ranks. `mass` and `unscaled_mass` are summed over the ranks already, so every copy of a shared node
+// gets the same value.
+void raise_contact_masses(Model& model, const ContactFaces& faces, const std::vector<double>& unscaled_mass, double dt) {
   const auto& d = model.domain;
   std::vector<int> nodes;
   for (int g : faces.global_node)
     if (const int l = d.local_node(g); l >= 0) nodes.push_back(l);
   MassScalingReport& r = model.mass_scaling;
   const double ratio = dt / r.unscaled_time_step;
-  r.contact_mass_factor = penalty_scale * ratio * ratio / contact::ContactManager::scaled_penalty_cap(penalty_scale);
+  r.contact_mass_factor = ratio * ratio;
   const ContactMassRaise raised = raise_contact_node_masses(nodes, unscaled_mass, r.contact_mass_factor, d.owned, model.mass);
   double sums[2] = {raised.added_mass, double(raised.nodes)};
   parallel::sum(sums, 2);
@@ -507,7 +506,7 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
                                tc.maximum_time_step.value_or(INFINITY));
     const ContactFaces own = faces ? ContactFaces{} : contact_faces(m, *region.contact);
     const ContactFaces& f = faces ? *faces : own;
-    if (model.mass_scaling.active) raise_contact_masses(model, f, unscaled_mass, dt, region.contact->penalty_scale_factor);
+    if (model.mass_scaling.active) raise_contact_masses(model, f, unscaled_mass, dt);
     SurfaceValues v = surface_values(model, f, unscaled_mass);
     model.contact = build_contact(*region.contact, model, {f, v.mass, std::move(v.prescribed)}, dt, &model.preflight,
                                   &model.setup);
@@ -517,10 +516,9 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
     if (model.mass_scaling.active) {
       model.contact->set_unscaled_penalty_reference(std::move(unscaled_mass), model.mass_scaling.unscaled_time_step);
       model.preflight.push_back(
-          format("  contact penalty from the unscaled masses and step %.6g s (mass scaling), capped at "
-                 "k dt^2 / m_eff = %.3g on the scaled ones",
-                 model.mass_scaling.unscaled_time_step,
-                 contact::ContactManager::scaled_penalty_cap(region.contact->penalty_scale_factor)));
+          format("  contact penalty from the unscaled masses and step %.6g s (mass scaling): k dt^2 / m_eff = %.3g "
+                 "(the penalty scale factor) on the scaled ones, as unscaled",
+                 model.mass_scaling.unscaled_time_step, region.contact->penalty_scale_factor));
     }
   }
   // The counters report the loop's messages (summary.json rank_counts, per step): set-up's sums are not among them.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/errors.hpp"
+#include "solver/guards/strain_guard.hpp"
 #include "solver/output/output_tables.hpp"
 #include "solver/output/run_log.hpp"
 #include "solver/restart/state_archive.hpp"
@@ -42,17 +43,78 @@ const char* kind_name(WarningKind kind) {
     case WarningKind::contact_motion: return "contact_motion";
     case WarningKind::adhesion_cutoff: return "adhesion_cutoff";
     case WarningKind::unsafe_choice: return "unsafe_choice";
+    case WarningKind::large_strain: return "large_strain";
   }
   return "unknown";
 }
 
-std::string describe(const RunWarning& w, const std::string& one_point_contact) {
+const char* source_name(EnergySource source) {
+  switch (source) {
+    case EnergySource::none: return "";
+    case EnergySource::contact: return "contact_work";
+    case EnergySource::hourglass: return "hourglass_energy";
+    case EnergySource::viscous: return "viscous_dissipation";
+    case EnergySource::damping: return "damping_dissipation";
+    case EnergySource::silent_boundary: return "silent_boundary_dissipation";
+    case EnergySource::plastic: return "plastic_dissipation";
+    case EnergySource::kinetic: return "kinetic_energy";
+  }
+  return "";
+}
+
+namespace {
+
+// The energy warning's likely source in words, with what to change (solver/guards/README.md).
+std::string source_text(const RunWarning& w, const WarningContext& c) {
+  const std::string since = format("since step %ld", w.since_step);
+  switch (w.source) {
+    case EnergySource::none:
+      return "see contact_work and the dissipation columns of history.csv";
+    case EnergySource::contact:
+      return format("likely source: the contact (interaction %s) gave %.3g J to the bodies %s (contact_work fell): "
+                    "contact nodes chatter or snap through; ",
+                    c.contact_interactions.c_str(), w.source_change, since.c_str()) +
+             (c.mass_scaled ? "with mass scaling compare the unscaled run and lower 'largest factor' (the contact "
+                              "surfaces' mass raise is in log.txt); "
+                            : "") +
+             "lower 'penalty scale factor', refine the contact surfaces or use 'enforcement = mortar'";
+    case EnergySource::hourglass:
+      return format("likely source: hourglass energy grew %.3g J %s: hourglass modes of one-point (mean_quadrature) "
+                    "elements; use 'formulation = fully_integrated' where the load is concentrated",
+                    w.source_change, since.c_str());
+    case EnergySource::viscous:
+      return format("likely source: bulk and hourglass viscosity dissipated %.3g J %s: a high-frequency ring (contact "
+                    "chatter, a shock or an abrupt drive); smooth the drive, look at contact_work",
+                    w.source_change, since.c_str());
+    case EnergySource::damping:
+      return format("likely source: mass damping dissipated %.3g J %s: check 'mass damping coefficient' against the "
+                    "drive (it damps rigid motion too)",
+                    w.source_change, since.c_str());
+    case EnergySource::silent_boundary:
+      return format("likely source: the silent boundaries absorbed %.3g J %s: check which faces carry them",
+                    w.source_change, since.c_str());
+    case EnergySource::plastic:
+      return format("likely source: plastic dissipation grew %.3g J %s: check the yield data and the step",
+                    w.source_change, since.c_str());
+    case EnergySource::kinetic:
+      return format("likely source: kinetic energy grew %.3g J %s%s", w.source_change, since.c_str(),
+                    c.mass_scaled ? ": the added mass of 'begin mass scaling' made the run dynamic; lower the factor or "
+                                    "drive slower"
+                                  : ": drive slower or damp");
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string describe(const RunWarning& w, const WarningContext& context) {
   std::string what;
   switch (w.kind) {
     case WarningKind::energy_error:
       what = format("energy balance error %.3g %% at %s is above 'energy error warning' %.3g %%: energy is not "
-                    "conserved; see contact_work and the dissipation columns of history.csv",
-                    100 * w.value, where(w.step, w.time).c_str(), 100 * w.threshold);
+                    "conserved; ",
+                    100 * w.value, where(w.step, w.time).c_str(), 100 * w.threshold) +
+             source_text(w, context);
       break;
     case WarningKind::penetration:
       what = format("contact penetration %.3g of the local element size at node %d, %s, is above 'penetration "
@@ -78,8 +140,18 @@ std::string describe(const RunWarning& w, const std::string& one_point_contact) 
                     "one-point (mean_quadrature) elements under node-to-face penalty contact (%s): their point forces "
                     "excite hourglass modes (energy injected, elements invert); use 'formulation = fully_integrated' "
                     "for the contact blocks or 'enforcement = mortar'",
-                    w.value, w.node + 1, where(w.step, w.time).c_str(), one_point_contact.c_str());
+                    w.value, w.node + 1, where(w.step, w.time).c_str(), context.one_point_contact.c_str());
       break;
+    case WarningKind::large_strain: {
+      const auto& names = context.block_names;
+      const std::string block = w.block >= 0 && w.block < static_cast<int>(names.size())
+                                    ? names[static_cast<std::size_t>(w.block)] : std::string("?");
+      what = format("block '%s' (small-strain elastic) reached a principal strain of %.3g at element %d, %s, above %.3g: "
+                    "the small-strain law is accurate, and rotation-invariant, only for small strains; give the block's "
+                    "material 'begin parameters for model neo_hookean' (finite strain)",
+                    block.c_str(), w.value, w.node + 1, where(w.step, w.time).c_str(), w.threshold);
+      break;
+    }
     default:
       return w.message;  // set-up warnings carry their own text
   }
@@ -96,7 +168,9 @@ RunGuards::RunGuards(const inputs::GuardSpec& spec, SetupFindings setup, long ex
       penetration_{WarningKind::penetration, spec.penetration_warning},
       motion_{WarningKind::contact_motion, spec.contact_motion_warning},
       one_point_{WarningKind::unsafe_choice, one_point_penetration},
-      one_point_contact_(std::move(setup.one_point_contact)) {
+      strain_{WarningKind::large_strain, small_strain_warning},
+      context_{std::move(setup.one_point_contact), std::move(setup.contact_interactions), setup.mass_scaled,
+               std::move(setup.block_names)} {
   warnings_.reserve(warnings_.size() + 8);  // the run-time kinds, each at most once
   if (spec_.quasi_static) {
     sustained_steps_ = std::max(1L, static_cast<long>(std::ceil(sustained_fraction * double(expected_steps))));
@@ -106,7 +180,11 @@ RunGuards::RunGuards(const inputs::GuardSpec& spec, SetupFindings setup, long ex
   }
 }
 
-void RunGuards::watch(Watch& w, long step, double t, double value, int node) {
+void RunGuards::observe_strain(long step, double t, double value, int element, int block) {
+  watch(strain_, step, t, value, element, block);
+}
+
+void RunGuards::watch(Watch& w, long step, double t, double value, int node, int block) {
   if (!(value > w.threshold)) return;
   if (w.entry < 0) {
     RunWarning r;
@@ -116,6 +194,8 @@ void RunGuards::watch(Watch& w, long step, double t, double value, int node) {
     r.value = r.max_value = value;
     r.threshold = w.threshold;
     r.node = node;
+    r.block = block;
+    if (w.kind == WarningKind::energy_error && observed_) attribute(*observed_, r);
     r.message = text(r);
     w.entry = static_cast<int>(warnings_.size());
     warnings_.push_back(std::move(r));
@@ -130,18 +210,56 @@ void RunGuards::watch(Watch& w, long step, double t, double value, int node) {
   }
 }
 
+// The term of the ledger that changed most since the error was last below half the warning, among those
+// that carry energy out of the balance's conservative part (contact, hourglass, the dissipations) and the
+// kinetic energy. The contact is named first when it gave the bodies energy (contact_work fell) by at least a
+// quarter of the largest change: an elastic penalty contact only stores k g^2 / 2 >= 0 (plus the adhesion
+// energy, which a chattering contact does not release), so a falling contact_work means injection, and the
+// viscosity that takes the resulting ring out appears beside it (issue 51: -2.7e-19 J and +2.8e-19 J).
+void RunGuards::attribute(const Energies& now, RunWarning& w) const {
+  const Energies& c = clean_;
+  const std::pair<EnergySource, double> changes[] = {
+      {EnergySource::contact, c.contact_work - now.contact_work},
+      {EnergySource::hourglass, now.hourglass - c.hourglass},
+      {EnergySource::viscous, now.viscous_dissipation - c.viscous_dissipation},
+      {EnergySource::damping, now.damping_dissipation - c.damping_dissipation},
+      {EnergySource::silent_boundary, now.silent_boundary_dissipation - c.silent_boundary_dissipation},
+      {EnergySource::plastic, now.plastic_dissipation - c.plastic_dissipation},
+      {EnergySource::kinetic, now.kinetic - c.kinetic},
+  };
+  double largest = 0.0;
+  for (const auto& [source, change] : changes) largest = std::max(largest, std::abs(change));
+  w.since_step = clean_step_;
+  if (!(largest > 0.0)) return;
+  const double contact_gave = changes[0].second;
+  const bool contact_injected = !context_.contact_interactions.empty() && contact_gave >= 0.25 * largest;
+  const auto& [source, change] =
+      contact_injected ? changes[0]
+                       : *std::max_element(std::begin(changes), std::end(changes), [](const auto& a, const auto& b) {
+                           return std::abs(a.second) < std::abs(b.second);
+                         });
+  w.source = source;
+  w.source_change = change;
+}
+
 void RunGuards::observe(long step, double t, const Energies& energies, const contact::ContactTotals* contact,
                         double translational_kinetic) {
   if (step > 0) {
     const double error = energies.relative_error();
+    observed_ = &energies;
     watch(energy_, step, t, error, -1);
+    observed_ = nullptr;
+    if (!(error > 0.5 * energy_.threshold)) {
+      clean_ = energies;
+      clean_step_ = step;
+    }
     if (spec_.energy_error_limit && error > *spec_.energy_error_limit)
       throw NumericalFailure(format("energy error %.3g exceeds the limit %.3g of the deck at step %ld, t = %.6g s",
                                     error, *spec_.energy_error_limit, step, t));
   }
   if (contact) {
     watch(penetration_, step, t, contact->max_penetration_ratio, contact->penetration_node);
-    if (!one_point_contact_.empty()) watch(one_point_, step, t, contact->max_penetration_ratio, contact->penetration_node);
+    if (!context_.one_point_contact.empty()) watch(one_point_, step, t, contact->max_penetration_ratio, contact->penetration_node);
     watch(motion_, step, t, contact->motion_ratio, contact->motion_node);
     if (contact->motion_ratio > spec_.contact_motion_limit)
       throw NumericalFailure(format("contact surfaces moved %.3g capture distances in one step (node %d) at step %ld, "
@@ -192,7 +310,7 @@ void RunGuards::watch_sustained_kinetic(long step, double t, double kinetic, dou
 std::string RunGuards::finish() {
   const std::string failure = scan_quasi_static();
   // The messages of summary.json carry each warning's largest value.
-  for (const Watch* w : {&energy_, &penetration_, &motion_, &one_point_})
+  for (const Watch* w : {&energy_, &penetration_, &motion_, &one_point_, &strain_})
     if (w->entry >= 0) entry(*w).message = text(entry(*w));
   return failure;
 }
@@ -226,7 +344,7 @@ std::string RunGuards::scan_quasi_static() {
 
 void RunGuards::save(StateArchive& archive) const {
   std::vector<double> flat;
-  for (const Watch* w : {&energy_, &penetration_, &motion_, &one_point_}) {
+  for (const Watch* w : {&energy_, &penetration_, &motion_, &one_point_, &strain_}) {
     if (w->entry < 0) continue;
     append_stored(warning_fields(), warnings_[static_cast<std::size_t>(w->entry)], flat);
   }
@@ -249,7 +367,7 @@ void RunGuards::restore(const StateArchive& archive) {
     RunWarning r;
     restore_stored(warning_fields(), flat.data() + i, r);
     r.message = text(r);
-    for (Watch* w : {&energy_, &penetration_, &motion_, &one_point_})
+    for (Watch* w : {&energy_, &penetration_, &motion_, &one_point_, &strain_})
       if (w->kind == r.kind) w->entry = static_cast<int>(warnings_.size());
     warnings_.push_back(std::move(r));
   }

@@ -17,9 +17,16 @@ namespace tribex::solver {
 
 class StateArchive;
 
-/// The message of a run-time warning from its numbers (also for warnings read back from a restart file);
-/// `one_point_contact` names the interactions and blocks of an unsafe_choice raised in the run.
-std::string describe(const RunWarning& w, const std::string& one_point_contact = "");
+/// What the messages name beside a warning's numbers (SetupFindings' texts).
+struct WarningContext {
+  std::string one_point_contact;     // the interactions and blocks of an unsafe_choice raised in the run
+  std::string contact_interactions;  // the energy warning's contact source
+  bool mass_scaled = false;
+  std::vector<std::string> block_names;  // the model's blocks, for large_strain
+};
+
+/// The message of a run-time warning from its numbers (also for warnings read back from a restart file).
+std::string describe(const RunWarning& w, const WarningContext& context = {});
 
 /// Contact penetration, in local element sizes, that marks high pressure for one-point elements under
 /// node-to-face penalty contact (solver/guards/README.md).
@@ -37,6 +44,10 @@ class RunGuards {
   /// (BlockTranslation), needed on the steps where wants_sample() is true.
   void observe(long step, double t, const Energies& energies, const contact::ContactTotals* contact,
                double translational_kinetic = 0.0);
+
+  /// Every StrainGuard stride: the largest principal strain of the small-strain elastic blocks (solver/guards/
+  /// strain_guard.hpp), warned once past small_strain_warning naming the block.
+  void observe_strain(long step, double t, double value, int element, int block);
 
   /// Whether this step's observe takes a quasi-static sample (and so needs translational_kinetic).
   bool wants_sample(long step) const { return spec_.quasi_static && step % stride_ == 0; }
@@ -59,18 +70,24 @@ class RunGuards {
     double threshold;
     int entry = -1;  // index in warnings_ once raised
   };
-  void watch(Watch& w, long step, double t, double value, int node);
+  void watch(Watch& w, long step, double t, double value, int node, int block = -1);
+  /// The energy warning's likely source from the ledger's change since clean_ (run_guards.cpp).
+  void attribute(const Energies& now, RunWarning& w) const;
   std::string scan_quasi_static();
   /// The mid-run stop of `maximum kinetic energy ratio` (run_guards.cpp, sustained_fraction); throws.
   void watch_sustained_kinetic(long step, double t, double kinetic, double internal);
   RunWarning& entry(const Watch& w) { return warnings_[static_cast<std::size_t>(w.entry)]; }
-  std::string text(const RunWarning& w) const { return describe(w, one_point_contact_); }
+  std::string text(const RunWarning& w) const { return describe(w, context_); }
 
   inputs::GuardSpec spec_;
   std::vector<RunWarning> warnings_;
   std::function<void(const RunWarning&)> say_;
-  Watch energy_, penetration_, motion_, one_point_;
-  std::string one_point_contact_;  // SetupFindings::one_point_contact
+  Watch energy_, penetration_, motion_, one_point_, strain_;
+  WarningContext context_;  // from SetupFindings
+  // The ledger at the last step whose energy error was at most half the warning (the attribution's base).
+  Energies clean_;
+  long clean_step_ = 0;
+  const Energies* observed_ = nullptr;  // this step's ledger while observe() runs (for attribute)
   // Quasi-static samples (step, t, kinetic, internal) every stride_ steps; thinned in place when full.
   std::vector<double> samples_;
   std::size_t capacity_ = 0;

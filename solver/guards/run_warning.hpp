@@ -15,10 +15,18 @@ enum class WarningKind {
   contact_motion,   // one-step surface motion / capture distance above `contact motion warning`
   adhesion_cutoff,  // set-up: the adhesion law's cut-off keeps less than 99 % of W
   unsafe_choice,    // a choice known to be unsafe, once the run reaches where it is (see SetupFindings)
+  large_strain,     // a small-strain elastic block's largest principal strain above small_strain_warning
 };
 
 /// The name written to summary.json and the log ("energy_error", ...).
 const char* kind_name(WarningKind kind);
+
+/// The energy ledger's term an energy-balance warning names as its likely source (RunGuards: the
+/// largest change of the contact and dissipation terms since the error was last below half the warning).
+enum class EnergySource { none, contact, hourglass, viscous, damping, silent_boundary, plastic, kinetic };
+
+/// The name written to summary.json ("contact_work", ...; "" for none).
+const char* source_name(EnergySource source);
 
 struct RunWarning {
   WarningKind kind = WarningKind::energy_error;
@@ -29,7 +37,14 @@ struct RunWarning {
   double max_value = 0.0;  // largest value over the run (or the window checked)
   long max_step = 0;
   double max_time = 0.0;   // s
-  int node = -1;           // global node (0-based) the value was measured at, -1: none
+  int node = -1;           // global node (0-based) the value was measured at, -1: none (large_strain: the element)
+  int block = -1;          // large_strain: the block (index in the model's blocks), -1: none
+  // energy_error only: the likely source, its term's change since `since_step` (J; the contact's: the
+  // energy it gave the bodies, so positive when it injected) and the step the error was last below half
+  // the warning.
+  EnergySource source = EnergySource::none;
+  double source_change = 0.0;
+  long since_step = 0;
   std::string message;     // one line: what, where, and what to change
 };
 
@@ -40,6 +55,10 @@ struct SetupFindings {
   // Node-to-face penalty contact on one-point (mean_quadrature) elements, "interaction 'i' on block
   // 'a', 'b'" (empty: none): raised as unsafe_choice when the contact penetration shows high pressure.
   std::string one_point_contact;
+  // The contact interactions ("'a', 'b'"), for the energy warning's source; empty without contact.
+  std::string contact_interactions;
+  bool mass_scaled = false;  // `begin mass scaling`: the energy warning's contact hint names the surfaces' raise
+  std::vector<std::string> block_names;  // the model's blocks, in order (the large_strain warning names one)
 };
 
 }  // namespace tribex::solver

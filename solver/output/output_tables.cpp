@@ -89,6 +89,22 @@ std::span<const Field<RunWarning>> warning_fields() {
         f.json = [](const W& w) { return w.node >= 0 ? std::to_string(w.node + 1) : std::string("null"); };
         return f;
       }(),
+      [] {
+        auto f = field<&W::source>("source", "", "energy_error: the ledger term named as the likely source (null: none)");
+        f.json = [](const W& w) {
+          return w.source == EnergySource::none ? std::string("null") : json_string(source_name(w.source));
+        };
+        return f;
+      }(),
+      field<&W::source_change>("source_change", "J",
+                               "energy_error: that term's change since since_step (contact_work: the energy the contact "
+                               "gave the bodies)"),
+      [] {
+        auto f = field<&W::block>("block", "", "large_strain: the block's index in the deck's order (null: none)");
+        f.json = [](const W& w) { return w.block >= 0 ? std::to_string(w.block) : std::string("null"); };
+        return f;
+      }(),
+      field<&W::since_step>("since_step", "count", "energy_error: the step the error was last below half the warning"),
       {"message", "", "one line: what, where, and what to change", nullptr, nullptr,
        [](const W& w) { return json_string(w.message); }},
   };
@@ -156,6 +172,11 @@ std::span<const Field<RunSummary>> summary_fields() {
       }),
       text("started", "start time, ISO 8601 UTC", [](const R& s) { return json_string(s.identity.started_utc); }),
       text("host", "host name", [](const R& s) { return json_string(s.identity.host); }),
+      text("run_id", "the run's identity (32 hex digits; kept by the runs resumed from its restart files), also in "
+                     "log.txt, results.h5, the restart files and the output folder's .tribex_manifest.json",
+           [](const R& s) { return json_string(s.identity.run_id); }),
+      text("mesh_sha256", "SHA-256 of the mesh's coordinates and connectivity (restart files check it)",
+           [](const R& s) { return json_string(s.identity.mesh_sha256); }),
       field<&R::steps>("steps", "count", "step index at the end"),
       field<&R::final_time>("final_time", "s", "simulated time at the end"),
       field<&R::nodes>("nodes", "count", "nodes of the mesh"),
@@ -206,7 +227,7 @@ std::span<const Field<RunSummary>> summary_fields() {
       text("mass_scaling",
            "begin mass scaling (null without): target and unscaled time step (s), unscaled and added mass (kg), the "
            "added fraction (the contact surface nodes' included), the contact surface nodes raised, their mass factor "
-           "s (dt / dt_0)^2 / max(s, 2) and added mass (kg), and per block the scaled elements, mass, added mass and largest density "
+           "(dt / dt_0)^2 and added mass (kg), and per block the scaled elements, mass, added mass and largest density "
            "factor",
            [](const R& s) {
              const MassScalingReport& m = s.mass_scaling;

@@ -346,6 +346,10 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   if (impl_->parallel) H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL);
   if (resume_time && std::filesystem::file_size(impl_->h5_path) > 0 && impl_->open_for_resume(fapl.get(), *resume_time)) {
+    const std::string file_run = output::read_string_attribute(impl_->file.get(), "run_id");
+    if (!options.run_id.empty() && !file_run.empty() && file_run != options.run_id)
+      throw SetupError("cannot continue '" + impl_->h5_path + "': it is the results file of run " + file_run +
+                       ", not of run " + options.run_id + " that wrote the restart file; resume into another output folder (-o)");
     flush();
     return;
   }
@@ -363,6 +367,8 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
                                    "hex8 as VTK_HEXAHEDRON / docs/theory.md 2.1, 0-based node indices", p);
     // The unit of the coordinates and of every length field (readers: README "Units").
     output::write_string_attribute(f, "length_unit", impl_->unit.name, p);
+    if (!options.run_id.empty()) output::write_string_attribute(f, "run_id", options.run_id, p);
+    if (!options.mesh_sha256.empty()) output::write_string_attribute(f, "mesh_sha256", options.mesh_sha256, p);
     // Parallel: the mesh is written once, by rank 0 (the others take part with no rows).
     const auto write_all = [&](hid_t d, hid_t type, const void* data, hsize_t rows, hsize_t cols, const std::string& what) {
       if (!impl_->parallel) return output::write_rows(d, type, data, 0, rows, cols, what);

@@ -33,6 +33,8 @@ struct FieldView {
 struct ResultsOptions {
   std::string length_unit = "auto";  // m, um, nm, or auto (nm under 1 um, um under 1 mm, else m)
   int gzip_level = 1;                // 0: contiguous, uncompressed; 1..9: chunked, shuffle + deflate
+  std::string run_id = "";           // the run's identity, root attributes `run_id` and `mesh_sha256` ("" : none);
+  std::string mesh_sha256 = "";      // a resumed file of another run is refused
 };
 
 /// Parallel runs: the rows of the global node and element arrays this rank writes, as runs

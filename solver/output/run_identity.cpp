@@ -34,7 +34,7 @@ RunIdentity identify_run(const std::string& deck_path, int ranks) {
 }
 
 std::string identity_line(const RunIdentity& id) {
-  return "tribex " + id.version + " | deck " + id.deck_path +
+  return "tribex " + id.version + " | run " + id.run_id + " | deck " + id.deck_path +
          (id.deck_sha256.empty() ? std::string() : " (sha256 " + id.deck_sha256 + ")") + " | started " +
          id.started_utc + " on " + (id.host.empty() ? std::string("an unnamed host") : id.host) + " | " +
          std::to_string(id.ranks) + (id.ranks == 1 ? " rank" : " ranks") + " | energies in J";

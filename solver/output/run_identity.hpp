@@ -14,11 +14,13 @@ struct RunIdentity {
   std::string started_utc;  // ISO 8601, e.g. 2026-11-24T16:20:05Z
   std::string host;         // gethostname()
   int ranks = 1;            // MPI ranks
+  std::string run_id;       // 32 hex digits, random; a run resumed from a restart file keeps its run's
+  std::string mesh_sha256;  // of the mesh's coordinates and connectivity (solver/restart/run_fingerprint.hpp)
 };
 
 RunIdentity identify_run(const std::string& deck_path, int ranks);
 
-/// One log line: "tribex VERSION | deck PATH (sha256 ...) | started ... on HOST | N rank(s) | energies in J".
+/// One log line: "tribex VERSION | run RUNID | deck PATH (sha256 ...) | started ... on HOST | N rank(s) | energies in J".
 std::string identity_line(const RunIdentity& id);
 
 }  // namespace tribex::solver

@@ -65,7 +65,7 @@ herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data)
 
 }  // namespace
 
-void write_restart_file(const std::string& path, const StateArchive& archive) {
+void write_restart_file(const std::string& path, const StateArchive& archive, const std::string& run_id) {
   output::QuietHdf5Errors quiet;
   const std::string part = path + ".part";
   int failed = 0;
@@ -79,6 +79,7 @@ void write_restart_file(const std::string& path, const StateArchive& archive) {
         if (r == 0) {
           output::write_double_attribute(file.get(), "ranks", parallel::size(), part);
           output::write_double_attribute(file.get(), "format_version", kRestartFormatVersion, part);
+          if (!run_id.empty()) output::write_string_attribute(file.get(), "run_id", run_id, part);
         }
         write_group(file.get(), archive, part);
       } catch (const std::exception&) {

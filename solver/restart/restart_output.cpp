@@ -7,8 +7,8 @@
 
 namespace tribex::solver {
 
-RestartOutput::RestartOutput(const inputs::RestartOutputSpec& spec, std::string directory)
-    : spec_(spec), directory_(std::move(directory)), last_write_(std::chrono::steady_clock::now()) {}
+RestartOutput::RestartOutput(const inputs::RestartOutputSpec& spec, std::string directory, std::string run_id)
+    : spec_(spec), directory_(std::move(directory)), run_id_(std::move(run_id)), last_write_(std::chrono::steady_clock::now()) {}
 
 bool RestartOutput::due(long step) {
   if (spec_.step_increment && step % *spec_.step_increment == 0) return true;
@@ -24,7 +24,7 @@ bool RestartOutput::due(long step) {
 std::string RestartOutput::write(const StateArchive& archive) {
   namespace fs = std::filesystem;
   const fs::path file = fs::path(directory_) / ("restart_" + std::to_string(next_slot_) + ".h5");
-  write_restart_file(file.string(), archive);
+  write_restart_file(file.string(), archive, run_id_);
   if (parallel::is_root()) {
     // restart.h5 -> newest file of the ring, replaced atomically (link under a temporary name, rename).
     const fs::path latest = fs::path(directory_) / "restart.h5", tmp = fs::path(directory_) / "restart.h5.link";

@@ -15,7 +15,8 @@ namespace tribex::solver {
 
 class RestartOutput {
  public:
-  RestartOutput(const inputs::RestartOutputSpec& spec, std::string directory);
+  /// run_id: written into every restart file (attribute `run_id`), so that a resumed run knows its run.
+  RestartOutput(const inputs::RestartOutputSpec& spec, std::string directory, std::string run_id);
 
   /// Is a restart file due after `step`? Collective in a parallel run (rank 0's wall clock decides).
   bool due(long step);
@@ -25,6 +26,7 @@ class RestartOutput {
  private:
   inputs::RestartOutputSpec spec_;
   std::string directory_;
+  std::string run_id_;
   int next_slot_ = 0;
   std::chrono::steady_clock::time_point last_write_;
 };

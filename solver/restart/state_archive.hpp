@@ -65,7 +65,9 @@ struct StateArchive {
 /// Writes `archive` of this rank into group /rank_<rank> of `path` (rank 0 creates the file; the
 /// ranks then write one after the other), through `path`.part and a rename so that a crash never
 /// leaves a half-written restart file under its final name. Collective over the run's ranks.
-void write_restart_file(const std::string& path, const StateArchive& archive);
+/// run_id (may be ""): the run's identity, a string attribute `run_id` on the file (README.md "The
+/// output folder"): a resumed run keeps it, and continues only that run's output folder.
+void write_restart_file(const std::string& path, const StateArchive& archive, const std::string& run_id = "");
 
 /// Reads this rank's group. Throws SetupError (exit 2) when the file is missing or unreadable,
 /// or was written by a different number of ranks.

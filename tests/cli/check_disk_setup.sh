@@ -16,4 +16,4 @@ umount "$d"
 cat "$d.txt"
 echo "exit $rc, summary.json $summary"
 test $rc -eq 2 && test $summary = absent && ! grep -q "fix its permissions" "$d.txt" &&
-  grep -q "^error: .*no space left on device ([0-9]* bytes free in [^)]*$d/out) while writing " "$d.txt"
+  grep -q "^error: .*no space left on device ([0-9]* bytes free in [^)]*$d/out)" "$d.txt"

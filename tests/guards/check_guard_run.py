@@ -5,7 +5,7 @@ promises: the exit code, a valid summary.json whose warnings list holds the expe
 history.csv (header and numeric rows), and log.txt with a `warning:` line per run-time warning and the
 closing line.
 
-  check_guard_run.py OUT --exit CODE --kinds KIND ... [--says TEXT]
+  check_guard_run.py OUT --exit CODE --kinds KIND ... [--says TEXT] [--source TERM]
 """
 import argparse
 import csv
@@ -21,6 +21,7 @@ def main():
     ap.add_argument("--exit", type=int, required=True, dest="code", help="the exit code in summary.json")
     ap.add_argument("--kinds", nargs="*", required=True, help="warning kinds the list must hold (exactly)")
     ap.add_argument("--says", default="", help="text the closing line of log.txt must contain")
+    ap.add_argument("--source", help="the ledger term the energy_error warning must name (e.g. contact_work)")
     a = ap.parse_args()
     failures = []
     with open(os.path.join(a.out, "summary.json")) as f:
@@ -35,6 +36,10 @@ def main():
             failures.append(f"{w['kind']}: value {w['value']} / max {w['max_value']} vs threshold {w['threshold']}")
         if w["max_step"] < w["step"]:
             failures.append(f"{w['kind']}: max_step {w['max_step']} before the first crossing {w['step']}")
+    if a.source:
+        named = [w.get("source") for w in summary["warnings"] if w["kind"] == "energy_error"]
+        if named != [a.source]:
+            failures.append(f"energy_error source {named}, expected {a.source}")
     with open(os.path.join(a.out, "history.csv")) as f:
         rows = list(csv.reader(f))
     if len(rows) < 2 or rows[0][:2] != ["step", "time"]:

@@ -171,7 +171,7 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
   for (std::string line; std::getline(lines, line);)
     if (line.rfind("  \"", 0) == 0) keys.push_back(line.substr(3, line.find('"', 3) - 3));
   EXPECT_EQ(keys, (std::vector<std::string>{"status", "exit_code", "tribex_version", "deck", "deck_sha256", "started",
-                                            "host", "steps", "final_time", "nodes", "elements", "wall_time_s",
+                                            "host", "run_id", "mesh_sha256", "steps", "final_time", "nodes", "elements", "wall_time_s",
                                             "loop_time_s", "ns_per_element_step", "first_step", "total_wall_time_s",
                                             "total_loop_time_s", "contact_time_s", "contact_balance", "ranks",
                                             "communication_time_s", "initial_stable_time_step", "controlling_element",

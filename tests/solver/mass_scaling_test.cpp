@@ -98,11 +98,12 @@ TEST(MassScaling, ElementsAtHalfTheTargetGetFourTimesTheirMassOthersKeepIt) {
 }
 
 // Contact between b's xmax face (9 nodes, scaled x 4 with their elements) and c's xmin face (4 nodes,
-// c unscaled: its step is at the target). At twice the step the unscaled penalty s m_eff,0 / dt_0^2 (s = 1)
-// would be k dt^2 / m_eff = 4 on c's nodes, capped at 2 (a softer contact); the contact surface nodes get
-// at least s (dt / dt_0)^2 / max(s, 2) = 2 x their unscaled mass, the least that keeps it within the cap:
-// c's four face nodes 975 -> 1950 kg, b's face nodes (at 4 x already) as they were.
-TEST(MassScaling, ContactSurfaceNodesGetTheMassThatKeepsTheUnscaledPenaltyWithinItsCap) {
+// c unscaled: its step is at the target). At twice the step the unscaled penalty s m_eff,0 / dt_0^2 would be
+// k dt^2 / m_eff = 4 s on c's nodes, and c's elements would use twice the share of the step they used
+// unscaled: the contact surface nodes get at least (dt / dt_0)^2 = 4 x their unscaled mass, so both meet
+// the scaled step as unscaled (docs/theory.md 1.4.1): c's four face nodes 975 -> 3900 kg, b's face
+// nodes (at 4 x already) as they were; the penalty scale factor does not change it.
+TEST(MassScaling, ContactSurfaceNodesGetTheStepRatioSquaredTimesTheirUnscaledMass) {
   auto with_contact = [](inputs::Deck deck) {
     deck.procedure.region.contact = test::one_contact("c_face", "c_xmin", "b_face", "b_xmax");
     return deck;
@@ -114,31 +115,30 @@ TEST(MassScaling, ContactSurfaceNodesGetTheMassThatKeepsTheUnscaledPenaltyWithin
   const Model unscaled = build_model(unscaled_deck);
   const MassScalingReport& r = m.mass_scaling;
   ASSERT_TRUE(r.active);
-  EXPECT_NEAR(r.contact_mass_factor, 2.0, 1e-12);
+  EXPECT_NEAR(r.contact_mass_factor, 4.0, 1e-12);
   EXPECT_EQ(r.contact_nodes, 4);
-  EXPECT_NEAR(r.contact_added_mass, 4 * 975.0, 1e-8);
-  EXPECT_NEAR(r.added_mass, 3 * 7800.0 + 4 * 975.0, 1e-8);
+  EXPECT_NEAR(r.contact_added_mass, 4 * 3 * 975.0, 1e-8);
+  EXPECT_NEAR(r.added_mass, 3 * 7800.0 + 4 * 3 * 975.0, 1e-8);
   const auto& c_face = m.mesh.node_sets.at("c_xmin");
   const auto& b_face = m.mesh.node_sets.at("b_xmax");
   ASSERT_EQ(c_face.size(), 4u);
   ASSERT_EQ(b_face.size(), 9u);
   for (int n : c_face) {
     EXPECT_NEAR(unscaled.mass[n], 975.0, 1e-9);
-    EXPECT_NEAR(m.mass[n], 2.0 * unscaled.mass[n], 1e-9) << "node " << n;
+    EXPECT_NEAR(m.mass[n], 4.0 * unscaled.mass[n], 1e-9) << "node " << n;
   }
   for (int n : b_face) EXPECT_EQ(m.mass[n], plain.mass[n]) << "node " << n;  // scaled x 4 with b already
-  EXPECT_NEAR(sum(m.mass), sum(plain.mass) + 4 * 975.0, 1e-8);
+  EXPECT_NEAR(sum(m.mass), sum(plain.mass) + 4 * 3 * 975.0, 1e-8);
   bool found = false;
-  for (const auto& line : r.lines()) found = found || line.find("contact surfaces: 4 nodes raised to 2 x") != std::string::npos;
+  for (const auto& line : r.lines()) found = found || line.find("contact surfaces: 4 nodes raised to 4 x") != std::string::npos;
   EXPECT_TRUE(found);
-  // Penalty scale 0.5: the unscaled penalty is k dt^2 / m_eff = 0.5 x 4 = 2 on c's nodes, at the cap:
-  // nothing to raise. Without contact nothing is raised either.
+  // Penalty scale 0.5: the same raise (the elements' share of the step does not depend on it).
+  // Without contact nothing is raised.
   inputs::Deck soft = with_contact(two_blocks(factor(2.0)));
   soft.procedure.region.contact->penalty_scale_factor = 0.5;
   const Model half = build_model(soft);
-  EXPECT_NEAR(half.mass_scaling.contact_mass_factor, 1.0, 1e-12);
-  EXPECT_EQ(half.mass_scaling.contact_added_mass, 0.0);
-  for (int n : c_face) EXPECT_EQ(half.mass[n], plain.mass[n]) << "node " << n;
+  EXPECT_NEAR(half.mass_scaling.contact_mass_factor, 4.0, 1e-12);
+  for (int n : c_face) EXPECT_EQ(half.mass[n], m.mass[n]) << "node " << n;
   EXPECT_EQ(plain.mass_scaling.contact_nodes, 0);
   EXPECT_EQ(plain.mass_scaling.contact_added_mass, 0.0);
 }

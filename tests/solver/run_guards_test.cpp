@@ -51,6 +51,45 @@ TEST(RunGuards, EnergyErrorWarnsOnceAtFirstCrossingAndKeepsTheMaximum) {
   EXPECT_NE(describe(w).find("largest 5 % at step 3"), std::string::npos) << describe(w);
 }
 
+// The energy warning names its likely source: the ledger term that changed most since the error was last
+// below half the warning (solver/guards/README.md), the contact first when it gave the bodies energy.
+TEST(RunGuards, EnergyErrorNamesTheContactWhenItGaveTheBodiesEnergy) {
+  inputs::GuardSpec spec;
+  Said said;
+  RunGuards g(spec, SetupFindings{{}, "", "'sphere_flat'", true, {}}, 100, said.sink());
+  Energies e = with_error(0.004);
+  g.observe(1, 1e-12, e, nullptr);  // clean: below half the warning
+  // The contact gives 0.3 J (contact_work falls), the viscosity takes 0.29 J of it out: the error grows.
+  e.contact_work -= 0.3;
+  e.viscous_dissipation += 0.29;
+  e.internal += 0.03;
+  g.observe(2, 2e-12, e, nullptr);
+  ASSERT_EQ(g.warnings().size(), 1u);
+  const RunWarning& w = g.warnings()[0];
+  EXPECT_EQ(w.source, EnergySource::contact);
+  EXPECT_NEAR(w.source_change, 0.3, 1e-12);
+  EXPECT_EQ(w.since_step, 1);
+  EXPECT_STREQ(source_name(w.source), "contact_work");
+  for (const char* part : {"likely source: the contact (interaction 'sphere_flat') gave 0.3 J", "since step 1",
+                           "lower 'largest factor'"})
+    EXPECT_NE(w.message.find(part), std::string::npos) << part << " in: " << w.message;
+}
+
+TEST(RunGuards, EnergyErrorNamesTheLargestChangeOtherwise) {
+  inputs::GuardSpec spec;
+  Said said;
+  RunGuards g(spec, SetupFindings{{}, "", "'i'", false, {}}, 100, said.sink());
+  Energies e = with_error(0.0);
+  g.observe(1, 1e-12, e, nullptr);
+  e.hourglass += 0.05;  // the hourglass stores energy nobody put in
+  e.contact_work += 0.001;  // the contact absorbed a little: not a source
+  g.observe(2, 2e-12, e, nullptr);
+  ASSERT_EQ(g.warnings().size(), 1u);
+  EXPECT_EQ(g.warnings()[0].source, EnergySource::hourglass);
+  EXPECT_NE(g.warnings()[0].message.find("likely source: hourglass energy grew 0.05 J since step 1"), std::string::npos)
+      << g.warnings()[0].message;
+}
+
 TEST(RunGuards, EnergyErrorLimitStopsTheRun) {
   inputs::GuardSpec spec;
   spec.energy_error_limit = 0.1;
@@ -133,13 +172,13 @@ TEST(RunGuards, SetUpWarningsOpenTheListAndRestartKeepsRunWarnings) {
   setup.kind = WarningKind::adhesion_cutoff;
   setup.message = "deck.i:12: cut-off";
   Said said;
-  RunGuards g(spec, SetupFindings{{setup}, ""}, 100, said.sink());
+  RunGuards g(spec, SetupFindings{{setup}, "", "", false, {}}, 100, said.sink());
   g.observe(5, 5e-12, with_error(0.03), nullptr);
   g.observe(6, 6e-12, with_error(0.04), nullptr);
   StateArchive archive;
   g.save(archive);
 
-  RunGuards resumed(spec, SetupFindings{{setup}, ""}, 100, said.sink());
+  RunGuards resumed(spec, SetupFindings{{setup}, "", "", false, {}}, 100, said.sink());
   resumed.restore(archive);
   resumed.observe(7, 7e-12, with_error(0.06), nullptr);
   ASSERT_EQ(resumed.warnings().size(), 2u);
@@ -155,7 +194,7 @@ TEST(RunGuards, SetUpWarningsOpenTheListAndRestartKeepsRunWarnings) {
 TEST(RunGuards, OnePointContactIsRaisedAtHighPressureOnly) {
   inputs::GuardSpec spec;
   Said said;
-  RunGuards g(spec, SetupFindings{{}, "deck.i:9:9: interaction 'i' on block 'tip'"}, 100, said.sink());
+  RunGuards g(spec, SetupFindings{{}, "deck.i:9:9: interaction 'i' on block 'tip'", "'i'", false, {}}, 100, said.sink());
   contact::ContactTotals c;
   c.max_penetration_ratio = 0.05;
   c.penetration_node = 3;

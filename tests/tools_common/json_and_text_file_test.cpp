@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // tools/common: JSON string/number formatting (RFC 8259) and the write-through-rename text file.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -50,4 +52,35 @@ TEST(ToolsTextFile, WritesWholeFileAndLeavesNoTemporary) {
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "no"));
   std::filesystem::remove_all(dir);
+}
+
+// Only a regular file is replaced (issue 54, item 6): a FIFO, a folder or a symbolic link at the
+// path or at its temporary name is BadInput naming it, and stays as it was.
+TEST(ToolsTextFile, ReplacesOnlyRegularFiles) {
+  namespace fs = std::filesystem;
+  const fs::path d = fs::temp_directory_path() / ("tribex_text_targets_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d / "folder.csv");
+  ASSERT_EQ(::mkfifo((d / "pipe.csv").c_str(), 0644), 0);
+  ASSERT_EQ(::mkfifo((d / "tmp_pipe.csv.tmp").c_str(), 0644), 0);
+  fs::create_symlink("elsewhere.csv", d / "link.csv");
+  for (const char* name : {"pipe.csv", "folder.csv", "link.csv", "tmp_pipe.csv"}) {
+    try {
+      write_text_file((d / name).string(), "a,b\n");
+      ADD_FAILURE() << name << " was written";
+    } catch (const BadInput& e) {
+      EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(fs::is_fifo(d / "pipe.csv"));
+  EXPECT_TRUE(fs::is_directory(d / "folder.csv"));
+  EXPECT_TRUE(fs::is_symlink(d / "link.csv"));
+  EXPECT_FALSE(fs::exists(d / "elsewhere.csv"));
+  write_text_file((d / "plain.csv").string(), "a,b\n");  // a new file, then a regular one replaced
+  write_text_file((d / "plain.csv").string(), "c,d\n");
+  std::ifstream in(d / "plain.csv");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "c,d");
+  fs::remove_all(d);
 }

@@ -22,5 +22,7 @@ int friction_test_command(const std::vector<std::string>& args);
 int fit_command(const std::vector<std::string>& args);
 /// tools/mesh/mesh_command.cpp: `tribex mesh afm FILE ... -o MESH.msh`.
 int mesh_command(const std::vector<std::string>& args);
+/// tools/layered/layered_command.cpp: `tribex layered`: sphere on bonded elastic layers (Hankel-space kernel).
+int layered_command(const std::vector<std::string>& args);
 
 }  // namespace tribex::cli

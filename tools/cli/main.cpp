@@ -36,6 +36,7 @@ const std::vector<Command> commands = {
     {"pstd", "pre-sliding tangential deflection model (report 2.1.9)", tribex::cli::pstd_command},
     {"friction-test", "friction-test data reduction: spring calibration, mu_s, mu_d", tribex::cli::friction_test_command},
     {"fit", "fit tau* and W to AFM friction-vs-load data (report Eq. 3.1, DMT/JKR/COS/MD)", tribex::cli::fit_command},
+    {"layered", "sphere on bonded elastic layers: a, delta, f against P~ and A, b (continuum reference)", tribex::cli::layered_command},
     {"mesh", "mesh generators (.msh): tribex mesh afm FILE --window ... -o MESH.msh", tribex::cli::mesh_command},
 };
 

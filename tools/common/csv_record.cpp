@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tools/common/errors.hpp"
+#include "tools/common/text_file.hpp"
 
 namespace tribex::tools {
 namespace {
@@ -184,8 +185,7 @@ void CsvRecord::require_rows(std::size_t n, const std::string& why) const {
 }
 
 void CsvRecord::write(const std::string& path) const {
-  std::ofstream out(path);
-  if (!out) throw BadInput(path + ": cannot write the file (check the folder exists and is writable)");
+  std::ostringstream out;  // written whole through write_text_file (a regular file only, never half-written)
   std::vector<double> factors;
   for (std::size_t c = 0; c < order_.size(); ++c) {
     const auto& col = columns_.at(order_[c]);
@@ -202,7 +202,7 @@ void CsvRecord::write(const std::string& path) const {
     }
     out << "\n";
   }
-  if (!out) throw BadInput(path + ": write failed (disk full?)");
+  write_text_file(path, out.str());
 }
 
 }  // namespace tribex::tools

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "tools/common/errors.hpp"
+#include "tools/common/text_file.hpp"
 
 #ifndef TRIBEX_PANEL_PLOT_SCRIPT
 #define TRIBEX_PANEL_PLOT_SCRIPT "tools/plot/plot_panels.py"
@@ -31,6 +32,10 @@ std::string default_plot_path(const std::string& input) {
 }
 
 bool write_plot(const std::string& png, const std::string& title, const std::vector<PlotPanel>& panels) {
+  // The plot is drawn into PNG.tmp.png and renamed (tools/plot/plot_panels.py): only regular files replaced.
+  require_output_file(png);
+  require_output_file(png + ".tmp.png");
+  for (std::size_t k = 0; k < panels.size(); ++k) require_output_file(png + ".panel" + std::to_string(k) + ".csv");
   std::vector<std::string> files;
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const std::string path = png + ".panel" + std::to_string(k) + ".csv";

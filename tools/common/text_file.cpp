@@ -4,12 +4,20 @@
 #include <cstdio>
 #include <fstream>
 
+#include "mesh/output_target.hpp"
 #include "tools/common/errors.hpp"
 
 namespace tribex::tools {
 
+void require_output_file(const std::string& path) {
+  const std::string problem = mesh::output_target_problem(path);
+  if (!problem.empty()) throw BadInput(problem + mesh::output_target_fix);
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
+  require_output_file(path);
+  require_output_file(tmp);
   {
     std::ofstream out(tmp, std::ios::binary);
     if (!out) throw BadInput("cannot write '" + path + "' (check that its folder exists and is writable)");

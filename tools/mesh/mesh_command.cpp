@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "mesh/afm/afm_mesh.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "mesh/output_target.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
@@ -29,6 +31,24 @@ const char* mesh_usage =
     "  afm     all-hex substrate block whose top follows an AFM height map (spline surface)\n"
     "  convert IN OUT: a mesh file from gmsh .msh to Exodus II .exo/.e/.g/.gen or back (by the extensions)\n";
 
+// A mesh file is written by its extension: gmsh .msh, or Exodus II .exo/.e/.g/.gen. Any other
+// extension is refused (exit 2) rather than written as gmsh under a name that says otherwise; so is
+// a path that is not a regular file. Checked before anything is read or built.
+void require_mesh_output(const std::string& out, const std::string& command) {
+  const std::string ext = std::filesystem::path(out).extension().string();
+  if (!mesh::is_exodus_path(out) && ext != ".msh")
+    throw BadInput(command + ": cannot write '" + out + "': unknown mesh extension '" + ext +
+                   "'; give a gmsh .msh or an Exodus II .exo, .e, .g or .gen file");
+  mesh::require_output_target(out);
+}
+
+void write_mesh_file(const mesh::Mesh& m, const std::string& out) {
+  if (mesh::is_exodus_path(out))
+    mesh::write_exodus(m, out);
+  else
+    mesh::write_gmsh(m, out);
+}
+
 const char* convert_usage =
     "usage: tribex mesh convert IN OUT\n"
     "Reads IN and writes OUT, each a gmsh .msh (4.1 binary when written) or an Exodus II .exo/.e/.g/.gen\n"
@@ -42,20 +62,19 @@ int convert(const std::vector<std::string>& argv) {
   const std::string out = a.positional(1, "OUT");
   a.finish();
   if (a.positional_count() != 2) throw BadInput("tribex mesh convert takes IN and OUT, got " + std::to_string(a.positional_count()) + " files");
+  require_mesh_output(out, "tribex mesh convert");
   const mesh::Mesh m = mesh::is_exodus_path(in) ? mesh::read_exodus(in) : mesh::read_gmsh(in);
-  if (mesh::is_exodus_path(out))
-    mesh::write_exodus(m, out);
-  else
-    mesh::write_gmsh(m, out);
+  write_mesh_file(m, out);
   std::printf("wrote %s: %d nodes, %d hex8 elements, %zu block(s), %zu node set(s), %zu side set(s)\n", out.c_str(),
               m.node_count(), m.element_count(), m.blocks.size(), m.node_sets.size(), m.side_sets.size());
   return tools::exit_ok;
 }
 
 const char* afm_usage =
-    "usage: tribex mesh afm FILE -o MESH.msh [options]\n"
+    "usage: tribex mesh afm FILE -o MESH.msh|MESH.exo [options]\n"
     "All-hex8 substrate block whose top is the bicubic-spline surface through the AFM map (not-a-knot\n"
-    "cubic splines along each pixel row, then each column), written as gmsh .msh 4.1.\n"
+    "cubic splines along each pixel row, then each column), written as gmsh .msh 4.1 or, for an\n"
+    "-o of .exo/.e/.g/.gen, as Exodus II (64-bit-offset netCDF).\n"
     "FILE: Nanoscope (.di/.spm/.000), Gwyddion .gsf, Gwyddion ASCII matrix, or x y z text; the map is\n"
     "levelled by its least-squares plane first. Coordinates are the map's (pixel centres at (i+1/2) dx).\n"
     "  --channel N             Nanoscope channel (default: first height channel)\n"
@@ -69,7 +88,7 @@ const char* afm_usage =
     "  --small-window MODE     refuse (default): a window under 4 pixels a side is an error; interpolate: mesh\n"
     "                          the spline between the pixels anyway (a sub-pixel window of a coarse map)\n"
     "  --max-elements N        refuse a larger mesh, counted before it is built (default 20000000, ~6 GB to run)\n"
-    "  -o FILE                 output .msh (required)\n"
+    "  -o FILE                 output .msh, or Exodus II .exo/.e/.g/.gen (required)\n"
     "Blocks substrate (+ coating); side sets = node sets: substrate_top (contact surface), substrate_track,\n"
     "substrate_bottom, substrate_sides, substrate_xmin/_xmax/_ymin/_ymax. Prints the element count, the track\n"
     "element size and the min/mean scaled Jacobian. `gmsh MESH.msh` opens the result.\n";
@@ -107,6 +126,7 @@ int afm(const std::vector<std::string>& argv) {
   if (small_window != "refuse" && small_window != "interpolate")
     throw BadInput("--small-window " + small_window + ": use refuse or interpolate");
   spec.interpolate_small_window = small_window == "interpolate";
+  require_mesh_output(*out, "tribex mesh afm");
   if (spec.max_elements < 1 || spec.max_elements > 2'000'000'000)
     throw BadInput("--max-elements " + std::to_string(spec.max_elements) + " must lie in 1 to 2000000000");
   if (!(spec.grading_ratio >= 1.0 && spec.grading_ratio <= 1.3))
@@ -116,7 +136,7 @@ int afm(const std::vector<std::string>& argv) {
   mesh::afm::AfmMeshReport r;
   const mesh::Mesh m = mesh::afm::mesh_afm_file(file, static_cast<int>(channel), spec, &r);
   const auto t1 = std::chrono::steady_clock::now();
-  mesh::write_gmsh(m, *out);
+  write_mesh_file(m, *out);
   const auto t2 = std::chrono::steady_clock::now();
   const auto seconds = [](auto d) { return std::chrono::duration<double>(d).count(); };
   std::printf("map %s, window (%.6g, %.6g) nm + %.6g x %.6g nm, track (%.6g, %.6g) nm + %.6g x %.6g nm, RMS %.4g nm\n",

@@ -132,17 +132,17 @@ int channel_option(Args& a, const std::string& name) {
 // `--summits FILE.csv`: the discrete population of the rough-surface contact model
 // (contact/models/rough_surface.hpp: `summit file` + `summit map area`), one summit per line.
 void write_summits(const std::string& path, const mesh::afm::HeightMap& map, const std::string& source) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw BadInput("tribex surface stats: cannot write --summits file '" + path + "'");
-  std::size_t count = 0;
-  std::fprintf(f, "# summits of %s (8-neighbour maxima, positive curvature), map area %.9g m^2\nheight_m,radius_m\n",
-               source.c_str(), map.size_x() * map.size_y());
+  std::size_t count = 0;  // written whole through write_text_file (a regular file only, never half-written)
+  char line[96];
+  std::snprintf(line, sizeof line, "map area %.9g m^2\nheight_m,radius_m\n", map.size_x() * map.size_y());
+  std::string text = "# summits of " + source + " (8-neighbour maxima, positive curvature), " + line;
   for (const auto& s : surface::find_summits(map))
     if (s.curvature > 0.0) {
-      std::fprintf(f, "%.9g,%.9g\n", s.height, 1.0 / s.curvature);
+      std::snprintf(line, sizeof line, "%.9g,%.9g\n", s.height, 1.0 / s.curvature);
+      text += line;
       ++count;
     }
-  std::fclose(f);
+  tools::write_text_file(path, text);
   std::fprintf(stderr, "summits: %zu written to %s; summit map area = %.9g m^2\n", count, path.c_str(),
                map.size_x() * map.size_y());
 }

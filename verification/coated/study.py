@@ -461,6 +461,8 @@ def write_results(runs_dir):
             ok, text = limit_check(ms[n])
             lines.append(text)
             plot_case(ms[n], None, os.path.join(HERE, "plots", f"{n}.png"))
+    from compare_reference import continuum_section  # noqa: E402 (the layered continuum, issue 52)
+    lines += continuum_section(fits, runs_dir)
     lines += before_contact_fix(fits)
     lines.append("")
     lines.append("Runs (`tribex run decks/RUN.i -o build/verification/coated_RUN`; wall time on a shared machine):")

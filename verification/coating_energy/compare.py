@@ -10,6 +10,7 @@ Prints the figures and PASS, or FAIL with the worst row; exit 1 on FAIL.
 usage: compare.py OUTPUT_FOLDER [--tolerance 0.005]
 """
 import argparse
+import json
 import os
 import sys
 
@@ -31,6 +32,11 @@ def main():
           f"at the end {rows[-1]['energy_error']:.3e}; contact work at the end {rows[-1]['contact_work']:.3e} J "
           f"(largest internal energy {ie_max:.3e} J); largest penetration "
           f"{max(r['contact_max_penetration'] for r in rows) * 1e9:.4f} nm")
+    with open(os.path.join(a.output, "summary.json")) as f:
+        summary = json.load(f)
+    if summary.get("exit_code") != 0:  # a run stopped early holds too few rows to judge
+        print(f"FAIL: the run ended with exit code {summary.get('exit_code')} ({summary.get('status')})")
+        return 1
     if abs(worst["energy_error"]) > a.tolerance:
         print(f"FAIL: |energy_error| {abs(worst['energy_error']):.3e} > {a.tolerance:g}")
         return 1

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// The output folder a run owns (solver/output/output_folder.hpp, README.md "The output folder"): the
+// lock, the manifest, what counts as a file the run wrote, and a refused claim leaving the folder as it was.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "solver/errors.hpp"
+#include "solver/output/output_folder.hpp"
+
+namespace fs = std::filesystem;
+using namespace tribex::solver;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("tribex_folder_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+std::set<std::string> listing(const fs::path& d) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(d)) names.insert(e.path().filename().string());
+  return names;
+}
+
+OutputManifest sample_identity() {
+  return {new_run_id(), "deck \"a\".i", "", "0123abcd", "2026-11-28T00:00:00Z", "vm", {}};
+}
+
+}  // namespace
+
+TEST(OutputManifest, RoundTripsAndRefusesAForeignFile) {
+  OutputManifest m = sample_identity();
+  m.files = {{"log.txt", 0, 0}, {"history.csv", 65024, 123456789012ULL}};
+  const OutputManifest back = parse_manifest(manifest_json(m), "x");
+  EXPECT_EQ(back.run_id, m.run_id);
+  EXPECT_EQ(back.deck, m.deck);  // the quotes escaped and read back
+  ASSERT_EQ(back.files.size(), 2u);
+  EXPECT_EQ(back.files[1].inode, 123456789012ULL);
+  EXPECT_EQ(m.run_id.size(), 32u);
+  EXPECT_NE(new_run_id(), new_run_id());
+  EXPECT_THROW(parse_manifest("{\"format\": \"x\"}", "x"), SetupError);
+  EXPECT_THROW(parse_manifest(manifest_json(m) + "junk", "x"), SetupError);
+  std::string escaping = manifest_json(m);
+  escaping.replace(escaping.find("history.csv"), 11, "../etc/pass");  // never a path outside the folder
+  EXPECT_THROW(parse_manifest(escaping, "x"), SetupError);
+}
+
+TEST(OutputLock, RefusesASecondHolderNamingTheFirstAndIsGoneAfterRelease) {
+  const fs::path d = fresh_dir("lock");
+  {
+    OutputLock first(d, "pid 1 on host vm, started T, run R");
+    EXPECT_TRUE(first.stale_holder().empty());
+    try {
+      OutputLock second(d, "pid 2");
+      FAIL() << "a second lock was granted";
+    } catch (const SetupError& e) {
+      EXPECT_NE(std::string(e.what()).find("in use by another tribex run (pid 1 on host vm, started T, run R)"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_FALSE(fs::exists(d / OutputLock::file_name));
+  // A lock file no process holds (its run was killed): taken over, its holder reported.
+  write(d / OutputLock::file_name, "pid 99 on host gone\n");
+  OutputLock again(d, "pid 3");
+  EXPECT_EQ(again.stale_holder(), "pid 99 on host gone");
+}
+
+TEST(OutputManifest, WrittenByRunChecksTheIdentityAndTheFileKind) {
+  const fs::path d = fresh_dir("written");
+  const std::string id = new_run_id();
+  write(d / "log.txt", "tribex 0.1 | run " + id + " | deck x.i\nmore\n");
+  EXPECT_TRUE(written_by_run(d, {"log.txt"}, id));
+  EXPECT_FALSE(written_by_run(d, {"log.txt"}, new_run_id()));
+  write(d / "summary.json", "{\n  \"run_id\": \"" + id + "\",\n}\n");
+  EXPECT_TRUE(written_by_run(d, {"summary.json"}, id));
+  write(d / "history.csv", "step,time\n");
+  EXPECT_FALSE(written_by_run(d, {"history.csv"}, id));  // no inode recorded
+  OutputManifest m = sample_identity();
+  m.add("history.csv");
+  record_written_files(d, m);
+  EXPECT_TRUE(written_by_run(d, *m.find("history.csv"), id));
+  fs::remove(d / "history.csv");
+  write(d / "other.csv", "x\n");
+  fs::create_symlink("other.csv", d / "history.csv");
+  EXPECT_FALSE(written_by_run(d, *m.find("history.csv"), id));  // a link is never the run's file
+  write(d / "results.h5", "not hdf5");
+  EXPECT_FALSE(written_by_run(d, {"results.h5"}, id));
+}
+
+TEST(OutputFolder, ARefusedClaimLeavesTheFolderAsItWas) {
+  const fs::path d = fresh_dir("claim");
+  write(d / "log.txt", "the user's notes\n");
+  FolderRequest r;
+  r.folder = d;
+  r.names = planned_output_names(true, false, 2);
+  r.identity = sample_identity();
+  const auto before = listing(d);
+  try {
+    claim_output_folder(r);
+    FAIL() << "a folder with the user's log.txt was claimed";
+  } catch (const SetupError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds log.txt"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(listing(d), before);
+  // A folder that is not there is made; the claim's lock is released with the claim.
+  const fs::path made = d / "new" / "deeper";
+  r.folder = made;
+  EXPECT_NO_THROW(claim_output_folder(r));
+  EXPECT_TRUE(fs::exists(made / manifest_file_name));
+  EXPECT_FALSE(fs::exists(made / OutputLock::file_name));
+  fs::remove(d / "log.txt");
+  r.resume = true;  // a resumed run whose restart file carries another run id than the folder's
+  r.folder = d;
+  r.inputs.clear();
+  OutputManifest theirs = sample_identity();
+  write_manifest(d, theirs);
+  r.restart_run_id = new_run_id();
+  r.restart_path = "S/restart.h5";
+  EXPECT_THROW(claim_output_folder(r), SetupError);
+  r.folder = d / "fresh";
+  EXPECT_NO_THROW(claim_output_folder(r));  // into a new folder: new files
+}
