@@ -18,7 +18,9 @@
 #include "solver/guards/run_guards.hpp"
 #include "solver/guards/strain_guard.hpp"
 #include "solver/integrators/central_difference.hpp"
+#include "solver/errors.hpp"
 #include "solver/model.hpp"
+#include "solver/out_of_memory.hpp"
 #include "solver/output/exodus_writer.hpp"
 #include "solver/output/history_writer.hpp"
 #include "solver/output/output_folder.hpp"
@@ -47,17 +49,22 @@ class DeckRun {
         root_(parallel::is_root()), ranks_(parallel::size()), log_(options.quiet || !root_) {}
 
   RunSummary run() {
-    preflight();
+    set_up("building the model", [this] { preflight(); });
     if (options_.check_only) {
       summary_.status = "checked";
       return summary_;
     }
-    start_from_restart();
+    set_up("reading the restart state", [this] { start_from_restart(); });
     stop_before_outputs("before the output files were opened");
-    claim_output_folder();
-    open_outputs();
+    set_up("claiming the output folder", [this] { claim_output_folder(); });
+    set_up("opening the output files", [this] { open_outputs(); });
     peak_rss_setup_ = parallel::peak_rss_bytes();  // set-up's high-water mark, before the loop adds to it
-    loop();
+    try {
+      loop();  // its steps catch their own failures; this: the loop's buffers (fields, rows), before step 1
+    } catch (const std::bad_alloc&) {
+      summary_.exit_code = 3;
+      summary_.status = out_of_memory_text("allocating the loop's output buffers");
+    }
     close();
     return summary_;
   }
@@ -77,7 +84,7 @@ class DeckRun {
   void report_output_folder();  // log.txt: a stale lock taken over, files removed or kept
   void open_outputs();
   void choose_history_columns();
-  void note_mpiexec_signal_grace();  // the Open MPI kill delay that can cost a signalled run its restart file  // every rank: the row is built everywhere, written by rank 0
+  void note_mpirun_signal_grace();  // the Open MPI kill delay that can cost a signalled run its restart file
   void open_results();  // results.h5 + results.xdmf and/or results.exo (`format`)
   // ---- stage 4: the loop and what it writes at time n ----
   void loop();
@@ -91,6 +98,21 @@ class DeckRun {
   void close();
   void close_log_lines();
 
+  /// A set-up stage: out of memory or a full disk here is exit 2 (a SetupError naming the stage and the
+  /// size, or the free space), not an internal error or a loop's exit 3; nothing has run yet.
+  template <class F>
+  void set_up(const char* stage, F&& body) {
+    try {
+      body();
+    } catch (const std::bad_alloc&) {
+      const std::string model = elements_ > 0 ? " for a model of " + std::to_string(elements_) + " elements" : "";
+      throw SetupError(out_of_memory_text(stage) + model + "; run on more ranks (mpirun -np N), on a machine with more memory, or a coarser mesh");
+    } catch (const OutputError& e) {
+      std::string what = e.what();  // nothing of the run's is kept: the loop's closing words go
+      what = what.substr(0, what.find("; the files up to the last complete output step are kept"));
+      throw SetupError("cannot set up the outputs: " + what);
+    }
+  }
   /// A stop that arrives before the outputs exist ends the run here, with nothing written (every
   /// rank at the same point): set-up is not interrupted half-way.
   void stop_before_outputs(const char* stage) {
@@ -151,6 +173,8 @@ class DeckRun {
   Clock::time_point loop_start_;
   double loop_start_time_ = 0.0;  // s of simulated time at loop_start_ (the restart time on a resume)
   bool closing_ = false;
+  bool stopped_by_signal_ = false;  // agreed by the ranks: the loop stopped for a signal
+  Clock::time_point stop_seen_;     // when it did (the stop's time is logged at the close)
   std::vector<double> row_;
   std::vector<double> globals_;  // results.exo: step, then row_
   std::vector<double> element_stress_, element_plastic_strain_;

@@ -10,6 +10,7 @@
 
 #include "solver/deck_run.hpp"
 #include "solver/errors.hpp"
+#include "solver/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 
@@ -207,14 +208,22 @@ void DeckRun::loop() {
       // the t = 0 outputs (history row, fields), so the files are valid.
       if (model_->mass_scaling.exceeds_limit()) throw NumericalFailure(model_->mass_scaling.limit_message());
       stopped_at_step = options_.stop_at_step >= 0 && integrator_->step_index() >= options_.stop_at_step;
-      bool stop = stop_signal() || stopped_at_step;
-      if (ranks_ > 1) stop = parallel::max(static_cast<long long>(stop)) > 0;  // every rank stops at the same step
+      // Every rank stops at the same step, for the signal any of them received (the largest number).
+      long long signal = stop_signal();
+      if (ranks_ > 1) signal = parallel::max(signal);
+      const bool stop = signal != 0 || stopped_at_step;
+      if (signal != 0) {
+        stopped_by_signal_ = true;
+        stop_seen_ = Clock::now();
+        log_.say(format("stopping after step %ld: %s", integrator_->step_index(),
+                        stop_signal_text(static_cast<int>(signal)).c_str()));
+      }
       if (restart_output_ && (stop || restart_output_->due(integrator_->step_index()))) write_restart();
       if (stop) break;
     }
     closing_ = true;
     integrator_->close(on_time_n);
-    const bool interrupted = stop_signal() || stopped_at_step;
+    const bool interrupted = stopped_by_signal_ || stopped_at_step;
     summary_.exit_code = interrupted ? 130 : 0;
     summary_.status = interrupted ? "interrupted" : "normal termination";
   } catch (const NumericalFailure& e) {
@@ -223,6 +232,11 @@ void DeckRun::loop() {
   } catch (const OutputError& e) {
     summary_.exit_code = 3;
     summary_.status = std::string("output failure: ") + e.what();
+  } catch (const std::bad_alloc&) {
+    // The failed request is freed; what the close needs (summary.json, a few KB) is small.
+    summary_.exit_code = 3;
+    summary_.status = out_of_memory_text(format("running step %ld", integrator_->step_index() + 1)) +
+                      "; the files up to the last complete output step are kept";
   }
   summary_.loop_seconds = seconds_since(loop_start_);
   if (terminal_) std::fprintf(stderr, "\n");
@@ -243,6 +257,11 @@ void DeckRun::close() {
     if (summary.exit_code == 0 || summary.exit_code == 130) {
       summary.exit_code = 3;
       summary.status = std::string("output failure: ") + e.what();
+    }
+  } catch (const std::bad_alloc&) {
+    if (summary.exit_code == 0 || summary.exit_code == 130) {
+      summary.exit_code = 3;
+      summary.status = out_of_memory_text("closing the results files");
     }
   }
   summary.steps = integrator_->step_index();
@@ -276,6 +295,13 @@ void DeckRun::close() {
         summary.status = std::string("output failure: ") + e.what();
       }
     }
+  }
+  if (stopped_by_signal_) {
+    // From the signal's arrival on the rank that had it longest: the step then running is included.
+    const double took = parallel::max(std::max(seconds_since_stop_signal(), seconds_since(stop_seen_)));
+    log_.say(format("stop: the step, the restart file, the outputs and summary.json written %.3g s after the signal", took));
+    const std::string note = mpirun_stop_grace_note(took, "measured");
+    if (!note.empty()) log_.say(note);
   }
   close_log_lines();
 }

@@ -13,6 +13,7 @@
 #include "solver/contact_travel.hpp"
 #include "solver/deck_run.hpp"
 #include "solver/errors.hpp"
+#include "solver/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/run_fingerprint.hpp"
@@ -311,8 +312,17 @@ void DeckRun::open_outputs() {
     earlier_loop_seconds_ = resume_->has("run_loop_seconds") ? resume_->scalar("run_loop_seconds") : NAN;
   }
   if (region_.restart) restart_output_.emplace(*region_.restart, out_.string(), summary_.identity.run_id);
-  if (region_.restart && ranks_ > 1) note_mpiexec_signal_grace();
-  if (root_) reserve_summary_json((out_ / "summary.json").string());
+  if (region_.restart) note_mpirun_signal_grace();
+  // summary.json's space is taken before the loop (solver/output/summary_writer.hpp); agreed, as it can fail.
+  std::exception_ptr reserve_error;
+  if (root_) {
+    try {
+      reserve_summary_json((out_ / "summary.json").string(), summary_json_reserve_bytes(ranks_));
+    } catch (...) {
+      reserve_error = std::current_exception();
+    }
+  }
+  agree_on_errors(reserve_error);
   if (root_) {
     try {
       record_written_files(out_, folder_->manifest);
@@ -322,15 +332,14 @@ void DeckRun::open_outputs() {
   }
 }
 
-// Open MPI's mpiexec forwards a SIGTERM to the ranks and kills them odls_base_sigkill_timeout
-// seconds later (1 by default): a rank still writing its restart file then loses it. The setting
-// travels to the ranks in the environment, so a run that is short of it says so once.
-void DeckRun::note_mpiexec_signal_grace() {
-  const char* grace = std::getenv("OMPI_MCA_odls_base_sigkill_timeout");
-  if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr || (grace != nullptr && std::atoi(grace) >= 30)) return;
-  log_.say("note: a SIGTERM to mpiexec reaches the ranks, and Open MPI kills them " + std::string(grace ? grace : "1") +
-           " s later, maybe while they write the restart file; for a run that may be signalled, start mpiexec "
-           "with OMPI_MCA_odls_base_sigkill_timeout=30 in the environment (or signal the ranks)");
+// Under mpirun a SIGTERM or SIGINT leaves the ranks 2 x odls_base_sigkill_timeout to stop
+// (solver/mpirun_grace.hpp); a model too large to stop in time is told so before its loop starts,
+// from the measured seconds per element (the close repeats it with the run's own measurement).
+void DeckRun::note_mpirun_signal_grace() {
+  const double estimate = stop_seconds_per_element * elements_;
+  const std::string note = mpirun_stop_grace_note(
+      estimate, format("estimated from its %d elements at %g s each", elements_, stop_seconds_per_element));
+  if (!note.empty()) log_.say(note);
 }
 
 void DeckRun::choose_history_columns() {

@@ -1,15 +1,37 @@
 // SPDX-License-Identifier: MIT
 #include "solver/errors.hpp"
 
+#include <sys/statvfs.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cstring>
+#include <filesystem>
+#include <new>
 
 #include "mesh/mesh_error.hpp"
 #include "solver/parallel/communicator.hpp"
 
 namespace tribex::solver {
 
+std::string no_space_reason(const std::string& what) {
+  // `what` is a file, maybe with ":/dataset" or " (detail)" after it: its folder is measured.
+  const std::size_t end = std::min(what.find(" ("), what.find(":/"));
+  const std::filesystem::path file(end == std::string::npos ? what : std::string(what.begin(), what.begin() + long(end)));
+  const std::string folder = file.has_parent_path() ? file.parent_path().string() : std::string(1, '.');
+  struct statvfs fs {};
+  std::string text = "no space left on device (";
+  if (statvfs(folder.c_str(), &fs) == 0)
+    text.append(std::to_string(static_cast<unsigned long long>(fs.f_bavail) * fs.f_frsize)).append(" bytes free in ");
+  return text.append(folder).append(")");
+}
+
 OutputError output_failure(const std::string& path, int error_number) {
-  const std::string reason = error_number ? std::strerror(error_number) : "write failed";
+  if (error_number == ENOMEM)  // a library's allocation failed while writing (HDF5's buffers)
+    return OutputError("out of memory while writing " + path + "; run on more ranks or a machine with more memory; the " +
+                       "files up to the last complete output step are kept");
+  const bool full = error_number == ENOSPC || error_number == EDQUOT;
+  const std::string reason = full ? no_space_reason(path) : error_number ? std::strerror(error_number) : "write failed";
   return OutputError(reason + " while writing " + path +
                      "; free space on the device or choose another output folder (-o); the files up to the last "
                      "complete output step are kept");
@@ -28,6 +50,8 @@ int exit_code_of(const std::exception_ptr& e) {
     return 2;
   } catch (const NumericalFailure&) {
     return 3;
+  } catch (const std::bad_alloc&) {
+    return 2;  // out of memory in set-up (DeckRun names the stage and the size)
   } catch (const StoppedByOtherRank& s) {
     return s.exit_code;
   } catch (...) {

@@ -29,8 +29,12 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// OutputError naming the file, errno's reason (e.g. "No space left on device") and the fix.
+/// OutputError naming the file, errno's reason and the fix; a full device (ENOSPC, EDQUOT) reads
+/// "no space left on device (N bytes free in FOLDER)".
 OutputError output_failure(const std::string& path, int error_number);
+
+/// "no space left on device (N bytes free in FOLDER)" for a file `what` (FOLDER: its folder).
+std::string no_space_reason(const std::string& what);
 
 /// Parallel runs: another rank met an error (it prints the one message); this rank stops with the
 /// same exit code and prints nothing.

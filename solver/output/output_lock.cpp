@@ -66,7 +66,8 @@ OutputLock::OutputLock(const std::filesystem::path& folder, const std::string& h
     unlink(path_.c_str());
     close(fd_);
     fd_ = -1;
-    throw SetupError("cannot write the lock file " + path_.string() + ": " + std::strerror(err) +
+    const std::string reason = err == ENOSPC || err == EDQUOT ? no_space_reason(path_.string()) : std::strerror(err);
+    throw SetupError("cannot write the lock file " + path_.string() + ": " + reason +
                      "; free space on the device or choose another output folder (-o)");
   }
 }

@@ -32,7 +32,8 @@ void RunLog::open(const std::string& path, bool append) {
   file_ = std::fopen(path.c_str(), append ? "a" : "w");
   if (!file_) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
   std::fputs(pending_.c_str(), file_);
-  std::fflush(file_);
+  // A log that cannot take what was said so far (a full disk) fails the set-up, naming the cause.
+  if (std::fflush(file_) != 0 || std::ferror(file_)) throw output_failure(path, errno);
   pending_.clear();
 }
 

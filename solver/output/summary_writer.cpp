@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "solver/output/summary_writer.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -28,29 +30,37 @@ std::string units(std::span<const Field<T>> table) {
 
 }  // namespace
 
-void reserve_summary_json(const std::string& path) {
+void reserve_summary_json(const std::string& path, std::size_t bytes) {
   const std::string tmp = path + ".tmp";
   std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (!f) return;
-  const std::string blanks(16384, ' ');
-  const bool written = std::fwrite(blanks.data(), 1, blanks.size(), f) == blanks.size();
-  if (std::fclose(f) != 0 || !written) std::remove(tmp.c_str());
+  if (!f) throw output_failure(tmp, errno);
+  const std::string blanks(bytes, ' ');
+  const bool written = std::fwrite(blanks.data(), 1, blanks.size(), f) == blanks.size() && std::fflush(f) == 0;
+  const int err = errno;
+  if (std::fclose(f) != 0 || !written) {
+    const int e = written ? errno : err;
+    std::remove(tmp.c_str());
+    throw output_failure(tmp, e);
+  }
 }
 
 void write_summary_json(const std::string& path, const RunSummary& s) {
-  const std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (!f) throw SetupError("cannot write " + path + ": " + std::strerror(errno));
   // One key per line in table order (output_tables.cpp), then "units": the unit of every key that
   // is a quantity, and of the fields of the energies object, of a warnings entry and of a rank_counts entry.
-  std::fprintf(f, "{\n");
+  std::string text = "{\n";
   for (const Field<RunSummary>& k : summary_fields())
-    std::fprintf(f, "  \"%s\": %s,\n", std::string(k.name).c_str(), (k.json ? k.json(s) : number(k.get(s))).c_str());
-  std::fprintf(f, "  \"units\": {%s, \"energies\": {%s}, \"warnings\": {%s}, \"rank_counts\": {%s}}\n}\n",
-               units(summary_fields()).c_str(), units(energy_fields()).c_str(), units(warning_fields()).c_str(),
-               units(rank_count_fields()).c_str());
-  // Written whole or not at all: a full disk keeps the earlier summary.json (if any) and says so.
-  const bool written = !std::ferror(f);
+    text += "  \"" + std::string(k.name) + "\": " + (k.json ? k.json(s) : number(k.get(s))) + ",\n";
+  text += "  \"units\": {" + units(summary_fields()) + ", \"energies\": {" + units(energy_fields()) +
+          "}, \"warnings\": {" + units(warning_fields()) + "}, \"rank_counts\": {" + units(rank_count_fields()) + "}}\n}\n";
+  // Written over the reserved blanks (reserve_summary_json) without truncating first, so that a full
+  // disk needs no new block, then cut to its length; whole or not at all: a full disk keeps the
+  // earlier summary.json (if any) and says so.
+  const std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "r+");
+  if (!f) f = std::fopen(tmp.c_str(), "w");
+  if (!f) throw output_failure(tmp, errno);
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0 &&
+                       ftruncate(fileno(f), static_cast<off_t>(text.size())) == 0;
   const int write_errno = errno;
   if (std::fclose(f) != 0 || !written) {
     const int err = written ? errno : write_errno;

@@ -15,12 +15,15 @@
       with bitwise the same times and datasets, and results.xdmf must be byte-identical. The resumed
       summary.json reports its own steps (first_step = STEP, ns/element/step over its steps) and the
       segments' total wall and loop time; log.txt holds both segments.
-  parallel_check.py sigterm TRIBEX DECK OUT --ranks N --termination T
+  parallel_check.py sigterm TRIBEX DECK OUT --ranks N --termination T [--signal TERM|INT|USR1] [--sigkill-timeout S]
       DECK with its termination time set to T (written to OUT/deck.i) runs uninterrupted, then again
-      with SIGTERM sent to mpiexec alone (as a batch scheduler does at its time limit) once rank 0
-      prints "running ..." (the loop has begun): Open MPI forwards it to the ranks, which finish the step and write their outputs
-      and a restart file (summary.json status "interrupted", exit_code 130); resumed from restart.h5,
-      the history must equal the uninterrupted one byte for byte.
+      with the signal sent to mpiexec alone (as a batch scheduler does at its time limit) once rank 0
+      prints "running ..." (the loop has begun). SIGTERM/SIGINT: Open MPI sends the ranks SIGCONT, then
+      SIGTERM and SIGKILL S s apart (S = odls_base_sigkill_timeout, default 1); the ranks must stop at the
+      SIGCONT (log.txt says so, summary.json written before S s) and mpiexec exits 1 (Open MPI's own code).
+      SIGUSR1 is forwarded; mpiexec exits with the ranks' 130. Either way: summary.json status
+      "interrupted", exit_code 130, a valid history.csv and results.h5 (every step results.xdmf names),
+      and restart.h5, from which the resumed history must equal the uninterrupted one byte for byte.
   parallel_check.py failure TRIBEX DECK OUT --ranks N --expect-code C --expect TEXT
       runs DECK (meant to fail; not quiet, so that rank 0 prints its log); exit code C, TEXT printed
       exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
@@ -225,10 +228,30 @@ def restart(a):
     print("PASS")
 
 
+def valid_outputs(out):
+    """history.csv: the header and whole numeric rows; results.h5 opens and holds every step results.xdmf
+    names. Returns (history rows, results steps) or exits with FAIL."""
+    import h5py
+    import re
+    rows = list(csv.reader(open(os.path.join(out, "history.csv"))))
+    if rows[0][:2] != ["step", "time"] or len(rows) < 2 or any(len(r) != len(rows[0]) for r in rows[1:]):
+        sys.exit("FAIL: history.csv is not a header and whole rows")
+    [float(v) for r in rows[1:] for v in r]
+    with h5py.File(os.path.join(out, "results.h5"), "r") as f:
+        steps = set(f["steps"])
+    named = set(re.findall(r"(step_\d+)", open(os.path.join(out, "results.xdmf")).read()))
+    if not named or not named <= steps:
+        sys.exit(f"FAIL: results.xdmf names steps results.h5 lacks: {sorted(named - steps)[:3]}")
+    return len(rows) - 1, len(steps)
+
+
 def sigterm(a):
+    """A signal to mpiexec alone (a batch scheduler at its time limit: SIGTERM; Ctrl-C: SIGINT; SIGUSR1),
+    with Open MPI's default odls_base_sigkill_timeout or --sigkill-timeout T in its environment."""
     import json
     import re
     import signal
+    import time
     with open(a.deck) as f:
         text = f.read()
     deck = deck_copy(a, re.sub(r"termination time = [^\n#]*", f"termination time = {a.termination}", text, count=1))
@@ -237,6 +260,10 @@ def sigterm(a):
         shutil.rmtree(d, ignore_errors=True)
     run(a.tribex, deck, full, a.ranks)
     env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
+    env.pop("OMPI_MCA_odls_base_sigkill_timeout", None)
+    if a.sigkill_timeout:
+        env["OMPI_MCA_odls_base_sigkill_timeout"] = str(a.sigkill_timeout)
+    grace = 2 * (a.sigkill_timeout or 1)  # SIGCONT, SIGTERM after the timeout, SIGKILL after another
     job = subprocess.Popen(launcher(a.ranks) + [a.tribex, "run", deck, "-o", cut], env=env,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1)
     # Signal once the ranks are in the time-step loop: rank 0 prints "running ..." as it enters it.
@@ -247,15 +274,41 @@ def sigterm(a):
             break
     if job.poll() is not None:
         sys.exit(f"FAIL: the run ended (exit {job.returncode}) before its loop began\n{''.join(before)}")
-    job.send_signal(signal.SIGTERM)  # to mpiexec only
-    output, _ = job.communicate(timeout=120)
+    time.sleep(0.5)  # some steps into the loop
+    if job.poll() is not None:
+        sys.exit(f"FAIL: the run ended (exit {job.returncode}) before the signal; give it a longer --termination")
+    sig = getattr(signal, "SIG" + a.signal)
+    sent = time.time()
+    job.send_signal(sig)  # to mpiexec only
+    output, _ = job.communicate(timeout=120 + 2 * grace)
+    ended = time.time() - sent
     with open(os.path.join(cut, "summary.json")) as f:
         summary = json.load(f)
-    print(f"SIGTERM to mpiexec in the loop: mpiexec exit {job.returncode}; summary.json status "
-          f"{summary['status']!r}, exit_code {summary['exit_code']}, step {summary['steps']}; restart.h5 "
-          f"{'present' if os.path.exists(os.path.join(cut, 'restart.h5')) else 'MISSING'}")
+    written = os.path.getmtime(os.path.join(cut, "summary.json")) - sent
+    with open(os.path.join(cut, "log.txt")) as f:
+        log = f.read()
+    reason = next((line for line in log.split("\n") if line.startswith("stopping after step")), "(no stop line)")
+    print(f"SIG{a.signal} to mpiexec in the loop ({a.ranks} ranks, odls_base_sigkill_timeout "
+          f"{a.sigkill_timeout or 'default 1'}): mpiexec exit {job.returncode} after {ended:.1f} s; summary.json "
+          f"status {summary['status']!r}, exit_code {summary['exit_code']}, step {summary['steps']}, written "
+          f"{written:.2f} s after the signal; restart.h5 "
+          f"{'present' if os.path.exists(os.path.join(cut, 'restart.h5')) else 'MISSING'}; log: {reason}")
     if summary["status"] != "interrupted" or summary["exit_code"] != 130 or not os.path.exists(os.path.join(cut, "restart.h5")):
         sys.exit(f"FAIL: the signalled run did not stop cleanly\n{output}")
+    # mpiexec's own code: SIGUSR1 is forwarded and mpiexec ends with the ranks' 130; after SIGTERM or
+    # SIGINT Open MPI 4.1 exits 1 whatever the ranks return (its clean_abort sets the status, and the
+    # kill sequence cancels the wait for the ranks' codes: docs/architecture.md "Signals").
+    expected = 130 if a.signal == "USR1" else 1
+    if job.returncode != expected:
+        sys.exit(f"FAIL: mpiexec exited {job.returncode}, expected {expected}\n{output}")
+    # The ranks stop at mpiexec's first signal (SIGCONT for SIGTERM/SIGINT), not at the SIGTERM that comes
+    # odls_base_sigkill_timeout later: log.txt names it, and with a timeout set summary.json is written
+    # before it (with the default 1 s the margin is too small to time on a loaded machine).
+    late = a.sigkill_timeout and written >= a.sigkill_timeout
+    if a.signal != "USR1" and ("SIGCONT from mpirun" not in reason or late):
+        sys.exit(f"FAIL: the ranks did not stop at mpiexec's SIGCONT (summary.json {written:.2f} s after the signal)")
+    rows, steps = valid_outputs(cut)
+    print(f"valid outputs: {rows} history rows, {steps} results steps")
     run(a.tribex, deck, cut, a.ranks, "--restart", os.path.join(cut, "restart.h5"))
     with open(os.path.join(full, "history.csv"), "rb") as f:
         x = f.read()
@@ -301,6 +354,9 @@ def main():
     ap.add_argument("--expect", default="")
     ap.add_argument("--serial-restart-at", type=int, default=-1)
     ap.add_argument("--termination", default="")
+    ap.add_argument("--signal", default="TERM", choices=["TERM", "INT", "USR1"], help="sigterm: the signal for mpiexec")
+    ap.add_argument("--sigkill-timeout", type=int, default=0,
+                    help="sigterm: OMPI_MCA_odls_base_sigkill_timeout for mpiexec (0: Open MPI's default, 1 s)")
     ap.add_argument("--decomposition", default="",
                     help='agree: "METHOD SX SY SZ", both runs with this `begin decomposition` (OUT/deck.i)')
     ap.add_argument("--expect-partition", default="",

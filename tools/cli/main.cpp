@@ -99,7 +99,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 2, argv + argc);
   for (const auto& c : commands) {
     if (name == c.name && name == "run") {
-      tribex::solver::install_stop_handlers();  // before anything is read or written (solver/stop_signal.hpp)
+      // Before anything is read or written (solver/stop_signal.hpp); a rank of mpirun also takes its
+      // launcher's SIGCONT, the first signal of the kill sequence that ends the job.
+      tribex::solver::install_stop_handlers(launched_by_mpirun());
       return run_parallel(argc, argv, c, args);
     }
     if (name == c.name) return tribex::cli::run_mapping_errors([&] { return c.run(args); });
