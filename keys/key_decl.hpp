@@ -2,8 +2,9 @@
 // How a material model (materials/) or a contact law (contact/laws/) declares a deck key of its own,
 // and the values the deck gives those keys. One type for both lists: the deck schema, the deck
 // builder's checks (own keys, required keys, a key of another model) and the key reference are made
-// from these declarations by one code path (inputs/declared_keys.cpp), and a model reads its values
-// by key name, never by position, so reordering its declared keys cannot mis-assign them.
+// from these declarations by one code path (inputs/schema.cpp add_declared_keys,
+// inputs/deck_builder.cpp declared_values), and a model reads its values by key name, never by
+// position, so reordering its declared keys cannot mis-assign them.
 // Header-only, and the ground layer: it includes nothing of tribex, and every layer may include it
 // (docs/architecture.md "Dependency direction").
 #pragma once
