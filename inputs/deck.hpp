@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "contact/laws/law_key.hpp"
+#include "keys/key_decl.hpp"
 
 namespace tribex::inputs {
 
@@ -44,7 +45,7 @@ struct MaterialModelParameters {
   MaterialModel model = "elastic";
   double youngs_modulus = 0.0;  // Pa
   double poissons_ratio = 0.0;  // -
-  std::vector<double> parameters;  // the model's own keys, SI, in materials::model_parameters order
+  keys::KeyValues parameters;  // the model's own keys by name (materials::model_keys), SI, defaults filled in
   SourceLocation where;
 };
 
@@ -245,7 +246,7 @@ struct InteractionSpec {
   std::string model = "frictionless";  // a law's deck name, checked by the builder
   bool symmetric = false;
   InteractionEnforcement enforcement = InteractionEnforcement::node_to_face;
-  contact::LawValues values;           // the law's keys the deck gives (SI; paths resolved against the deck)
+  contact::KeyValues values;           // the law's keys the deck gives (SI; paths resolved against the deck)
   std::map<std::string, SourceLocation> key_where;  // where each of them is given
   SourceLocation where;
   /// Where key `key` is given, else the interaction's line.

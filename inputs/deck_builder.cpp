@@ -9,6 +9,7 @@
 #include <span>
 
 #include "contact/laws/contact_law.hpp"
+#include "inputs/declared_keys.hpp"
 #include "inputs/did_you_mean.hpp"
 #include "inputs/lexer.hpp"
 #include "materials/material.hpp"
@@ -138,7 +139,7 @@ class Builder {
       MaterialModelParameters mp;
       mp.where = p->where;
       mp.model = p->name;
-      mp.parameters = model_parameters(*p, mp.model);
+      mp.parameters = declared_values(*p, material_model_list(), materials::model_index(mp.model), material_wording());
       const bool e = p->find("youngs modulus"), nu = p->find("poissons ratio");
       const bool k = p->find("bulk modulus"), g = p->find("shear modulus");
       if (e && nu && !k && !g) {
@@ -160,35 +161,73 @@ class Builder {
     return m;
   }
 
-  // The model's own keys (materials::model_parameters) in their order, its defaults filled in; a
-  // key that belongs to another model is an error naming the model it belongs to.
-  std::vector<double> model_parameters(const Scope& p, const std::string& model) {
-    const int index = materials::model_index(model);
-    std::vector<double> values;
-    for (const materials::ParameterDecl& d : materials::model_parameters(index)) {
-      const std::string key(d.key);
-      if (p.find(key)) {
-        values.push_back(real(p, key));
-      } else if (!d.default_text.empty()) {
-        std::string why;  // the model's own default, in deck syntax ("0", "2 GPa"): SI
-        const auto q = parse_quantity(d.default_text, &why);
-        values.push_back(q ? q->value : 0.0);
-      } else {
-        values.push_back(0.0);
-        error(p.where, p, "model '" + model + "' needs '" + key + "' (" + std::string(d.help) + ", " +
-                              std::string(d.unit.empty() ? "dimensionless" : d.unit) + "); add it to 'begin parameters for model " +
-                              model + "'");
+  // How the messages of declared_values name a model of a list and where a missing key goes: the
+  // material models and the contact laws are worded differently, the checks are the same.
+  struct ListWording {
+    std::string (*owner)(const std::string& model);  // a model a key belongs to: 'model = a'
+    std::string (*self)(const std::string& model);   // the block's model, after "not"
+    std::string (*needs)(const std::string& model);  // the subject of "needs 'KEY'"
+    std::string (*add_to)(const std::string& model); // where to add a missing key
+    std::string other_fix;                           // the fix for a key of another model
+    std::string missing_at;                          // the key whose line a missing key is reported at ("": the block's)
+  };
+  static const ListWording& material_wording() {
+    static const ListWording w{[](const std::string& m) { return "'parameters for model " + m + "'"; },
+                               [](const std::string& m) { return "'" + m + "'"; },
+                               [](const std::string& m) { return "model '" + m + "'"; },
+                               [](const std::string& m) { return "'begin parameters for model " + m + "'"; },
+                               "remove the key or change the model", ""};
+    return w;
+  }
+  static const ListWording& law_wording() {
+    static const ListWording w{[](const std::string& m) { return "'model = " + m + "'"; },
+                               [](const std::string& m) { return "'model = " + m + "'"; },
+                               [](const std::string& m) { return "'model = " + m + "'"; },
+                               [](const std::string&) { return std::string("the interaction"); },
+                               "set the model or remove the key", "model"};
+    return w;
+  }
+
+  // The values of the keys model `index` of `list` declares (keys/key_decl.hpp), by name: what the
+  // block gives (SI; a path relative to the deck's folder) and the declared defaults. A key that only
+  // other models of the list declare is an error naming them; so is a missing required key.
+  keys::KeyValues declared_values(const Scope& s, const ModelList& list, int index, const ListWording& w) {
+    if (index < 0) return {};  // not a model of the list: the schema reported the name
+    const std::string& model = list.names[static_cast<std::size_t>(index)];
+    const auto own = list.keys[static_cast<std::size_t>(index)];
+    auto declares = [](std::span<const keys::KeyDecl> keys, const std::string& key) {
+      return std::any_of(keys.begin(), keys.end(), [&](const keys::KeyDecl& k) { return k.key == key; });
+    };
+    std::vector<std::string> seen;
+    for (const auto& other : list.keys)
+      for (const keys::KeyDecl& k : other) {
+        const std::string key(k.key);
+        if (declares(own, key) || !s.find(key) || std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+        seen.push_back(key);
+        std::string owners;
+        for (std::size_t m = 0; m < list.names.size(); ++m)
+          if (declares(list.keys[m], key)) owners += (owners.empty() ? "" : " or ") + w.owner(list.names[m]);
+        error(where(s, key), s, "'" + key + "' applies to " + owners + ", not " + w.self(model) + "; " + w.other_fix);
       }
-    }
-    const auto own = materials::model_parameters(index);
-    for (int m = 0; m < materials::model_count; ++m) {
-      if (m == index) continue;
-      for (const materials::ParameterDecl& d : materials::model_parameters(m)) {
-        const std::string key(d.key);
-        if (std::any_of(own.begin(), own.end(), [&](const materials::ParameterDecl& o) { return o.key == d.key; })) continue;
-        if (p.find(key))
-          error(where(p, key), p, "'" + key + "' applies to 'parameters for model " + materials::model_names()[m] +
-                                      "', not '" + model + "'; remove the key or change the model");
+    keys::KeyValues values;
+    for (const keys::KeyDecl& k : own) {
+      const std::string key(k.key);
+      if (s.find(key)) {
+        if (k.unit == "path") {
+          std::filesystem::path path(word(s, key));
+          if (path.is_relative()) path = std::filesystem::path(s.find(key)->where.file).parent_path() / path;
+          values.paths[key] = path.lexically_normal().string();
+        } else {
+          values.numbers[key] = real(s, key);
+        }
+      } else if (k.required) {
+        error(w.missing_at.empty() ? s.where : where(s, w.missing_at), s,
+              w.needs(model) + " needs '" + key + "' (" + std::string(k.help) + ", " +
+                  std::string(k.unit.empty() ? "dimensionless" : k.unit) + "); add it to " + w.add_to(model));
+      } else if (!k.default_text.empty()) {
+        std::string why;  // the model's own default, in deck syntax ("0", "2 GPa"): SI
+        const auto q = parse_quantity(k.default_text, &why);
+        values.numbers[key] = q ? q->value : 0.0;
       }
     }
     return values;
@@ -584,48 +623,16 @@ class Builder {
     return spec;
   }
 
-  // `model = LAW` and the law's keys (contact/laws/contact_law.hpp): a key of another law is an error
-  // naming the laws it belongs to, a required key of this law must be given, the law's own rules
-  // between its keys are checked here (so a deck `check` accepts sets up), and so is the enforcement.
+  // `model = LAW` and the law's keys (contact/laws/contact_law.hpp, declared_values above); the law's own
+  // rules between its keys are checked here (so a deck `check` accepts sets up), and so is the enforcement.
   void interaction_law(const Scope& it, InteractionSpec& i) {
     i.model = word(it, "model");
     if (i.model.empty()) i.model = "frictionless";
     const int law = contact::law_index(i.model);
     if (law < 0) return;  // the schema reported the choice
-    const auto own = contact::law_keys(law);
-    auto declares = [](std::span<const contact::LawKey> keys, const std::string& key) {
-      return std::any_of(keys.begin(), keys.end(), [&](const contact::LawKey& k) { return k.key == key; });
-    };
-    std::vector<std::string> seen;
-    for (int other = 0; other < contact::law_count; ++other)
-      for (const contact::LawKey& k : contact::law_keys(other)) {
-        const std::string key(k.key);
-        if (declares(own, key) || !it.find(key) || std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-        seen.push_back(key);
-        std::string laws;
-        for (int l = 0; l < contact::law_count; ++l)
-          if (declares(contact::law_keys(l), key))
-            laws += (laws.empty() ? "'model = " : " or 'model = ") + contact::law_names()[static_cast<std::size_t>(l)] + "'";
-        error(where(it, key), it, "'" + key + "' applies to " + laws + ", not 'model = " + i.model +
-                                      "'; set the model or remove the key");
-      }
-    for (const contact::LawKey& k : own) {
-      const std::string key(k.key);
-      if (!it.find(key)) {
-        if (k.required)
-          error(where(it, "model"), it, "'model = " + i.model + "' needs '" + key + "' (" + std::string(k.help) + ", " +
-                                            std::string(k.unit.empty() ? "dimensionless" : k.unit) + "); add it to the interaction");
-        continue;
-      }
-      i.key_where[key] = where(it, key);
-      if (k.unit == "path") {
-        std::filesystem::path path(word(it, key));
-        if (path.is_relative()) path = std::filesystem::path(it.find(key)->where.file).parent_path() / path;
-        i.values.paths[key] = path.lexically_normal().string();
-      } else {
-        i.values.numbers[key] = real(it, key);
-      }
-    }
+    i.values = declared_values(it, contact_law_list(), law, law_wording());
+    for (const keys::KeyDecl& k : contact::law_keys(law))
+      if (it.find(std::string(k.key))) i.key_where[std::string(k.key)] = where(it, std::string(k.key));
     if (const auto problem = contact::check_law(law, i.values))
       error(problem->key.empty() ? where(it, "model") : where(it, problem->key), it, problem->message);
     if (i.enforcement == InteractionEnforcement::mortar) {

@@ -5,9 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "inputs/declared_keys.hpp"
 #include "inputs/lexer.hpp"
-#include "contact/laws/contact_law.hpp"
-#include "materials/material.hpp"
 
 namespace tribex::inputs {
 namespace {
@@ -87,33 +86,47 @@ const std::vector<std::string> faces{"xmin", "xmax", "ymin", "ymax", "zmin", "zm
 const std::vector<std::string> models = materials::model_names();
 const std::vector<std::pair<std::string, std::string>> model_aliases = materials::model_aliases();
 
-// `begin parameters for model`: the elastic constants every model takes, then each model's own keys
-// (declared beside its law; no schema default, so that the resolved text of one model never carries
-// another's key: the builder fills the model's defaults and rejects the keys of other models).
+// After a block's own keys, every model's declared keys (keys/key_decl.hpp) from one list
+// (declared_keys.hpp): a key several models declare appears once, its help naming them; no schema
+// default, so that the resolved text of one model never carries another's key (the builder fills the
+// model's defaults and rejects the keys of other models, deck_builder.cpp declared_values).
+void add_declared_keys(std::vector<KeySchema>& keys, const ModelList& list) {
+  const std::size_t first = keys.size();
+  for (std::size_t m = 0; m < list.names.size(); ++m)
+    for (const keys::KeyDecl& k : list.keys[m]) {
+      const std::string key(k.key), model = list.names[m];
+      auto known = std::find_if(keys.begin() + static_cast<std::ptrdiff_t>(first), keys.end(),
+                                [&](const KeySchema& s) { return s.name == key; });
+      if (known != keys.end()) {
+        known->help.insert(known->help.size() - 1, ", " + model);  // "... (model a, b)"
+        continue;
+      }
+      const std::string help = std::string(k.help) + " (model " + model +
+                               (k.default_text.empty() ? "" : ", default " + std::string(k.default_text)) + ")";
+      if (k.unit == "path") {
+        keys.push_back(text(key, ValueKind::string, false, help));
+        continue;
+      }
+      std::string unit_error;
+      const auto unit = parse_unit(k.unit.empty() ? std::string_view("1") : k.unit, &unit_error);
+      const Dimension d = k.unit.empty() || !unit ? dim::none : unit->dimension;
+      const Range range = std::isfinite(k.lower_bound) ? Range{k.lower_bound, Range{}.hi, k.lower_open, false} : Range{};
+      keys.push_back(real(key, d, range, false, "", help));
+    }
+}
+
+// `begin parameters for model`: the elastic constants every model takes, then each model's own keys.
 std::vector<KeySchema> material_model_keys() {
   std::vector<KeySchema> keys{
       real("youngs modulus", dim::pressure, positive(), false, "", "E (give E and nu, or K and G)"),
       real("poissons ratio", dim::none, {-1.0, 0.5, true, true}, false, "", "nu"),
       real("bulk modulus", dim::pressure, positive(), false, "", "K (give E and nu, or K and G)"),
       real("shear modulus", dim::pressure, positive(), false, "", "G")};
-  for (int m = 0; m < materials::model_count; ++m)
-    for (const materials::ParameterDecl& p : materials::model_parameters(m)) {
-      const std::string key(p.key);
-      if (std::any_of(keys.begin(), keys.end(), [&](const KeySchema& k) { return k.name == key; })) continue;
-      std::string unit_error;
-      const auto unit = parse_unit(p.unit.empty() ? std::string_view("1") : p.unit, &unit_error);
-      const Dimension d = p.unit.empty() || !unit ? dim::none : unit->dimension;
-      const std::string model(materials::model_names()[static_cast<std::size_t>(m)]);
-      keys.push_back(real(key, d, {p.lower_bound, Range{}.hi, p.lower_open, false}, false, "",
-                          std::string(p.help) + " (model " + model +
-                              (p.default_text.empty() ? "" : ", default " + std::string(p.default_text)) + ")"));
-    }
+  add_declared_keys(keys, material_model_list());
   return keys;
 }
 
-// `begin interaction`: the pair, the law and the enforcement, then every contact law's keys from the
-// one list in contact/laws/contact_law.hpp (a key several laws take appears once, naming them; no
-// schema default: the builder rejects the keys of other laws and the law fills its own defaults).
+// `begin interaction`: the pair, the law and the enforcement, then every contact law's keys.
 std::vector<KeySchema> interaction_keys() {
   std::vector<KeySchema> keys{
       text("surfaces", ValueKind::strings, true,
@@ -124,26 +137,7 @@ std::vector<KeySchema> interaction_keys() {
       boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved"),
       choice("enforcement", ValueKind::enumeration, {"node to face", "mortar"}, false, "node to face",
              "node to face: penalty at slave nodes; mortar: segment-to-segment (patch test, face-quadrature adhesion)")};
-  const std::size_t first_law_key = keys.size();
-  for (int l = 0; l < contact::law_count; ++l)
-    for (const contact::LawKey& k : contact::law_keys(l)) {
-      const std::string key(k.key), law = contact::law_names()[static_cast<std::size_t>(l)];
-      auto known = std::find_if(keys.begin() + static_cast<std::ptrdiff_t>(first_law_key), keys.end(),
-                                [&](const KeySchema& s) { return s.name == key; });
-      if (known != keys.end()) {
-        known->help.insert(known->help.size() - 1, ", " + law);  // "... (model a, b)"
-        continue;
-      }
-      if (k.unit == "path") {
-        keys.push_back(text(key, ValueKind::string, false, std::string(k.help) + " (model " + law + ")"));
-        continue;
-      }
-      std::string unit_error;
-      const auto unit = parse_unit(k.unit.empty() ? std::string_view("1") : k.unit, &unit_error);
-      const Dimension d = k.unit.empty() || !unit ? dim::none : unit->dimension;
-      const Range range = std::isfinite(k.lower_bound) ? Range{k.lower_bound, Range{}.hi, k.lower_open, false} : Range{};
-      keys.push_back(real(key, d, range, false, "", std::string(k.help) + " (model " + law + ")"));
-    }
+  add_declared_keys(keys, contact_law_list());
   return keys;
 }
 

@@ -23,7 +23,6 @@
 
 #include <array>
 #include <cmath>
-#include <span>
 #include <string_view>
 
 #include "materials/lanes.hpp"
@@ -34,9 +33,10 @@ namespace tribex::materials {
 struct J2Plasticity {
   static constexpr std::string_view deck_name = "j2_plasticity";
   static constexpr std::string_view alias = "j2";
-  static constexpr std::array<ParameterDecl, 2> parameters{{
-      {"yield stress", "Pa", 0.0, true, "", "Y, initial uniaxial yield stress"},
-      {"hardening modulus", "Pa", 0.0, false, "0", "K, slope of uniaxial stress against plastic strain"},
+  static constexpr bool finite_strain = false;  // small strain: S is the Cauchy stress
+  static constexpr std::array<KeyDecl, 2> keys{{
+      {"yield stress", "Pa", 0.0, true, true, "Y, initial uniaxial yield stress"},
+      {"hardening modulus", "Pa", 0.0, false, false, "K, slope of uniaxial stress against plastic strain", "0"},
   }};
   /// Per material point: eps_p (xx yy zz xy yz zx, tensor components) and alpha.
   static constexpr int state_size = 7;
@@ -49,8 +49,8 @@ struct J2Plasticity {
   double yield_stress = 0.0;       // Y, Pa
   double hardening_modulus = 0.0;  // K, Pa
 
-  static J2Plasticity make(double lambda_, double mu_, double density_, std::span<const double> p) {
-    return {lambda_, mu_, density_, p[0], p[1]};
+  static J2Plasticity make(double lambda_, double mu_, double density_, const KeyValues& values) {
+    return {lambda_, mu_, density_, values.at("yield stress"), values.at("hardening modulus")};
   }
 
   /// Stress S (Cauchy, symmetric, row-major 3x3) at the gradient H and state n -> n+1 in place;

@@ -9,7 +9,6 @@
 #pragma once
 
 #include <array>
-#include <span>
 #include <string_view>
 
 #include "materials/parameter.hpp"
@@ -19,12 +18,13 @@ namespace tribex::materials {
 struct LinearElastic : Hyperelastic {
   static constexpr std::string_view deck_name = "elastic";
   static constexpr std::string_view alias = "";
+  static constexpr bool finite_strain = false;  // S is the Cauchy stress of eps = sym(H)
 
   double lambda = 0.0;
   double mu = 0.0;
   double density = 0.0;
 
-  static LinearElastic make(double lambda_, double mu_, double density_, std::span<const double> /*parameters*/) {
+  static LinearElastic make(double lambda_, double mu_, double density_, const KeyValues& /*values*/) {
     return {{}, lambda_, mu_, density_};
   }
 

@@ -7,10 +7,11 @@
 //
 // Every model provides (README.md, "Adding a material"):
 //   static constexpr std::string_view deck_name, alias ("" for none);
-//   static constexpr std::array<ParameterDecl, N> parameters;   // its deck keys beyond E and nu
-//   static constexpr int state_size;                             // doubles per material point
-//   static constexpr bool dissipates;                            // returns plastic work
-//   static M make(double lambda, double mu, double density, std::span<const double> parameters);
+//   static constexpr std::array<KeyDecl, N> keys;   // its deck keys beyond E and nu (keys/key_decl.hpp)
+//   static constexpr bool finite_strain;             // S is P (objective); false: small-strain Cauchy
+//   static constexpr int state_size;                 // doubles per material point
+//   static constexpr bool dissipates;                // returns plastic work
+//   static M make(double lambda, double mu, double density, const KeyValues& values);  // values by key name
 //   stateless (state_size == 0):
 //     T force_stress(const T H[9], T S[9]) const;     // S with f_iI = S_iJ B0_JI; returns W (J/m^3)
 //     void cauchy_stress(const double H[9], double voigt[6]) const;
@@ -18,9 +19,10 @@
 //   the update dissipates (J/m^3):
 //     T force_stress(const T H[9], T* state, double dt, T S[9], T& dissipated) const;
 //     void cauchy_stress(const double H[9], const double* state, double voigt[6]) const;
-//   double wave_modulus(const double* H) const;   // M = lambda + 2 mu (tangent), Pa; H may be null
+//   double wave_modulus(const double* H) const;   // P-wave modulus of the tangent at H, Pa; H may be
+//                                                 // null (the reference value); the rule: README.md
 //   double density, mu;                           // kg/m^3, Pa
-// T = double or double2 (lanes.hpp).
+// T = double, double2, double4 or double8 (lanes.hpp; the last two only in the AVX2 / AVX-512 files).
 #pragma once
 
 #include <span>
@@ -73,23 +75,24 @@ inline int model_index(std::string_view name) {
   return found;
 }
 /// The deck keys of model `index` beyond the elastic constants.
-inline std::span<const ParameterDecl> model_parameters(int index) {
-  std::span<const ParameterDecl> keys;
+inline std::span<const KeyDecl> model_keys(int index) {
+  std::span<const KeyDecl> found;
   for_each_model([&](auto m, int i) {
-    if (i == index) keys = decltype(m)::type::parameters;
+    if (i == index) found = decltype(m)::type::keys;
   });
-  return keys;
+  return found;
 }
 
 /// Lame constants from Young's modulus and Poisson's ratio.
 inline double lame_lambda(double E, double nu) { return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)); }
 inline double lame_mu(double E, double nu) { return E / (2.0 * (1.0 + nu)); }
 
-/// Model `index` from its elastic constants, density and its own parameters (model_parameters order).
-inline Material make_material(int index, double E, double nu, double density, std::span<const double> parameters) {
+/// Model `index` from its elastic constants, density and the values of its own keys (model_keys, by
+/// name, defaults filled in).
+inline Material make_material(int index, double E, double nu, double density, const KeyValues& values) {
   Material made;
   for_each_model([&](auto m, int i) {
-    if (i == index) made = decltype(m)::type::make(lame_lambda(E, nu), lame_mu(E, nu), density, parameters);
+    if (i == index) made = decltype(m)::type::make(lame_lambda(E, nu), lame_mu(E, nu), density, values);
   });
   return made;
 }

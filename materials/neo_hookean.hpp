@@ -7,7 +7,6 @@
 #pragma once
 
 #include <array>
-#include <span>
 #include <string_view>
 
 #include "materials/parameter.hpp"
@@ -22,12 +21,13 @@ namespace tribex::materials {
 struct NeoHookean : Hyperelastic {
   static constexpr std::string_view deck_name = "neo_hookean";
   static constexpr std::string_view alias = "neohookean";
+  static constexpr bool finite_strain = true;  // S is the first Piola-Kirchhoff stress, objective
 
   double lambda = 0.0;
   double mu = 0.0;
   double density = 0.0;
 
-  static NeoHookean make(double lambda_, double mu_, double density_, std::span<const double> /*parameters*/) {
+  static NeoHookean make(double lambda_, double mu_, double density_, const KeyValues& /*values*/) {
     return {{}, lambda_, mu_, density_};
   }
 

@@ -26,24 +26,24 @@ struct Adhesion {
   // The default cut-off h_c = 20 z0 keeps 99.03 % of W (docs/theory.md 6.3; 5 z0 keeps 86.1 %, 10 z0 96.3 %).
   static constexpr double default_cutoff_in_z0 = 20.0;
   static constexpr double default_gap_tolerance_in_z0 = 0.05;
-  static constexpr LawKey work_key{"work of adhesion", "J/m^2", 0.0, true, true, "W of the Lennard-Jones adhesion law"};
-  static constexpr LawKey z0_key{"equilibrium separation", "m", 0.0, true, true, "z0 of the Lennard-Jones adhesion law"};
-  static constexpr LawKey cutoff_key{"adhesion cutoff", "m", 0.0, true, false,
+  static constexpr KeyDecl work_key{"work of adhesion", "J/m^2", 0.0, true, true, "W of the Lennard-Jones adhesion law"};
+  static constexpr KeyDecl z0_key{"equilibrium separation", "m", 0.0, true, true, "z0 of the Lennard-Jones adhesion law"};
+  static constexpr KeyDecl cutoff_key{"adhesion cutoff", "m", 0.0, true, false,
                                      "cut-off separation h_c, measured like h = gap + z0, > z0 (default 20 z0: keeps 99 % of W)"};
-  static constexpr std::array<LawKey, 3> keys{work_key, z0_key, cutoff_key};
+  static constexpr std::array<KeyDecl, 3> keys{work_key, z0_key, cutoff_key};
   static constexpr bool penalty = true;
   static constexpr bool mortar = true;
   static constexpr int state_size = 0;
   static constexpr bool reads_velocity = false;
 
-  static std::optional<LawProblem> check(const LawValues& v) {
+  static std::optional<LawProblem> check(const KeyValues& v) {
     const auto cutoff = v.find("adhesion cutoff"), z0 = v.find("equilibrium separation");
     if (cutoff && z0 && !(*cutoff > *z0))
       return LawProblem{"adhesion cutoff", "'adhesion cutoff' is the cut-off separation h_c (measured like h = gap + z0) "
                                            "and must exceed 'equilibrium separation' z0; use e.g. 5 z0"};
     return std::nullopt;
   }
-  static Adhesion make(const LawValues& v) {
+  static Adhesion make(const KeyValues& v) {
     Adhesion a;
     a.lj.work = v.get("work of adhesion", 0.0);
     a.lj.z0 = v.get("equilibrium separation", 0.0);

@@ -7,12 +7,12 @@
 //
 // Every law provides (README.md, "Adding a contact law"):
 //   static constexpr std::string_view deck_name;            // `model = ...`
-//   static constexpr std::array<LawKey, N> keys;            // its deck keys (law_key.hpp)
+//   static constexpr std::array<KeyDecl, N> keys;            // its deck keys (law_key.hpp)
 //   static constexpr bool penalty;                          // penalty normal contact for g < 0
 //   static constexpr bool mortar;                           // also with enforcement = mortar
 //   static constexpr int state_size;                        // doubles of state per slave node (restart carries them)
-//   static std::optional<LawProblem> check(const LawValues&);   // rules between its keys (deck check time)
-//   static L make(const LawValues&);                        // defaults filled in; may throw LawError
+//   static std::optional<LawProblem> check(const KeyValues&);   // rules between its keys (deck check time)
+//   static L make(const KeyValues&);                        // defaults filled in; may throw LawError
 //   std::string describe() const;                           // one line for the run log
 //   double reach() const;                                   // largest gap it acts at (the search margin covers it), m
 // and optionally the hooks of the node-to-face pass (node_to_face/pass_view.hpp):
@@ -52,7 +52,7 @@ void for_each_law(F&& f) {
 /// its normal contact is the penalty (the set-up's slave/master order depends on it).
 struct LawInfo {
   std::string_view deck_name;
-  std::span<const LawKey> keys;
+  std::span<const KeyDecl> keys;
   bool mortar = false;
   bool penalty = false;
 };
@@ -76,7 +76,7 @@ inline int law_index(std::string_view name) {
     if (law_info(i).deck_name == name) return i;
   return -1;
 }
-inline std::span<const LawKey> law_keys(int index) { return law_info(index).keys; }
+inline std::span<const KeyDecl> law_keys(int index) { return law_info(index).keys; }
 inline bool law_supports_mortar(int index) { return law_info(index).mortar; }
 /// "" when law `index` runs with the mortar enforcement, else why not and what to do (the deck
 /// builder and the manager both ask here: the pairing is decided in one place).
@@ -91,7 +91,7 @@ inline std::string mortar_problem(int index) {
   return "'enforcement = mortar' supports " + list + "; use 'enforcement = node to face' for 'model = " +
          law_names()[static_cast<std::size_t>(index)] + "'";
 }
-inline std::optional<LawProblem> check_law(int index, const LawValues& values) {
+inline std::optional<LawProblem> check_law(int index, const KeyValues& values) {
   std::optional<LawProblem> problem;
   for_each_law([&](auto l, int i) {
     if (i == index) problem = decltype(l)::type::check(values);
@@ -99,7 +99,7 @@ inline std::optional<LawProblem> check_law(int index, const LawValues& values) {
   return problem;
 }
 /// Law `index` from the deck's values (defaults filled in); throws LawError.
-inline ContactLaw make_law(int index, const LawValues& values) {
+inline ContactLaw make_law(int index, const KeyValues& values) {
   ContactLaw made;
   for_each_law([&](auto l, int i) {
     if (i == index) made = decltype(l)::type::make(values);

@@ -29,7 +29,7 @@ struct Coulomb {
   Adhesion adhesion;                 // when `work of adhesion` is given
 
   static constexpr std::string_view deck_name = "coulomb";
-  static constexpr std::array<LawKey, 6> keys{{
+  static constexpr std::array<KeyDecl, 6> keys{{
       {"static friction coefficient", "", 0.0, true, true, "mu_s: a node sticks while its tangential force is at most mu_s N"},
       {"kinetic friction coefficient", "", 0.0, false, false, "mu_k <= mu_s: the sliding force mu_k N (default mu_s)"},
       {"friction reference speed", "m/s", 0.0, false, false,
@@ -39,7 +39,7 @@ struct Coulomb {
   static constexpr bool mortar = false;
   static constexpr int state_size = 1;  // 1: the node slid in its last step in contact, 0: stuck
 
-  static std::optional<LawProblem> check(const LawValues& v) {
+  static std::optional<LawProblem> check(const KeyValues& v) {
     const double mu_s = v.get("static friction coefficient", 0.0);
     if (v.get("kinetic friction coefficient", mu_s) > mu_s)
       return LawProblem{"kinetic friction coefficient",
@@ -53,7 +53,7 @@ struct Coulomb {
                                            "add them or remove the key"};
     return Adhesion::check(v);
   }
-  static Coulomb make(const LawValues& v) {
+  static Coulomb make(const KeyValues& v) {
     Coulomb c;
     c.static_coefficient = v.get("static friction coefficient", 0.0);
     c.kinetic_coefficient = v.get("kinetic friction coefficient", c.static_coefficient);

@@ -13,13 +13,13 @@ namespace tribex::contact {
 
 struct Frictionless {
   static constexpr std::string_view deck_name = "frictionless";
-  static constexpr std::array<LawKey, 0> keys{};
+  static constexpr std::array<KeyDecl, 0> keys{};
   static constexpr bool penalty = true;    // penalty normal contact for g < 0
   static constexpr bool mortar = true;     // also with enforcement = mortar
   static constexpr int state_size = 0;     // doubles of state per slave node
   static constexpr bool reads_velocity = false;  // positions only (reads_velocity in contact_law.hpp)
-  static std::optional<LawProblem> check(const LawValues&) { return std::nullopt; }
-  static Frictionless make(const LawValues&) { return {}; }
+  static std::optional<LawProblem> check(const KeyValues&) { return std::nullopt; }
+  static Frictionless make(const KeyValues&) { return {}; }
   std::string describe() const { return "frictionless penalty contact"; }
   double reach() const { return 0.0; }     // gap beyond which the law does nothing, m
 };

@@ -27,20 +27,20 @@ struct Junction {
   JunctionLaw shear;
 
   static constexpr std::string_view deck_name = "junction";
-  static constexpr std::array<LawKey, 6> keys{
+  static constexpr std::array<KeyDecl, 6> keys{
       Adhesion::work_key, Adhesion::z0_key, Adhesion::cutoff_key,
-      LawKey{"junction strength", "Pa", 0.0, true, true, "tau*, the junction shear strength"},
-      LawKey{"junction reference speed", "m/s", 0.0, true, false,
+      KeyDecl{"junction strength", "Pa", 0.0, true, true, "tau*, the junction shear strength"},
+      KeyDecl{"junction reference speed", "m/s", 0.0, true, false,
              "v_ref of tau* tanh(|v_t|/v_ref) (default 0.1 m/s; no stability floor: backward Euler)"},
-      LawKey{"junction gap tolerance", "m", 0.0, false, false, "a node is in contact when gap <= this (default 0.05 z0)"}};
+      KeyDecl{"junction gap tolerance", "m", 0.0, false, false, "a node is in contact when gap <= this (default 0.05 z0)"}};
   static constexpr bool penalty = true;
   static constexpr bool mortar = false;
   static constexpr bool area_from_shares = true;  // the pass does not count penalty nodes' areas
   static constexpr int state_size = 0;
   static constexpr double default_reference_speed = 0.1;  // m/s
 
-  static std::optional<LawProblem> check(const LawValues& v) { return Adhesion::check(v); }
-  static Junction make(const LawValues& v) {
+  static std::optional<LawProblem> check(const KeyValues& v) { return Adhesion::check(v); }
+  static Junction make(const KeyValues& v) {
     Junction j;
     j.adhesion = Adhesion::make(v);
     j.shear.strength = v.get("junction strength", 0.0);

@@ -1,54 +1,27 @@
 // SPDX-License-Identifier: MIT
 // How a contact law declares its deck keys (beside the law, contact/laws/README.md): the deck schema,
-// the deck builder's checks and the key reference are made from these declarations, and the values
-// the deck gives reach the law's make() as LawValues. Keys shared by several laws (the adhesion keys)
-// are declared by each law that takes them, with the same unit.
+// the deck builder's checks and the key reference are made from these declarations (KeyDecl, shared
+// with the material models), and the values the deck gives reach the law's make() as KeyValues.
+// Keys shared by several laws (the adhesion keys) are declared by each law that takes them, with the
+// same unit. Here also what the laws share beyond their keys: LawProblem, LawError, format_line.
 #pragma once
 
 #include <cstdarg>
 #include <cstdio>
 #include <algorithm>
-#include <map>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
+#include "keys/key_decl.hpp"
+
 namespace tribex::contact {
 
-struct LawKey {
-  std::string_view key;       // deck key: lower case, words separated by one blank
-  std::string_view unit;      // SI unit of the value ("Pa", "m", "J/m^2"); "" a pure number; "path" a file name
-  double lower_bound = 0.0;   // the value must be above (open) or at least (closed) this
-  bool lower_open = true;
-  bool required = false;      // the law needs it (else the law's default, stated in `help`)
-  std::string_view help;      // one line for the key reference and error messages
-};
-
-/// The same key, optional (a law that takes another law's keys as an option: Coulomb's adhesion).
-constexpr LawKey optional_key(LawKey key) {
-  key.required = false;
-  return key;
-}
-
-/// The values of a law's keys that the deck gives (SI; paths resolved against the deck's folder).
-struct LawValues {
-  std::map<std::string, double, std::less<>> numbers;
-  std::map<std::string, std::string, std::less<>> paths;
-  bool has(std::string_view key) const { return numbers.count(key) > 0 || paths.count(key) > 0; }
-  double get(std::string_view key, double fallback) const {
-    const auto it = numbers.find(key);
-    return it == numbers.end() ? fallback : it->second;
-  }
-  std::optional<double> find(std::string_view key) const {
-    const auto it = numbers.find(key);
-    return it == numbers.end() ? std::nullopt : std::optional<double>(it->second);
-  }
-  std::string path(std::string_view key) const {
-    const auto it = paths.find(key);
-    return it == paths.end() ? std::string() : it->second;
-  }
-};
+// The deck keys of a law and the values the deck gives them: the declaration shared with the material
+// models (keys/key_decl.hpp).
+using keys::KeyDecl;
+using keys::KeyValues;
+using keys::optional_key;
 
 /// What is wrong with a law's values: the deck key to point at ("" : the `model` line) and the
 /// message with its fix (the caller adds FILE:LINE).

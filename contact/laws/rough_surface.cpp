@@ -70,7 +70,7 @@ void add_shear(const ContactPoint& p, const JunctionLaw& law, PassView& view, do
 
 }  // namespace
 
-RoughSurface RoughSurface::make(const LawValues& v) {
+RoughSurface RoughSurface::make(const KeyValues& v) {
   RoughSurfaceParameters q;
   q.composite_modulus = v.get("composite modulus", 0.0);
   q.work_of_adhesion = v.get("work of adhesion", 0.0);

@@ -30,7 +30,7 @@ struct RoughSurface {
 
   static constexpr std::string_view deck_name = "rough surface";
   static constexpr double default_noncontact_cutoff_in_z0 = 200.0;
-  static constexpr std::array<LawKey, 13> keys{{
+  static constexpr std::array<KeyDecl, 13> keys{{
       {"composite modulus", "Pa", 0.0, true, true, "E* = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) of the asperity contacts"},
       {"summit density", "1/m^2", 0.0, true, false, "eta, summits per nominal area (or a summit file)"},
       {"summit radius", "m", 0.0, true, false, "R_s, mean summit radius (or a summit file)"},
@@ -53,7 +53,7 @@ struct RoughSurface {
   static constexpr int state_size = 0;
 
   /// Continuous (the three summit keys) or discrete (summit file and its map area), not both.
-  static std::optional<LawProblem> check(const LawValues& v) {
+  static std::optional<LawProblem> check(const KeyValues& v) {
     if (auto problem = check_noncontact(v)) return problem;
     const char* continuous_keys[] = {"summit density", "summit radius", "summit height deviation"};
     if (v.has("summit file")) {
@@ -74,7 +74,7 @@ struct RoughSurface {
     return std::nullopt;
   }
   /// The non-contact attraction: its z0 switches it on and needs W and continuous summits.
-  static std::optional<LawProblem> check_noncontact(const LawValues& v) {
+  static std::optional<LawProblem> check_noncontact(const KeyValues& v) {
     const auto z0 = v.find("noncontact equilibrium separation");
     for (const char* k : {"noncontact cutoff", "surface height deviation"})
       if (v.has(k) && !z0)
@@ -92,7 +92,7 @@ struct RoughSurface {
     return std::nullopt;
   }
   /// Reads the summit file (LawError naming FILE:LINE) and tabulates the law.
-  static RoughSurface make(const LawValues& v);
+  static RoughSurface make(const KeyValues& v);
   std::string describe() const;
   /// Beyond this gap the law is zero: its reach (contact separation, or the non-contact attraction's)
   /// minus the offset, m.

@@ -19,10 +19,12 @@ namespace {
 
 constexpr double E = 161e9, nu = 0.23, Y = 4e9, K = 20e9;
 
-J2Plasticity silicon_like() {
-  const double p[2] = {Y, K};
-  return J2Plasticity::make(lame_lambda(E, nu), lame_mu(E, nu), 2330.0, p);
+KeyValues silicon_keys() {
+  KeyValues v;
+  v.numbers = {{"yield stress", Y}, {"hardening modulus", K}};
+  return v;
 }
+J2Plasticity silicon_like() { return J2Plasticity::make(lame_lambda(E, nu), lame_mu(E, nu), 2330.0, silicon_keys()); }
 
 // One increment of uniaxial stress: the lateral strain that makes sigma_yy = sigma_zz = 0, found
 // by Newton on a copy of the state at n (the stress is piecewise linear in the lateral strain).
@@ -117,8 +119,9 @@ TEST(J2Plasticity, SimpleShearFollowsTheBilinearClosedForm) {
 }
 
 TEST(J2Plasticity, PerfectPlasticityHoldsTheYieldStress) {
-  const double p[2] = {Y, 0.0};
-  const J2Plasticity m = J2Plasticity::make(lame_lambda(E, nu), lame_mu(E, nu), 2330.0, p);
+  KeyValues perfect;
+  perfect.numbers = {{"yield stress", Y}, {"hardening modulus", 0.0}};
+  const J2Plasticity m = J2Plasticity::make(lame_lambda(E, nu), lame_mu(E, nu), 2330.0, perfect);
   std::array<double, 7> state{};
   double S[9], d;
   for (int n = 1; n <= 100; ++n) {
@@ -181,13 +184,13 @@ TEST(MaterialRegistry, OneListDrivesNamesParametersAndConstruction) {
   EXPECT_EQ(model_index("neo_hookean"), 1);
   const int j2 = model_index("j2_plasticity");
   ASSERT_GE(j2, 0);
-  ASSERT_EQ(model_parameters(j2).size(), 2u);
-  EXPECT_EQ(model_parameters(j2)[0].key, "yield stress");
+  ASSERT_EQ(model_keys(j2).size(), 2u);
+  EXPECT_EQ(model_keys(j2)[0].key, "yield stress");
   EXPECT_EQ(model_index("no_such_model"), -1);
-  const double p[2] = {Y, K};
-  const Material made = make_material(j2, E, nu, 2330.0, p);
+  const Material made = make_material(j2, E, nu, 2330.0, silicon_keys());
   ASSERT_TRUE(std::holds_alternative<J2Plasticity>(made));
   EXPECT_EQ(std::get<J2Plasticity>(made).yield_stress, Y);
+  EXPECT_EQ(std::get<J2Plasticity>(made).hardening_modulus, K);
   EXPECT_EQ(model_name(made), "j2_plasticity");
   EXPECT_EQ(state_size_of(made), 7);
   EXPECT_TRUE(dissipates(made));
@@ -204,7 +207,7 @@ TEST(MaterialRegistry, EveryDeclaredKeyHasAParsableDefaultOrIsRequired) {
   // The deck builder reads a model's defaults with inputs::parse_quantity: a default it cannot
   // parse would silently become 0, so every one must parse, to a number within its bound.
   for (int m = 0; m < model_count; ++m)
-    for (const ParameterDecl& d : model_parameters(m)) {
+    for (const KeyDecl& d : model_keys(m)) {
       std::string why;
       if (!d.unit.empty()) {
         EXPECT_TRUE(inputs::parse_unit(d.unit, &why)) << d.key << ": " << why;
