@@ -3,7 +3,8 @@
 // the lanes' own arithmetic: the same IEEE operations in every lane and no fused multiply-add (the
 // kernels' files are built without contraction), so a lane's result does not depend on the vector
 // width it ran at, and the whole register is done at once (two lanes per call of glibc's libmvec
-// routine was 16 % of the fully integrated neo-Hookean step at four lanes: tools/bench/README.md).
+// routine was 16 % of the fully integrated neo-Hookean step at four lanes:
+// docs/measurements/2026-11-27-bench-element-kernels.md).
 //
 // Algorithm (the reduction and the minimax polynomial of Sun's fdlibm e_log.c, 1993, as described
 // in its comments; the code is ours): x = 2^k (1 + f) with 1 + f in [sqrt(2)/2, sqrt(2)),

@@ -76,8 +76,9 @@ void DeckRun::build_parts() {
   if (root_) {
     // Arrays of 1 MB and more mapped and unmapped one by one, so that each one freed goes back to the
     // system at once: glibc's default threshold grows with the first large free (up to 32 MB), after
-    // which the serial stage's temporaries stayed resident and added up (tools/bench/README.md
-    // "Counts per rank"). It holds for the rest of the run: the loop allocates nothing, and the
+    // which the serial stage's temporaries stayed resident and added up
+    // (docs/measurements/2026-11-26-bench-rank-counts.md "Rank 0's set-up, contact patches, positions-only
+    // ghost rows"). It holds for the rest of the run: the loop allocates nothing, and the
     // outputs' occasional large buffers cost a map and unmap each.
     mallopt(M_MMAP_THRESHOLD, 1 << 20);
     try {

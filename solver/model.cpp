@@ -113,7 +113,8 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
       elements += box_elements;
     }
     // The boxes written in place into room reserved for all of them: a large mesh is never copied
-    // (rank 0's peak memory in a parallel set-up, tools/bench/README.md "Counts per rank").
+    // (rank 0's peak memory in a parallel set-up, docs/measurements/2026-11-26-bench-rank-counts.md
+    // "Rank 0's set-up, contact patches, positions-only ghost rows").
     if (!boxes.empty() && nodes < std::numeric_limits<int>::max() / 3 && elements < std::numeric_limits<int>::max() / 8) {
       m.coordinates.reserve(static_cast<std::size_t>(3 * nodes));
       m.connectivity.reserve(static_cast<std::size_t>(8 * elements));

@@ -7,8 +7,8 @@
 //   internal_forces_four_lanes  four lanes (double4), as avx2_kernels.cpp but with AVX-512VL's 32 vector
 //                               registers instead of AVX2's 16: the mean-quadrature kernel keeps 72
 //                               vectors of nodal values and gradient operator, and with fewer of them
-//                               spilled the block ran in 0.93x the time (tools/bench/README.md,
-//                               "Thirty-two registers")
+//                               spilled the block ran in 0.93x the time
+//                               (docs/measurements/2026-11-27-bench-element-kernels.md, "Thirty-two registers")
 // add_internal_forces calls them only where the CPU (and the OS) has AVX-512F and VL (element_isa()).
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #include "solver/hex8/block_kernels.hpp"

@@ -35,7 +35,7 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
   gather_nodal(v, nodes, ve);
   gather_nodal(X, nodes, Xe);
   // Formed here rather than read: 24 coordinates against 80 stored numbers per element, which made
-  // the kernel memory-bound (tools/bench/README.md, "Reference geometry rebuilt")
+  // the kernel memory-bound (docs/measurements/2026-11-27-bench-element-kernels.md, "Reference geometry rebuilt")
   T Q[9][8], w[8];
   inverse_jacobians_at_points(Xe, Q, w);
 

@@ -34,7 +34,8 @@ int element_lane_width();
 /// Elements per kernel call for a block of this formulation: the forced width, else the CPU's
 /// widest but at most 4 for mean quadrature, whose eight-lane kernel measured about 10 % slower
 /// than the four-lane one at 40^3 on an AMD EPYC and an Intel Xeon with AVX-512 (while the fully
-/// integrated one gained 13-16 %: tools/bench/README.md, "Eight lanes", "Thirty-two registers").
+/// integrated one gained 13-16 %: docs/measurements/2026-11-25-bench-simd-element-batches.md, "Eight lanes";
+/// docs/measurements/2026-11-27-bench-element-kernels.md, "Thirty-two registers").
 int element_lane_width(inputs::ElementFormulation formulation);
 /// Force the width (2, 4 or 8; a width above the CPU's widest gives its widest; 0: the default
 /// above): tests and `tribex bench block --lanes`.

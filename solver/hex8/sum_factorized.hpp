@@ -65,8 +65,9 @@ inline void reference_gradients_at_points(const T ue[24], T G[3][3][8]) {
 /// layout of ue): with G_p = 8 dX/dxi at point p (reference_gradients_at_points), J_p = G_p / 8, so
 /// Q_p = J_p^{-1} / 8 = G_p^{-1} = adj(G_p) / det G_p and wdetJ_p = det J_p = det G_p / 512 (Gauss
 /// weights 1). The fully integrated kernel forms these each step instead of reading 640 B of stored
-/// operators per element (tools/bench/README.md, "Reference geometry rebuilt"): about 550 flops (200
-/// for G, 43 per point) and one division per point, the same IEEE sequence in every lane.
+/// operators per element (docs/measurements/2026-11-27-bench-element-kernels.md, "Reference geometry
+/// rebuilt"): about 550 flops (200 for G, 43 per point) and one division per point, the same IEEE
+/// sequence in every lane.
 template <class T>
 inline void inverse_jacobians_at_points(const T Xe[24], T Q[9][8], T wdetJ[8]) {
   T G[3][3][8];

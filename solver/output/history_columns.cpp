@@ -76,7 +76,9 @@ std::vector<HistoryColumn> make_columns() {
       contact("contact_radius_edge", "radius_edge"),
       contact("adhesive_force", "adhesive_force"),
       contact("compressive_force", "compressive_force"),
-      derived("friction_force", "N", "magnitude of the vector sum of junction shear forces (as contact_tangential_force)",
+      derived("friction_force", "N",
+              "magnitude of the vector sum of the tangential contact forces: junction shear or Coulomb friction "
+              "(as contact_tangential_force)",
               [](const S& s) { return s.contact.tangential_force; }),
       contact("tau_star_times_area", "junction_capacity"),
       contact("adhesion_energy", "adhesion_energy"),

@@ -5,7 +5,8 @@
 // the nodes they share. METIS's multilevel workspace grows with the graph it is given (about 170 MB
 // for the dual graph of 1 M hex8 with three constraints); on clusters of 16 elements it is a
 // few MB, and building the clusters takes 20 B per element and 4 B per node, so rank 0's set-up peak
-// stays near the whole mesh itself (tools/bench/README.md "Counts per rank").
+// stays near the whole mesh itself (docs/measurements/2026-11-26-bench-rank-counts.md "Rank 0's set-up,
+// contact patches, positions-only ghost rows").
 #pragma once
 
 #include <vector>

@@ -12,8 +12,8 @@ target 1.3 x (serial peak / N) + 100 MB. Counts, not times.
 
 --termination TIME runs a copy of DECK (OUT/DECK's name) whose `termination time` line says TIME
 instead: the per-step byte counts average over the steps, and the search steps move the whole ghost
-band, so a run of a few steps carries more of it than a long one (tools/bench/README.md, "The
-acceptance's bytes line"). Exit 2 with one line on bad arguments, a deck without the line, or a run
+band, so a run of a few steps carries more of it than a long one
+(docs/measurements/2026-11-27-bench-rank-counts.md, "The acceptance's bytes line"). Exit 2 with one line on bad arguments, a deck without the line, or a run
 that fails (its first error line).
 """
 import argparse

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """Scaling model of a parallel tribex run (issue 25): time and memory per rank per step against the
 rank count, for the replicated set-up and contact (before issue 25) and for the distributed design as built,
-from measured inputs (tools/bench/README.md "Scaling model to 1,024 ranks" lists them and their
+from measured inputs (docs/measurements/2026-11-26-bench-scaling-model.md lists them and their
 commands). A model, not a measurement: it says where each design stops scaling and why.
 
 Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nodes per cube side):

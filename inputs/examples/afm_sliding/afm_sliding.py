@@ -50,8 +50,10 @@ CASES = [("a_si", "(a) Si on Si", 195e6), ("b_sam", "(b) Si on 2 nm SAM", 194e6)
 BIN = 10e-9                        # m: the bin table's width of sliding position
 # The full variant's bin table of the fully integrated, unscaled runs: F (nN) and sqrt(A/pi) (nm) per 10 nm
 # of sliding (the steady rows, from 1 nm), the reference a faster set-up (mixed blocks, mass scaling) must
-# meet within 1 % (issue 24). Case (a): README.md "Results" (2026-11-21; to 3 digits, how its first bin was
-# cut is not recorded). Case (b): README.md "the unscaled fully integrated reference, finished" (2026-11-27,
+# meet within 1 % (issue 24). Case (a): docs/measurements/2026-11-21-afm-sliding-first-runs.md "Results"
+# (2026-11-21; to 3 digits, how its first bin was cut is not recorded). Case (b):
+# docs/measurements/2026-11-27-afm-sliding-fully-integrated-reference.md "the unscaled fully integrated
+# reference, finished" (2026-11-27,
 # the SAM track the slave since issue 22), bin_table's figures of that run.
 FULL_BINS = {"a_si": ([25.8, 25.9, 25.2, 24.1, 23.1, 22.1, 21.8], [6.49, 6.50, 6.42, 6.27, 6.14, 6.01, 5.96]),
              "b_sam": ([51.35, 51.41, 50.41, 48.61, 46.88, 45.39, 44.96],

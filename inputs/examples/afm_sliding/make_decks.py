@@ -27,12 +27,13 @@ from deck_templates import (HEX8_FULLY_INTEGRATED, NM, PS, block_parameters, ela
 # integrated (`begin surface layer block`, mesh/README.md); below them one-point elements. One layer
 # keeps verification/hertz and verification/dmt within their tolerances (their READMEs); here two:
 # with one, the reduced runs' friction read 0.89 % (a) and 1.06 % (b) above the fully integrated
-# decks', with two 0.45 % and 0.46 % (README.md, "Mixed blocks").
+# decks', with two 0.45 % and 0.46 % (docs/measurements/2026-11-25-afm-sliding-mixed-blocks.md, "Mixed blocks").
 SKIN_LAYERS = 2
 MIXED_NOTE = """\
   # Fully integrated at GPa contact pressures (verification/hertz/README.md): the skin blocks under
   # the contact surfaces (tip_skin, and substrate_skin or coating_skin); mean quadrature elsewhere."""
-# --fully-integrated: the reference the mixed decks are measured against (README.md "Mixed blocks").
+# --fully-integrated: the reference the mixed decks are measured against
+# (docs/measurements/2026-11-25-afm-sliding-mixed-blocks.md "Mixed blocks").
 FULLY_INTEGRATED_NOTE = """\
   # Fully integrated everywhere: the reference deck (make_decks.py --fully-integrated) against which
   # the mixed-block decks (fully integrated skins, mean quadrature below) are checked."""
@@ -58,7 +59,8 @@ LOAD = 500            # nN
 # Parallel runs (full variant): the tip slides 70 nm along y, so the partition's cuts go along y
 # (recursive coordinate bisection, y's sides scaled by 0.01: no cut crosses the track) and the contact
 # zone stays shared by the ranks all the way; METIS's cut at y = 150 nm put it on one rank at a time
-# (README.md "Decomposition along the slide"). A serial run ignores the block.
+# (docs/measurements/2026-11-27-afm-sliding-mass-scaling-8.md "Decomposition along the slide"). A serial
+# run ignores the block.
 DECOMPOSITION_ALONG_SLIDE = """
       begin decomposition
         method = rcb
@@ -186,7 +188,8 @@ SAM = """
 
 # `--mass-scaling F` (issue 24): the same decks with selective mass scaling to F x the unscaled step,
 # written beside them as afm_sliding_<variant>_<case>_mass_scaled.i (afm_sliding.py --mass-scaled runs them).
-# Kept in the repository: all four at F = 8 with a 900 ps hold (README.md "Mass scaling 8"):
+# Kept in the repository: all four at F = 8 with a 900 ps hold
+# (docs/measurements/2026-11-27-afm-sliding-mass-scaling-8.md "Mass scaling 8"):
 # `--mass-scaling 8 --mass-limit 22 --hold 900` (2,090 % added on the full decks, about 3,300 % on the
 # uniform 1 nm reduced mesh: `--mass-limit 35 --variant reduced`). The quasi-static slide does not feel the
 # inertia (friction and contact radius within 0.05 % of the factor-5 runs, 0.07 % of the unscaled reduced
