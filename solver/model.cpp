@@ -477,6 +477,7 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
     if (model.mass_damping > 0.0) model.damping_mass = model.mass;
     model.mass_scaling = apply_mass_scaling(*region.mass_scaling, tc.time_step_scale_factor,
                                             tc.maximum_time_step.value_or(INFINITY), model);
+    warn_scaled_silent_boundaries(region.silent_boundaries, model);
   }
   domain.sum_shared(model.mass.data(), 1);
   if (!unscaled_mass.empty()) domain.sum_shared(unscaled_mass.data(), 1);
