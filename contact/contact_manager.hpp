@@ -76,7 +76,7 @@ class ContactManager {
   /// pair on a fixed master sticks exactly. `prescribed` [node] nonzero for such nodes.
   void set_prescribed_nodes(std::vector<char> prescribed) { prescribed_ = std::move(prescribed); }
 
-  /// Mass-scaled runs (solver/mass_scaling.hpp, docs/theory.md 1.4.1): the penalty stiffness is taken
+  /// Mass-scaled runs (solver/setup/mass_scaling.hpp, docs/theory.md 1.4.1): the penalty stiffness is taken
   /// from the unscaled lumped masses `unscaled_mass` [node] and the unscaled step `unscaled_dt`, as the
   /// same deck without mass scaling would have it, so that mass scaling leaves the contact stiffness
   /// (and with it the penetration and contact area) unchanged; never above s m_eff / dt_ref^2 on the

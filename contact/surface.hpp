@@ -41,7 +41,7 @@ struct ContactSurface {
 ContactSurface make_surface(const mesh::Mesh& mesh, const std::string& name, const std::vector<std::string>& side_sets);
 
 /// Surface from its faces: `face_nodes` [face][4] node indices into `X` ([node][3], m), counter-clockwise
-/// seen from outside (the contact's own node numbering, solver/contact_setup.hpp).
+/// seen from outside (the contact's own node numbering, solver/setup/contact_setup.hpp).
 ContactSurface make_surface(const std::string& name, const double* X, std::vector<int> face_nodes);
 
 }  // namespace tribex::contact

@@ -236,7 +236,7 @@ struct ContactSurfaceSpec {
 enum class InteractionEnforcement { node_to_face, mortar };
 
 /// `begin interaction NAME` inside a contact definition: `surfaces = SLAVE MASTER` (the slave
-/// should be the softer surface, else the finer; solver/contact_setup.cpp swaps a one-pass node-to-face
+/// should be the softer surface, else the finer; solver/setup/contact_setup.cpp swaps a one-pass node-to-face
 /// pair whose slave is more than twice as stiff as its master), `model = LAW` (a contact law of the list
 /// in contact/laws/contact_law.hpp, with the keys it declares), `symmetric = on|off` (two-pass).
 struct InteractionSpec {
@@ -320,7 +320,7 @@ struct GuardSpec {
   std::optional<double> kinetic_energy_limit;
 };
 
-/// `begin mass scaling` (solver/mass_scaling.hpp, docs/theory.md 1.4.1): selective mass scaling. Every
+/// `begin mass scaling` (solver/setup/mass_scaling.hpp, docs/theory.md 1.4.1): selective mass scaling. Every
 /// element of the listed blocks whose stable step is below the element target gets its density raised
 /// by (dt_target / dt_e)^2 so that its step equals the target. Exactly one of `target time step`
 /// (the run's time step, s) and `largest factor` (target = factor x the run's unscaled step) is set.
@@ -337,7 +337,7 @@ struct MassScalingSpec {
 /// bisects the element centroids; `coordinate scale` multiplies the coordinates when the sides of a
 /// box are compared (the volume's with rcb, the contact patches' with either method), so a small
 /// factor on the direction a contact zone travels keeps it shared by the ranks. Not given: the run
-/// takes 0.01 on the direction the deck moves a contact body along (solver/contact_travel.hpp).
+/// takes 0.01 on the direction the deck moves a contact body along (solver/parallel/contact_travel.hpp).
 struct DecompositionSpec {
   enum class Method { metis, rcb };
   Method method = Method::metis;

@@ -35,7 +35,7 @@ struct ElementBlock {
   std::vector<double> B0;        // [3][8] per element, interleaved: reference gradient operator (m^2)
   std::vector<double> volume0;   // [e] (m^3)
   std::vector<double> length0;   // [e] reference characteristic length (m)
-  // selective mass scaling (solver/mass_scaling.hpp): density factor s_e >= 1 of the lumped mass and
+  // selective mass scaling (solver/setup/mass_scaling.hpp): density factor s_e >= 1 of the lumped mass and
   // the stable-step estimate; empty when the block is not scaled (every s_e = 1). The kernels keep
   // the physical density (bulk and hourglass viscosity, docs/theory.md 1.4.1).
   std::vector<double> mass_scale;  // [e]

@@ -34,7 +34,7 @@ double area_radius(const contact::ContactTotals& c) { return std::sqrt(c.area / 
 // area estimate is what there is without them.
 double best_radius(const contact::ContactTotals& c) { return c.radius_edge > 0.0 ? c.radius_edge : area_radius(c); }
 
-// Present only in runs with `begin mass scaling` (solver/mass_scaling.hpp), after plastic_dissipation.
+// Present only in runs with `begin mass scaling` (solver/setup/mass_scaling.hpp), after plastic_dissipation.
 HistoryColumn mass_scaling_column() {
   HistoryColumn c = derived("added_mass", "kg",
                             "mass added by mass scaling (begin mass scaling), whole model; set once at set-up",

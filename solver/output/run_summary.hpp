@@ -8,7 +8,7 @@
 
 #include "solver/energy.hpp"
 #include "solver/guards/run_warning.hpp"
-#include "solver/mass_scaling.hpp"
+#include "solver/setup/mass_scaling.hpp"
 #include "solver/output/run_identity.hpp"
 #include "solver/parallel/rank_counts.hpp"
 

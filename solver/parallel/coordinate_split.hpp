@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The step the geometric partitions take (the k-d clusters of element_clusters.cpp, the coordinate
 // bisection of the volume, parallel/partition.hpp, and the contact patches of
-// solver/contact_partition.cpp): split a range of points at a given rank along the longest side of
+// solver/parallel/contact_partition.cpp): split a range of points at a given rank along the longest side of
 // their box, or (bisect_like) divide one set of points by the planes that bisect another. Points are
 // `items` (indices into `centre`, [item][3]); ties by item number, so the same points give the same
 // split on every machine.
@@ -113,7 +113,7 @@ void bisect_into_parts(std::vector<int>& items, std::size_t begin, std::size_t e
 /// references' own box), and each cut is the plane midway between the two halves; the `targets` items
 /// [tbegin, tend) (points `target_centre`) go to the side of each plane they lie on (on it: the upper
 /// side), and part_of[target] receives the part. Used where the work lies near a smaller body than the
-/// one being divided (the contact patches: solver/contact_partition.cpp).
+/// one being divided (the contact patches: solver/parallel/contact_partition.cpp).
 template <class Real>
 void bisect_like(std::vector<int>& reference, std::size_t rbegin, std::size_t rend, const std::vector<Real>& reference_centre,
                  std::vector<int>& targets, std::size_t tbegin, std::size_t tend, const std::vector<Real>& target_centre,

@@ -23,7 +23,7 @@ namespace tribex::solver::parallel {
 /// (element_clusters.hpp) instead of the element graph; 0 chooses: the element graph up to 262,144
 /// elements, above it clusters sized for a graph of about 65,536 vertices (at least 16 per part), so
 /// that METIS's workspace on rank 0 stays small. The contact surfaces are placed afterwards
-/// (place_contact_patches, solver/contact_partition.hpp). Throws std::runtime_error when METIS fails.
+/// (place_contact_patches, solver/parallel/contact_partition.hpp). Throws std::runtime_error when METIS fails.
 std::vector<int> partition_elements(const mesh::Mesh& mesh, int parts, int cluster_size = 0);
 /// [element] the part by recursive coordinate bisection of the element centroids, sides compared after
 /// `scale`. One part: all zeros. Deterministic. Throws std::runtime_error for more parts than elements.

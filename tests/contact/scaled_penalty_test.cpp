@@ -54,7 +54,7 @@ TEST(ScaledPenalty, NeverExceedsTheUnscaledRatioWhereTheNodesAreNotScaled) {
   const double m0 = 1e-24, dt0 = 1e-15, F = 1.3;
   const double unscaled = p.force(m0, dt0);
   // The step grew, the masses did not: the unscaled stiffness would be k dt^2 / m_eff = F^2 s; the bound
-  // holds it at s, F^2 softer (why the solver gives the surface nodes F^2 their mass: solver/mass_scaling.hpp).
+  // holds it at s, F^2 softer (why the solver gives the surface nodes F^2 their mass: solver/setup/mass_scaling.hpp).
   EXPECT_NEAR(p.force(m0, F * dt0, m0, dt0), unscaled / (F * F), 1e-12 * unscaled);
   EXPECT_NEAR(p.force(m0, F * dt0), unscaled / (F * F), 1e-12 * unscaled);
 }

@@ -1,6 +1,6 @@
 # mpi_junction_travel.i -- mpi_junction.i with the slider carried 3 nm along x by 45 ps (about a third of
 # its 10 nm width): at 4 ranks the zone crosses a patch's width (10 nm / 4), so a run without `coordinate
-# scale` cuts along x (solver/contact_travel.hpp); for tests/parallel (mpi_junction_travel_rcb_np4).
+# scale` cuts along x (solver/parallel/contact_travel.hpp); for tests/parallel (mpi_junction_travel_rcb_np4).
 begin sierra junction_flats
   begin function squeeze
     type = piecewise linear

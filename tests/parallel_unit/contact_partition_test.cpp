@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Where the contact zone goes in the partition (solver/contact_partition.hpp): the links between
+// Where the contact zone goes in the partition (solver/parallel/contact_partition.hpp): the links between
 // facing elements, and the compact patches of the slave surface with their master faces.
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <set>
 
 #include "mesh/box.hpp"
-#include "solver/contact_partition.hpp"
-#include "solver/contact_setup.hpp"
+#include "solver/parallel/contact_partition.hpp"
+#include "solver/setup/contact_setup.hpp"
 #include "solver/parallel/partition.hpp"
 #include "tests/solver/support.hpp"
 
@@ -119,7 +119,7 @@ TEST(ContactPartition, PatchesShareTheZoneCompactlyWithTheirMasterFaces) {
 }
 
 // The patches go to the surface the run enforces as the slave: build_contact swaps a node-to-face
-// penalty pair whose slave is more than twice as stiff as its master (solver/contact_setup.hpp
+// penalty pair whose slave is more than twice as stiff as its master (solver/setup/contact_setup.hpp
 // runs_swapped), so the partition must place the swapped slave, not the deck's (issue 25: on the AFM
 // case (b) the deck's slave, the tip, was placed in patches while the SAM track it swaps to kept
 // METIS's parts, and the contact zone sat on whichever rank METIS gave it).

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Which way the contact zone travels (solver/contact_travel.hpp), and the partition's coordinate scale
+// Which way the contact zone travels (solver/parallel/contact_travel.hpp), and the partition's coordinate scale
 // the run takes from it where the deck gives none.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "mesh/box.hpp"
-#include "solver/contact_travel.hpp"
+#include "solver/parallel/contact_travel.hpp"
 #include "tests/solver/support.hpp"
 
 using namespace tribex;

@@ -11,7 +11,7 @@
 
 #include "inputs/diagnostics.hpp"
 #include "mesh/box.hpp"
-#include "solver/contact_setup.hpp"
+#include "solver/setup/contact_setup.hpp"
 #include "solver/errors.hpp"
 #include "solver/model.hpp"
 #include "solver/parallel/mesh_part.hpp"

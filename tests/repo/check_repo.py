@@ -8,7 +8,7 @@ Checks, over every tracked file (git ls-files; every file under the root when th
   2. every `docs/<name>.md` a file cites exists, and every section number cited after
      `docs/theory.md` (`docs/theory.md 6.3`, `... section 2.1`, `... 7.1-7.2`, `... 6, 7`) is a heading
      of docs/theory.md; `docs/dependencies.md section N` likewise;
-  3. every repository path a README, deck or source comment names (`solver/run.cpp`,
+  3. every repository path a README, deck or source comment names (`solver/run/run.cpp`,
      `verification/hertz/README.md`, ...) exists, except a command's output argument (-o, --csv, ...);
   4. the AFM sample files match the SHA-256 sums listed in inputs/data/afm/README.md.
 Prints one line per problem as FILE:LINE: message, then a summary; exit 1 when anything fails.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Selective mass scaling (solver/mass_scaling.hpp, docs/theory.md 1.4.1): the density factor per element,
+// Selective mass scaling (solver/setup/mass_scaling.hpp, docs/theory.md 1.4.1): the density factor per element,
 // the lumped masses, the blocks filter, the stable step it gives, the added-mass guard, the set-up
 // errors, the kinetic-energy limit of the run guards, and mass damping with the unscaled masses.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include "solver/errors.hpp"
 #include "solver/guards/run_guards.hpp"
 #include "solver/integrators/central_difference.hpp"
-#include "solver/mass_scaling.hpp"
+#include "solver/setup/mass_scaling.hpp"
 #include "solver/model.hpp"
 #include "solver/stable_time_step.hpp"
 #include "tests/solver/support.hpp"

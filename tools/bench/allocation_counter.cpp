@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "solver/out_of_memory.hpp"
+#include "solver/run/out_of_memory.hpp"
 
 namespace {
 std::atomic<std::uint64_t> g_allocations{0};
@@ -27,7 +27,7 @@ std::uint64_t allocation_count() { return g_allocations.load(std::memory_order_r
 void* operator new(std::size_t size) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size ? size : 1)) return p;
-  tribex::solver::record_failed_allocation(size);  // an out-of-memory message names it (solver/out_of_memory.hpp)
+  tribex::solver::record_failed_allocation(size);  // an out-of-memory message names it (solver/run/out_of_memory.hpp)
   throw std::bad_alloc();
 }
 void* operator new[](std::size_t size) { return ::operator new(size); }

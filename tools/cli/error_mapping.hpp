@@ -9,7 +9,7 @@
 #include "inputs/diagnostics.hpp"
 #include "mesh/mesh_error.hpp"
 #include "solver/errors.hpp"
-#include "solver/stop_signal.hpp"
+#include "solver/run/stop_signal.hpp"
 #include "tools/common/errors.hpp"
 
 namespace tribex::cli {

@@ -15,7 +15,7 @@
 
 #include "inputs/did_you_mean.hpp"
 #include "tools/cli/commands.hpp"
-#include "solver/stop_signal.hpp"
+#include "solver/run/stop_signal.hpp"
 #include "tools/cli/error_mapping.hpp"
 
 namespace {
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 2, argv + argc);
   for (const auto& c : commands) {
     if (name == c.name && name == "run") {
-      // Before anything is read or written (solver/stop_signal.hpp); a rank of mpirun also takes its
+      // Before anything is read or written (solver/run/stop_signal.hpp); a rank of mpirun also takes its
       // launcher's SIGCONT, the first signal of the kill sequence that ends the job.
       tribex::solver::install_stop_handlers(launched_by_mpirun());
       return run_parallel(argc, argv, c, args);

@@ -5,7 +5,7 @@
 #include "inputs/diagnostics.hpp"
 #include "solver/output/history_columns.hpp"
 #include "solver/output/output_tables.hpp"
-#include "solver/run.hpp"
+#include "solver/run/run.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"

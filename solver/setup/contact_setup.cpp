@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/contact_setup.hpp"
+#include "solver/setup/contact_setup.hpp"
 
 #include <algorithm>
 #include <cmath>

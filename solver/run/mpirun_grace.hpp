@@ -2,7 +2,7 @@
 // How long Open MPI's mpirun lets the ranks stop after it is sent SIGTERM or SIGINT, and the note that
 // says when a run needs longer (log.txt; docs/architecture.md "Signals"). mpirun 4.1 sends each rank
 // SIGCONT, then SIGTERM odls_base_sigkill_timeout seconds later (1 by default), then SIGKILL as long
-// again; the ranks stop at SIGCONT (solver/stop_signal.hpp), so they have twice the timeout.
+// again; the ranks stop at SIGCONT (solver/run/stop_signal.hpp), so they have twice the timeout.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/contact_partition.hpp"
+#include "solver/parallel/contact_partition.hpp"
 
 #include <algorithm>
 #include <array>

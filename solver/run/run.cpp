@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "solver/run.hpp"
+#include "solver/run/run.hpp"
 
-#include "solver/deck_run.hpp"
+#include "solver/run/deck_run.hpp"
 
 namespace tribex::solver {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/surface_layer_blocks.hpp"
+#include "solver/setup/surface_layer_blocks.hpp"
 
 #include "inputs/did_you_mean.hpp"
 #include "mesh/mesh_error.hpp"

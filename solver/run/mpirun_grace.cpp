@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/mpirun_grace.hpp"
+#include "solver/run/mpirun_grace.hpp"
 
 #include <cmath>
 #include <cstdlib>

@@ -8,9 +8,9 @@
 #include <functional>
 #include <span>
 
-#include "solver/deck_run.hpp"
+#include "solver/run/deck_run.hpp"
 #include "solver/errors.hpp"
-#include "solver/mpirun_grace.hpp"
+#include "solver/run/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 
@@ -204,7 +204,7 @@ void DeckRun::loop() {
     if (!resume_) integrator_->init();
     while (!integrator_->finished()) {
       integrator_->step(on_time_n);
-      // The added-mass guard (solver/mass_scaling.hpp): stop after the first step, whose step writes
+      // The added-mass guard (solver/setup/mass_scaling.hpp): stop after the first step, whose step writes
       // the t = 0 outputs (history row, fields), so the files are valid.
       if (model_->mass_scaling.exceeds_limit()) throw NumericalFailure(model_->mass_scaling.limit_message());
       stopped_at_step = options_.stop_at_step >= 0 && integrator_->step_index() >= options_.stop_at_step;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/contact_travel.hpp"
+#include "solver/parallel/contact_travel.hpp"
 
 #include <algorithm>
 #include <array>

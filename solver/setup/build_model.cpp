@@ -13,13 +13,13 @@
 #include "mesh/gmsh_io.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/vertical_gap.hpp"
-#include "solver/afm_surface_mesh.hpp"
-#include "solver/contact_setup.hpp"
+#include "solver/setup/afm_surface_mesh.hpp"
+#include "solver/setup/contact_setup.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/run_log.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/stable_time_step.hpp"
-#include "solver/surface_layer_blocks.hpp"
+#include "solver/setup/surface_layer_blocks.hpp"
 
 namespace tribex::solver {
 namespace {
@@ -242,7 +242,7 @@ SurfaceValues surface_values(const Model& model, const ContactFaces& faces, cons
 }
 
 // The contact surface nodes of a mass-scaled run raised to (dt / dt_0)^2 times their unscaled mass
-// (solver/mass_scaling.hpp raise_contact_node_masses; docs/theory.md 1.4.1), counted in the report over
+// (solver/setup/mass_scaling.hpp raise_contact_node_masses; docs/theory.md 1.4.1), counted in the report over
 // the ranks. `mass` and `unscaled_mass` are summed over the ranks already, so every copy of a shared node
 // gets the same value.
 void raise_contact_masses(Model& model, const ContactFaces& faces, const std::vector<double>& unscaled_mass, double dt) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/stop_signal.hpp"
+#include "solver/run/stop_signal.hpp"
 
 #include <unistd.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The stages of run_deck (solver/run.hpp), private to solver/: deck_run_setup.cpp holds pre-flight,
+// The stages of run_deck (solver/run/run.hpp), private to solver/: deck_run_setup.cpp holds pre-flight,
 // the rank's part and the restart state, and the output files; deck_run_loop.cpp the loop, what it
 // writes at time n, and the close.
 #pragma once
@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "solver/contact_travel.hpp"
+#include "solver/parallel/contact_travel.hpp"
 #include "solver/guards/block_translation.hpp"
 #include "solver/guards/run_guards.hpp"
 #include "solver/guards/strain_guard.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/errors.hpp"
 #include "solver/model.hpp"
-#include "solver/out_of_memory.hpp"
+#include "solver/run/out_of_memory.hpp"
 #include "solver/output/exodus_writer.hpp"
 #include "solver/output/history_writer.hpp"
 #include "solver/output/output_folder.hpp"
@@ -31,8 +31,8 @@
 #include "solver/parallel/rank_counts.hpp"
 #include "solver/restart/restart_output.hpp"
 #include "solver/restart/state_archive.hpp"
-#include "solver/run.hpp"
-#include "solver/stop_signal.hpp"
+#include "solver/run/run.hpp"
+#include "solver/run/stop_signal.hpp"
 
 namespace tribex::solver {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/afm_surface_mesh.hpp"
+#include "solver/setup/afm_surface_mesh.hpp"
 
 #include "mesh/afm/afm_mesh.hpp"
 #include "mesh/mesh_error.hpp"

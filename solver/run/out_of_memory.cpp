@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/out_of_memory.hpp"
+#include "solver/run/out_of_memory.hpp"
 
 #include <sys/resource.h>
 

@@ -8,12 +8,12 @@
 #include <malloc.h>
 
 #include "mesh/mesh_error.hpp"
-#include "solver/contact_partition.hpp"
-#include "solver/contact_setup.hpp"
-#include "solver/contact_travel.hpp"
-#include "solver/deck_run.hpp"
+#include "solver/parallel/contact_partition.hpp"
+#include "solver/setup/contact_setup.hpp"
+#include "solver/parallel/contact_travel.hpp"
+#include "solver/run/deck_run.hpp"
 #include "solver/errors.hpp"
-#include "solver/mpirun_grace.hpp"
+#include "solver/run/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/run_fingerprint.hpp"
@@ -334,7 +334,7 @@ void DeckRun::open_outputs() {
 }
 
 // Under mpirun a SIGTERM or SIGINT leaves the ranks 2 x odls_base_sigkill_timeout to stop
-// (solver/mpirun_grace.hpp); a model too large to stop in time is told so before its loop starts,
+// (solver/run/mpirun_grace.hpp); a model too large to stop in time is told so before its loop starts,
 // from the measured seconds per element (the close repeats it with the run's own measurement).
 void DeckRun::note_mpirun_signal_grace() {
   const double estimate = stop_seconds_per_element * elements_;

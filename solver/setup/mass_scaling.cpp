@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/mass_scaling.hpp"
+#include "solver/setup/mass_scaling.hpp"
 
 #include <algorithm>
 #include <cmath>
