@@ -5,6 +5,7 @@
 // next to results.h5, and this keeps every rank's arrays in its own group.
 #include <hdf5.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -34,9 +35,11 @@ void write_group(hid_t file, const StateArchive& a, const std::string& path) {
 }
 
 struct ReadContext {
-  StateArchive* archive;
+  StateArchive* archive = nullptr;
   std::string path;
+  std::uintmax_t file_bytes = 0;  // sizes read from the file are checked against it before allocating
   bool failed = false;
+  std::string refused;  // a dataset whose size the file cannot hold (issue 54, item 11)
 };
 
 herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data) {
@@ -49,6 +52,17 @@ herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data)
     return -1;
   }
   const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  // tribex writes restart datasets uncompressed and contiguous (write_group): 8 bytes per value
+  // stored in the file. A larger stated size is an edited or damaged file, refused before allocating.
+  if (n < 0 || static_cast<std::uintmax_t>(n) > ctx->file_bytes / 8) {
+    char gb[32];
+    std::snprintf(gb, sizeof gb, "%.3g", 8.0 * static_cast<double>(n) / 1e9);
+    ctx->refused = ctx->path + ": error: restart dataset '" + name + "' states " + std::to_string(n) +
+                   " values (" + gb + " GB), more than the file's " +
+                   std::to_string(ctx->file_bytes) + " bytes can hold (an edited or damaged restart file?); restart "
+                   "from a file a tribex run wrote";
+    return -1;
+  }
   herr_t status = 0;
   if (H5Tget_class(type.get()) == H5T_FLOAT) {
     auto& v = ctx->archive->reals[name];
@@ -128,8 +142,14 @@ StateArchive read_restart_file(const std::string& path) {
   const std::string group_name = "rank_" + std::to_string(parallel::rank());
   H5Handle group(H5Gopen2(file.get(), group_name.c_str(), H5P_DEFAULT), H5Gclose);
   if (!group.valid()) throw SetupError(path + ": error: restart file has no group " + group_name);
-  ReadContext ctx{&archive, path};
-  if (H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, read_member, &ctx) < 0 || ctx.failed)
+  std::error_code size_error;
+  ReadContext ctx;
+  ctx.archive = &archive;
+  ctx.path = path;
+  ctx.file_bytes = std::filesystem::file_size(path, size_error);
+  const herr_t walked = H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, read_member, &ctx);
+  if (!ctx.refused.empty()) throw SetupError(ctx.refused);
+  if (walked < 0 || ctx.failed)
     throw SetupError(path + ": error: restart file is damaged (a dataset of " + group_name + " cannot be read)");
   return archive;
 }
