@@ -67,6 +67,26 @@ item17_restart_edited_step_dt_type)
   edited u int same
   expect_err "is integer-typed; tribex writes it as float64"
   ;;
+item12_argument_bounds)
+  # Sizes from arguments, checked before allocating: exit 2 naming the bound, nothing written.
+  expect_rc 2 "$T" pstd --sampling 1e-30m -o P --no-plots --quiet  # was SIGFPE (rc 136)
+  expect_err "at --sampling 1e-30 m) needs 6e+24 samples, more than the limit of 1e8 samples"
+  one_line
+  expect_rc 2 "$T" pstd --sampling 1e-15m -o P --no-plots --quiet
+  expect_err "more than the limit of 1e8 samples"
+  expect_rc 2 "$T" pstd --substrate-length 1e3m -o P --no-plots --quiet
+  expect_err "the synthetic substrate (--substrate-length 1000 m at --source-dx 1e-08 m) needs 1e+11 samples"
+  nothing_written P
+  expect_rc 2 "$T" fit synth --radius 27nm --A 0.5 --b 0.3 --tau 100MPa --W 0.05J/m^2 --points 2000000000 -o f.csv
+  expect_err "--points 2000000000 is more than the limit of 10000000"
+  expect_rc 2 "$T" friction-test synth ringdown --samples-per-cycle 2000000000 -o r.csv
+  expect_err "= 2.4e+10 samples, more than the limit of 1e7"
+  expect_rc 2 "$T" friction-test synth ringdown --cycles 1e9 -o r.csv
+  expect_err "--cycles 1e+09 x --samples-per-cycle 50 = 5e+10 samples, more than the limit of 1e7"
+  one_line
+  nothing_written f.csv
+  nothing_written r.csv
+  ;;
 *)
   fail "unknown case $case_name"
   ;;
