@@ -20,6 +20,16 @@ one_line() { [ "$(wc -l < err.txt)" -le 1 ] || fail "stderr has $(wc -l < err.tx
 nothing_written() { [ ! -e "$1" ] || fail "$1 was left behind: $(ls -A "$1")"; }
 # A restart file of the wave bar at step 50 (0.1 s), in S/.
 restart_file() { expect_rc 130 "$T" run "$MW" -o S --stop-at-step 50 --quiet; }
+# An Exodus II file (the mesh and 11 steps of tests/output/exodus_wave.i) in E/, and crafted copies of it
+# read by `mesh convert`: craft KIND MESSAGE expects exit 2 with MESSAGE and nothing written.
+exodus_file() { expect_rc 0 "$T" run "$SRC/tests/output/exodus_wave.i" -o E --quiet; }
+craft() {
+  $PY "$SRC/tests/bounds/craft_exodus.py" E/results.exo "$1.exo" "$1" || fail "cannot craft $1.exo"
+  expect_rc 2 "$T" mesh convert "$1.exo" "$1.msh"
+  expect_err "error: $1.exo: $2"
+  one_line
+  nothing_written "$1.msh"
+}
 # edited NAME KIND VALUE: a copy e.h5 of S/restart.h5 with one dataset replaced, resumed into R: exit 2 naming it.
 edited() {
   $PY "$SRC/tests/bounds/edit_restart.py" S/restart.h5 e.h5 "$1" "$2" "$3" || fail "cannot edit the restart file"
@@ -86,6 +96,50 @@ item12_argument_bounds)
   one_line
   nothing_written f.csv
   nothing_written r.csv
+  ;;
+item17_python_tools)
+  # The Python tools on missing, empty or wrong inputs: one line, exit 2, no traceback, nothing left behind.
+  mkdir empty && : > empty.csv && echo "step,time" > header_only.csv
+  py_bad() {  # py_bad SCRIPT ARGS...: exit 2, one `error:` line
+    expect_rc 2 $PY "$SRC/$@"
+    one_line
+    expect_err "^error: "
+    ! grep -q Traceback err.txt || fail "a traceback: $*"
+  }
+  py_bad tools/plot/plot_history.py empty.csv x.png --columns time
+  for arg in missing empty header_only.csv; do
+    py_bad tools/plot/plot_history.py $arg x.png --columns time
+    py_bad verification/wave_bar/compare.py $arg
+    py_bad verification/contact_patch/compare.py $arg
+    py_bad tools/pstd/plot_pstd.py $arg
+    py_bad tools/plot/gw_figures.py $arg
+    py_bad verification/impact/compare.py $arg
+  done
+  nothing_written x.png
+  py_bad inputs/examples/afm_sliding/afm_sliding.py --no-run --out missing
+  py_bad inputs/examples/afm_sliding/afm_sliding.py --no-run --out empty
+  py_bad inputs/examples/afm_sliding/afm_sliding.py --tribex ./no_tribex --out A
+  nothing_written A
+  py_bad inputs/examples/clamp_friction/run_clamp.py --tribex ./no_tribex --out C
+  py_bad inputs/examples/clamp_friction/run_clamp.py --tribex "$T" --variants nope --out C
+  nothing_written C
+  [ -z "$(ls -A empty)" ] || fail "a tool wrote into the empty folder: $(ls -A empty)"
+  ;;
+item11_exodus_header_sizes)
+  # Exodus headers that claim more than the file holds: exit 2 naming the size, before allocating
+  # (was bad_alloc, or 5.9 GB and 32 s for maximum_name_length = 2e9).
+  exodus_file
+  craft elements "the header states 2000000000 elements and 363 nodes, which need at least 64000004356 bytes, but the file has"
+  craft name_length "the header states names of up to 2000000000 characters (maximum_name_length); Exodus II allows 256"
+  ;;
+item16_exodus_messages)
+  # A cut Exodus file says truncated; a netCDF file that is not Exodus says so.
+  exodus_file
+  craft cut "truncated: the header states 11 records (time steps)"
+  head -c 1000 E/results.exo > cut_header.exo
+  expect_rc 2 "$T" mesh convert cut_header.exo out.msh
+  expect_err "truncated: the file ends (1000 bytes) inside its netCDF header"
+  craft not_exodus "a netCDF file, but not an Exodus II mesh (it has no dimension 'num_dim')"
   ;;
 *)
   fail "unknown case $case_name"
