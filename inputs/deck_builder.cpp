@@ -137,6 +137,7 @@ class Builder {
     m.name = s.name;
     m.where = s.where;
     m.density = real(s, "density");
+    m.density_where = where(s, "density");
     for (const Scope* p : s.children_of("parameters for model")) {
       MaterialModelParameters mp;
       mp.where = p->where;

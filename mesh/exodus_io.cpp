@@ -403,8 +403,9 @@ void write_exodus(const Mesh& mesh, const std::string& path, ExodusFormat format
   std::error_code ec;
   fs::rename(partial, target, ec);
   if (ec) {
+    const std::string why = ec.message();  // before remove() reuses ec
     fs::remove(partial, ec);
-    fail(path, "cannot rename the written file into place: " + ec.message());
+    fail(path, "cannot rename the written file into place: " + why);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <vector>
 
 #include "mesh/mesh_error.hpp"
@@ -38,7 +39,9 @@ class Walk {
       names.push_back(name());
       lengths.push_back(count());
     });
-    for (std::size_t i = 0; i < names.size(); ++i) h.dimensions[names[i]] = lengths[i] == 0 ? records : lengths[i];
+    for (std::size_t i = 0; i < names.size(); ++i)  // netCDF names are unique (the libraries misread duplicates)
+      if (!h.dimensions.emplace(names[i], lengths[i] == 0 ? records : lengths[i]).second)
+        fail("the netCDF header is damaged (two dimensions named '" + names[i] + "')");
     list(0x0C, [&] { attribute(); });
     list(0x0B, [&] { variable(lengths); });
     // The records: each holds at least the record variables' values; all but the last are complete in a
@@ -114,6 +117,7 @@ class Walk {
   }
   void variable(const std::vector<std::uint64_t>& lengths) {
     const std::string var = name();
+    if (!variables_.insert(var).second) fail("the netCDF header is damaged (two variables named '" + var + "')");
     const std::uint64_t rank = count();
     if (rank > 1024) fail("variable '" + var + "' has " + std::to_string(rank) + " dimensions; the header is damaged");
     long double values = 1;
@@ -150,6 +154,7 @@ class Walk {
   std::uint64_t file_size_;
   std::size_t at_ = 0;
   int version_ = 0;
+  std::set<std::string> variables_;
   long double record_begin_ = 1e30L, record_bytes_ = 0;  // the first record variable's offset, one record's size
 };
 

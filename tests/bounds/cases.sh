@@ -139,7 +139,26 @@ item16_exodus_messages)
   head -c 1000 E/results.exo > cut_header.exo
   expect_rc 2 "$T" mesh convert cut_header.exo out.msh
   expect_err "truncated: the file ends (1000 bytes) inside its netCDF header"
+  craft duplicate_dimension "the netCDF header is damaged (two dimensions named 'num_nod_ns8')"
   craft not_exodus "a netCDF file, but not an Exodus II mesh (it has no dimension 'num_dim')"
+  ;;
+item16_deck_and_mesh_messages)
+  # Messages that misled: each names the real cause.
+  tr '\n' '\r' < "$W" > cr_only.i  # CR-only line ends (classic Mac OS)
+  expect_rc 2 "$T" check cr_only.i
+  expect_err "cr_only.i:1:1: error: the deck has CR-only line ends"
+  $PY -c "import sys; t = open(sys.argv[1]).read(); open('token.i', 'w').write(t.replace('termination time = 20 ps', 'termination' + 'q' * 7000000 + ' time = 20 ps'))" "$W"
+  expect_rc 2 "$T" check token.i
+  expect_err "unknown key .terminationqqq.*\\.\\.\\.\\[700001[0-9] characters\\]"
+  [ "$(wc -c < err.txt)" -lt 2000 ] || fail "the echo of a 7 MB token is $(wc -c < err.txt) bytes"
+  exodus_file
+  mkdir DIR
+  expect_rc 2 "$T" mesh convert E/results.exo DIR
+  expect_err "DIR is a folder, not a regular file"
+  expect_rc 2 "$T" mesh afm "$SRC/inputs/data/afm/di-1.di" --channel 0 --window 187.5nm,187.5nm,8nm,8nm \
+    --element-size 2nm --depth 8nm --coating 1e-30m -o c.msh
+  expect_err "coating thickness 1e-21 nm gives 6 layers under 1e-6 of the element size 2 nm each"
+  nothing_written c.msh
   ;;
 *)
   fail "unknown case $case_name"

@@ -6,6 +6,8 @@ usage: craft_exodus.py SRC DST elements|name_length|cut|not_exodus
   elements:    the header's num_elem dimension set to 2,000,000,000
   name_length: the global attribute maximum_name_length set to 2,000,000,000
   cut:         the first half of the file
+  duplicate_dimension: dimension num_nod_ns9 renamed num_nod_ns8 (the first fuzz finding: the libraries
+               misread it and read_exodus crashed)
   not_exodus:  a netCDF classic file with one dimension and variable, no Exodus structure (SRC unused)
 """
 import struct
@@ -32,6 +34,11 @@ if kind == "elements":
     data = patch(data, b"\x00\x00\x00\x08num_elem", 0, 2_000_000_000)
 elif kind == "name_length":
     data = patch(data, b"\x00\x00\x00\x13maximum_name_length\x00", 8, 2_000_000_000)
+elif kind == "duplicate_dimension":
+    marker = b"\x00\x00\x00\x0bnum_nod_ns9"
+    if marker not in data:
+        sys.exit("craft_exodus.py: no dimension num_nod_ns9")
+    data = data.replace(marker, b"\x00\x00\x00\x0bnum_nod_ns8", 1)
 elif kind == "cut":
     data = data[: len(data) // 2]
 open(dst, "wb").write(data)
