@@ -160,6 +160,14 @@ item16_deck_and_mesh_messages)
   expect_err "coating thickness 1e-21 nm gives 6 layers under 1e-6 of the element size 2 nm each"
   nothing_written c.msh
   ;;
+item11_restart_damaged_group)
+  # A restart file whose rank group libhdf5 iterates without end, growing its memory (24 GB in 65 s;
+  # found by fuzz_restart_files_60s): exit 2 within the read's address-space budget, nothing written.
+  expect_rc 2 "$T" run "$MW" --restart "$SRC/tests/bounds/restart_damaged_group.h5" -o R --quiet
+  expect_err "restart_damaged_group.h5: error: restart file is damaged: reading rank_0 took more than 256 MB"
+  one_line
+  nothing_written R
+  ;;
 *)
   fail "unknown case $case_name"
   ;;
