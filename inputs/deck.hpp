@@ -55,6 +55,7 @@ struct MaterialSpec {
   double density = 0.0;  // kg/m^3, > 0
   std::vector<MaterialModelParameters> models;
   SourceLocation where;
+  SourceLocation density_where;  // the `density` line (set-up names it when rho V underflows)
 };
 
 enum class ElementFormulation { mean_quadrature, fully_integrated };

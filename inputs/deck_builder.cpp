@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <span>
@@ -135,6 +137,7 @@ class Builder {
     m.name = s.name;
     m.where = s.where;
     m.density = real(s, "density");
+    m.density_where = where(s, "density");
     for (const Scope* p : s.children_of("parameters for model")) {
       MaterialModelParameters mp;
       mp.where = p->where;
@@ -392,7 +395,9 @@ class Builder {
               "'termination time' must be greater than 'start time' (" + format_seconds(t.start_time) + ")");
       }
     }
+    time_control_ = &p.time_control;  // the output increments are checked against its span (schedule())
     for (const Scope* r : s.children_of("presto region")) p.region = region(*r, deck);
+    time_control_ = nullptr;
     return p;
   }
 
@@ -652,13 +657,41 @@ class Builder {
             "'begin " + c.type() + "' takes 'time increment' or 'step increment', not both; remove one");
     } else if (!time && !step) {
       error(c.where, c, "'begin " + c.type() + "' needs 'time increment = T' or 'step increment = N'");
+    } else if (time && o.time_increment && time_control_) {
+      check_output_count(c, *o.time_increment);
     }
   }
+
+  // Every loop bounded (issue 54, item 9): a time increment may give at most kMaxOutputTimes output
+  // times over the run, and must be resolvable at the run's times (t + dt > t in doubles).
+  void check_output_count(const Scope& c, double dt) {
+    const TimeControlSpec& tc = *time_control_;
+    const double span = tc.termination_time - tc.start_time;
+    if (!(span > 0)) return;  // reported with the time control
+    const double outputs = span / dt;
+    const double largest_time = std::max(std::fabs(tc.start_time), std::fabs(tc.termination_time));
+    char b[320];
+    if (!(outputs <= kMaxOutputTimes)) {
+      std::snprintf(b, sizeof b,
+                    "'time increment' %g s gives %.3g output times over the run (%g s to %g s), more than the "
+                    "limit of %.0e; give a time increment of at least %g s, or 'step increment = N'",
+                    dt, outputs, tc.start_time, tc.termination_time, kMaxOutputTimes, span / kMaxOutputTimes);
+      error(where(c, "time increment"), c, b);
+    } else if (dt < 1e-12 * largest_time) {
+      std::snprintf(b, sizeof b,
+                    "'time increment' %g s is below the resolution of the run's times (1e-12 x %g s); give a "
+                    "time increment of at least %g s, or 'step increment = N'",
+                    dt, largest_time, 1e-12 * largest_time);
+      error(where(c, "time increment"), c, b);
+    }
+  }
+  static constexpr double kMaxOutputTimes = 1e8;  // history rows or results steps of one output block
 
   const Scope& root_;
   std::string file_name_;
   DiagnosticSink& sink_;
   std::map<std::string, FunctionUnits> function_units_;
+  const TimeControlSpec* time_control_ = nullptr;  // while the procedure's region is built
 };
 
 }  // namespace

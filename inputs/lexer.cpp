@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "inputs/lexer.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -42,6 +43,14 @@ class Lexer {
       sink_.error(at(file_name, line, static_cast<int>(bad - line_start) + 1), "",
                   "not a text deck: " + std::string(text[bad] == '\0' ? "NUL byte" : "invalid UTF-8 byte") +
                       " at byte offset " + std::to_string(bad) + "; give a plain-text (UTF-8) deck file");
+      return;
+    }
+    // CR-only line ends (classic Mac OS) read as one line, all comment after a first '#' (issue 54, item 16).
+    if (text.find('\n') == std::string_view::npos && std::count(text.begin(), text.end(), '\r') > 1) {
+      sink_.error(at(file_name, 1, 1), "",
+                  "the deck has CR-only line ends (classic Mac OS: " +
+                      std::to_string(std::count(text.begin(), text.end(), '\r')) +
+                      " carriage returns, no newline), read as one line; convert them: tr '\\r' '\\n' < IN > OUT");
       return;
     }
     std::error_code ec;

@@ -144,7 +144,8 @@ std::vector<KeySchema> interaction_keys() {
 // Output scheduling shared by results and history output: exactly one of the two (checked by
 // the builder).
 std::vector<KeySchema> output_schedule() {
-  return {real("time increment", dim::time, positive(), false, "", "write every this much simulated time"),
+  return {real("time increment", dim::time, positive(), false, "",
+               "write every this much simulated time; at most 1e8 output times over the run"),
           integer("step increment", at_least(1), false, "", "write every this many steps")};
 }
 

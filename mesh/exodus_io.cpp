@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/exodus_prescan.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/output_target.hpp"
 
@@ -54,6 +55,12 @@ std::string netcdf_kind(const std::string& path) {
   if (in.gcount() == 8 && std::memcmp(b, "\x89HDF\r\n\x1a\n", 8) == 0) return "netCDF-4";
   return "";
 }
+
+// Bounds of what read_exodus allocates (issue 54, item 11; mesh/README.md): names as netCDF allows them,
+// element and node counts whose connectivity and coordinate indices fit an int.
+constexpr long long kMaxNameLength = 256;
+constexpr int kMaxElements = (1 << 28) - 1;  // 8 x elements < 2^31
+constexpr int kMaxNodes = 715'827'882;       // 3 x nodes < 2^31
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -123,6 +130,8 @@ Mesh read_exodus(const std::string& path) {
   if (kind.empty())
     fail(path, "not an Exodus II file (no netCDF signature in its first bytes, " + std::to_string(fs::file_size(path, ec)) +
                    " bytes); give a .exo/.g file written by Cubit, SEACAS or tribex, or a gmsh .msh file");
+  // Every size the header states, checked against the file before the library allocates for it.
+  if (kind != "netCDF-4") prescan_exodus_file(path);
   quiet_exodus();
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0;
@@ -130,7 +139,11 @@ Mesh read_exodus(const std::string& path) {
   f.id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (f.id < 0) fail(path, "the Exodus II library cannot open this " + kind + " netCDF file" + reason() + "; is it truncated?");
   const int exo = f.id;
-  const int name_length = std::max<int>(static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH)), 32);
+  const auto used_name_length = ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH);
+  if (used_name_length > kMaxNameLength)
+    fail(path, "the header states names of up to " + std::to_string(used_name_length) + " characters "
+               "(maximum_name_length); Exodus II allows " + std::to_string(kMaxNameLength) + ": a damaged or crafted file");
+  const int name_length = std::max<int>(static_cast<int>(used_name_length), 32);
   ex_set_max_name_length(exo, name_length);
 
   char title[MAX_LINE_LENGTH + 1] = {};
@@ -139,6 +152,21 @@ Mesh read_exodus(const std::string& path) {
     fail(path, "cannot read the Exodus II header" + reason());
   if (dim != 3) fail(path, "a " + std::to_string(dim) + "-D mesh; tribex needs a 3-D all-hex (HEX8) mesh");
   if (nodes <= 0 || elements <= 0) fail(path, "the file has no nodes or no elements; give a 3-D HEX8 mesh");
+  // A classic file stores every element's 8 node numbers (4 bytes at least) and 3 coordinates of every
+  // node (4 bytes at least): a header that states more than the file can hold is refused before allocating.
+  if (kind != "netCDF-4") {
+    const auto bytes = fs::file_size(path, ec);
+    const double need = 32.0 * elements + 12.0 * nodes;
+    if (!ec && need > static_cast<double>(bytes))
+      fail(path, "the header states " + std::to_string(elements) + " elements and " + std::to_string(nodes) +
+                     " nodes, which need at least " + std::to_string(static_cast<long long>(need)) + " bytes, but the file has " +
+                     std::to_string(bytes) + ": a damaged, crafted or truncated file");
+  }
+  // The stated limits (mesh/README.md): 8 x elements and 3 x nodes index int arrays.
+  if (elements > kMaxElements || nodes > kMaxNodes)
+    fail(path, "the header states " + std::to_string(elements) + " elements and " + std::to_string(nodes) +
+                   " nodes; tribex reads at most " + std::to_string(kMaxElements) + " elements and " +
+                   std::to_string(kMaxNodes) + " nodes from one file (split the model, or check the file)");
 
   Mesh m;
   {
@@ -375,8 +403,9 @@ void write_exodus(const Mesh& mesh, const std::string& path, ExodusFormat format
   std::error_code ec;
   fs::rename(partial, target, ec);
   if (ec) {
+    const std::string why = ec.message();  // before remove() reuses ec
     fs::remove(partial, ec);
-    fail(path, "cannot rename the written file into place: " + ec.message());
+    fail(path, "cannot rename the written file into place: " + why);
   }
 }
 

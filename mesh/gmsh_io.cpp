@@ -490,8 +490,9 @@ void write_gmsh(const Mesh& mesh, const std::string& path) {
       throw MeshError(path + ": gmsh wrote nothing; check the directory exists and is writable");
     std::filesystem::rename(tmp, target, ec);
     if (ec) {
+      const std::string why = ec.message();  // before remove() reuses ec (it said "Success")
       std::filesystem::remove(tmp, ec);
-      throw MeshError(path + ": cannot move the written mesh into place (" + ec.message() + ")");
+      throw MeshError(path + ": cannot move the written mesh into place (" + why + ")");
     }
   });
 }

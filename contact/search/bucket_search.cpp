@@ -49,7 +49,7 @@ void BucketSearch::find_candidates(const double* x, const ContactSurface& slave,
     return;
   }
   cell_ = extent_sum / (3.0 * active);
-  for (;;) {
+  for (int grow = 0; grow < 400; ++grow) {  // bounded (issue 54, item 9): 1.5^400 covers any finite extent
     for (int i = 0; i < 3; ++i) origin_[i] = lo[i];
     nx_ = std::max(1, static_cast<int>(std::ceil((hi[0] - lo[0]) / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil((hi[1] - lo[1]) / cell_)));

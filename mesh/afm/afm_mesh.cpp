@@ -55,6 +55,13 @@ void check_spec(const HeightMap& map, const AfmMeshSpec& s) {
     throw MeshError(f + ": coating layers " + std::to_string(s.coating_layers) + " must lie in 1 to 100");
   if (!(s.grading_ratio >= 1.0 && s.grading_ratio <= 1.3))
     throw MeshError(f + ": grading ratio " + std::to_string(s.grading_ratio) + " must lie in [1, 1.3]");
+  // A coating layer under 1e-6 of the element size gives degenerate elements (det J underflows; issue 54,
+  // item 16: 1e-30 m was reported as a hex8 node-order fault).
+  const double thinnest = 1e-6 * s.element_size * s.coating_layers;
+  if (s.coating_thickness > 0.0 && s.coating_thickness < thinnest)
+    throw MeshError(f + ": coating thickness " + nm(s.coating_thickness) + " gives " + std::to_string(s.coating_layers) +
+                    " layers under 1e-6 of the element size " + nm(s.element_size) +
+                    " each (their elements would be degenerate); give 0 (no coating) or at least " + nm(thinnest));
   if (!(s.depth > s.coating_thickness + s.element_size))
     throw MeshError(f + ": depth " + nm(s.depth) + " must exceed the coating thickness plus one element (" +
                     nm(s.coating_thickness + s.element_size) + "); give a larger depth");

@@ -4,9 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "mesh/mesh_error.hpp"
 
 namespace tribex::mesh::afm {
 namespace {
+
+constexpr int kMaxGradedCells = 10'000'000;
 
 double series(double q, int n) {  // sum_{k=1..n} q^k
   double s = 0.0, p = 1.0;
@@ -19,8 +24,17 @@ double series(double q, int n) {  // sum_{k=1..n} q^k
 std::vector<double> graded_sizes(double length, double h, double ratio) {
   if (!(length > 0.0)) return {};
   if (length <= h * ratio) return {length};
+  // The smallest n with h series(ratio, n) >= L, the series summed as it grows (the same additions as
+  // series(); bounded: issue 54, item 9, at most kMaxGradedCells, where ratio 1 and a tiny h would spin).
   int n = 1;
-  while (h * series(ratio, n) < length) ++n;
+  double term = ratio, sum = ratio;
+  while (h * sum < length) {
+    if (n >= kMaxGradedCells)
+      throw MeshError("a graded axis of " + std::to_string(length) + " m at element size " + std::to_string(h) +
+                      " m needs more than 10000000 elements; give a larger element size");
+    sum += (term *= ratio);
+    ++n;
+  }
   if (h * n > length) {  // even uniform elements of h would overshoot: ceil(L/h) equal ones, each <= h
     const int m = static_cast<int>(std::ceil(length / h - 1e-9));
     return std::vector<double>(static_cast<std::size_t>(m), length / m);

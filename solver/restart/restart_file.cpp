@@ -4,7 +4,10 @@
 // turn (token passing with barriers) with the serial driver: restart files are rare and small
 // next to results.h5, and this keeps every rank's arrays in its own group.
 #include <hdf5.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -34,9 +37,11 @@ void write_group(hid_t file, const StateArchive& a, const std::string& path) {
 }
 
 struct ReadContext {
-  StateArchive* archive;
+  StateArchive* archive = nullptr;
   std::string path;
+  std::uintmax_t file_bytes = 0;  // sizes read from the file are checked against it before allocating
   bool failed = false;
+  std::string refused;  // a dataset whose size the file cannot hold (issue 54, item 11)
 };
 
 herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data) {
@@ -49,6 +54,17 @@ herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data)
     return -1;
   }
   const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  // tribex writes restart datasets uncompressed and contiguous (write_group): 8 bytes per value
+  // stored in the file. A larger stated size is an edited or damaged file, refused before allocating.
+  if (n < 0 || static_cast<std::uintmax_t>(n) > ctx->file_bytes / 8) {
+    char gb[32];
+    std::snprintf(gb, sizeof gb, "%.3g", 8.0 * static_cast<double>(n) / 1e9);
+    ctx->refused = ctx->path + ": error: restart dataset '" + name + "' states " + std::to_string(n) +
+                   " values (" + gb + " GB), more than the file's " +
+                   std::to_string(ctx->file_bytes) + " bytes can hold (an edited or damaged restart file?); restart "
+                   "from a file a tribex run wrote";
+    return -1;
+  }
   herr_t status = 0;
   if (H5Tget_class(type.get()) == H5T_FLOAT) {
     auto& v = ctx->archive->reals[name];
@@ -62,6 +78,52 @@ herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data)
   if (status < 0) ctx->failed = true;
   return status < 0 ? -1 : 0;
 }
+
+// libhdf5 (1.10, Debian 12) iterates a damaged symbol-table group without end, growing its memory
+// (the restart fuzz target's finding: 24 GB in 65 s from a 97 kB file). While a restart file is read
+// the address space may grow by at most 256 MB + 8 x the file's size (a tribex restart file is read
+// with a few times its size); beyond it HDF5's allocations fail and the file is reported as damaged.
+// A lower limit of the user's (ulimit -v) is kept. Restored on scope exit.
+class AddressSpaceBudget {
+ public:
+  explicit AddressSpaceBudget(std::uintmax_t file_bytes) {
+    if (getrlimit(RLIMIT_AS, &saved_) != 0) return;
+    long pages = 0;
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+      std::fclose(f);
+    }
+    if (pages <= 0) return;
+    const double now = static_cast<double>(pages) * static_cast<double>(sysconf(_SC_PAGESIZE));
+    const double budget = now + 256e6 + 8.0 * static_cast<double>(file_bytes);
+    if (saved_.rlim_cur != RLIM_INFINITY && static_cast<double>(saved_.rlim_cur) <= budget) return;
+    rlimit bounded = saved_;
+    bounded.rlim_cur = static_cast<rlim_t>(budget);
+    budget_ = bounded.rlim_cur;
+    active_ = setrlimit(RLIMIT_AS, &bounded) == 0;
+  }
+  /// The address space is within 10 % of the budget (an allocation failed for it, not another fault).
+  bool exhausted() const {
+    long pages = 0;
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+      std::fclose(f);
+    }
+    const double now = static_cast<double>(pages) * static_cast<double>(sysconf(_SC_PAGESIZE));
+    return active_ && now > 0.9 * static_cast<double>(budget_);
+  }
+  ~AddressSpaceBudget() {
+    if (active_) setrlimit(RLIMIT_AS, &saved_);
+  }
+  AddressSpaceBudget(const AddressSpaceBudget&) = delete;
+  AddressSpaceBudget& operator=(const AddressSpaceBudget&) = delete;
+  bool active() const { return active_; }
+
+ private:
+  rlimit saved_{};
+  rlim_t budget_ = 0;
+  bool active_ = false;
+};
 
 }  // namespace
 
@@ -128,8 +190,27 @@ StateArchive read_restart_file(const std::string& path) {
   const std::string group_name = "rank_" + std::to_string(parallel::rank());
   H5Handle group(H5Gopen2(file.get(), group_name.c_str(), H5P_DEFAULT), H5Gclose);
   if (!group.valid()) throw SetupError(path + ": error: restart file has no group " + group_name);
-  ReadContext ctx{&archive, path};
-  if (H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, read_member, &ctx) < 0 || ctx.failed)
+  std::error_code size_error;
+  ReadContext ctx;
+  ctx.archive = &archive;
+  ctx.path = path;
+  ctx.file_bytes = std::filesystem::file_size(path, size_error);
+  herr_t walked = 0;
+  bool exhausted = false;
+  {
+    const AddressSpaceBudget budget(ctx.file_bytes);
+    try {
+      walked = H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, read_member, &ctx);
+    } catch (const std::bad_alloc&) {
+      exhausted = true;
+    }
+    exhausted = exhausted || (walked < 0 && ctx.refused.empty() && budget.exhausted());
+  }
+  if (exhausted)
+    throw SetupError(path + ": error: restart file is damaged: reading " + group_name + " took more than 256 MB + 8 x the "
+                     "file's size of memory (a damaged HDF5 group); restart from a file a tribex run wrote");
+  if (!ctx.refused.empty()) throw SetupError(ctx.refused);
+  if (walked < 0 || ctx.failed)
     throw SetupError(path + ": error: restart file is damaged (a dataset of " + group_name + " cannot be read)");
   return archive;
 }

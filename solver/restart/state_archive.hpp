@@ -28,6 +28,8 @@ struct StateArchive {
 
   const std::vector<double>& array(const std::string& name) const {
     auto it = reals.find(name);
+    if (it == reals.end() && integers.count(name))  // issue 54, item 17: an edited file's integer `u`
+      throw SetupError("restart dataset '" + name + "' is integer-typed; tribex writes it as float64 (an edited restart file?)");
     if (it == reals.end()) throw SetupError("restart file lacks '" + name + "' (written by another tribex version?)");
     return it->second;
   }
@@ -47,6 +49,8 @@ struct StateArchive {
   }
   const std::vector<long long>& integer_array(const std::string& name) const {
     auto it = integers.find(name);
+    if (it == integers.end() && reals.count(name))
+      throw SetupError("restart dataset '" + name + "' is float-typed; tribex writes it as int64 (an edited restart file?)");
     if (it == integers.end()) throw SetupError("restart file lacks '" + name + "' (written by another tribex version?)");
     return it->second;
   }

@@ -16,6 +16,7 @@
 #include "solver/run/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
 #include "solver/parallel/partition.hpp"
+#include "solver/restart/restart_checks.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 
 namespace tribex::solver {
@@ -202,8 +203,14 @@ void DeckRun::start_from_restart() {
                        "; resume with the deck and mesh that wrote it, or add --restart-allow-changed to go on with "
                        "these (for example a longer termination time)");
     if (!changed.empty()) log_.say("restart: --restart-allow-changed: " + changed);
+    check_restart_values(*resume_, tc_, region_.results.has_value(), options_.restart_path);
     integrator_->restore_state(*resume_);
     guards_->restore(*resume_);
+  } catch (const SetupError& e) {  // the archive's own words name the dataset; this names the file
+    const std::string what = e.what();
+    error = what.find(": error: ") != std::string::npos
+                ? std::current_exception()
+                : std::make_exception_ptr(SetupError(options_.restart_path + ": error: " + what));
   } catch (...) {
     error = std::current_exception();
   }

@@ -264,6 +264,11 @@ int synth_command(const std::vector<std::string>& argv) {
   if (!out) throw BadInput(cmd + ": -o OUT.csv is required");
   if (!tau || !w) throw BadInput(cmd + ": --tau and --W are required (e.g. --tau 100MPa --W 0.05J/m^2)");
   if (points < 2 || noise < 0) throw BadInput(cmd + ": need --points >= 2 and --noise >= 0");
+  // Bounded before allocating (issue 54, item 12; tools/fit/README.md): 1e7 points are a 240 MB CSV and
+  // about 100 s of the md model.
+  if (points > 10'000'000)
+    throw BadInput(cmd + ": --points " + std::to_string(points) + " is more than the limit of 10000000 (a 240 MB CSV); "
+                   "give fewer points");
   const FrictionModel model(setup);
   FrictionParams p = model.defaults(*tau, *w);
   p.pressure_coefficient = alpha_p;

@@ -13,6 +13,7 @@
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/json.hpp"
 #include "tools/friction_test/calibration.hpp"
 #include "tools/friction_test/dynamic_friction.hpp"
 #include "tools/common/panel_plot.hpp"
@@ -425,6 +426,8 @@ int dynamic_friction(const std::vector<std::string>& argv) {
 }
 
 // ---------------------------------------------------------------- synth
+constexpr double kMaxSynthSamples = 1e7;  // one synthetic record (ringdown, dynamic)
+
 int synth(const std::vector<std::string>& argv) {
   Args a(argv, "tribex friction-test synth", synth_usage);
   if (a.answered_help()) return tools::exit_ok;
@@ -451,6 +454,12 @@ int synth(const std::vector<std::string>& argv) {
         s.damping >= 2 * std::sqrt(s.stiffness * s.mass))
       throw BadInput(cmd + ": need mass, stiffness > 0, 0 <= damping < 2 sqrt(k m) (underdamped), cycles > 0, "
                      "samples-per-cycle >= 4");
+    // Bounded before allocating (issue 54, item 12; tools/friction_test/README.md): 1e7 samples are
+    // 0.8 GB in memory, a 270 MB CSV and about 12 s.
+    if (!(s.samples_per_cycle * s.cycles <= kMaxSynthSamples))
+      throw BadInput(cmd + ": --cycles " + tools::json_number(s.cycles) + " x --samples-per-cycle " +
+                     tools::json_number(s.samples_per_cycle) + " = " + tools::json_number(s.cycles * s.samples_per_cycle) +
+                     " samples, more than the limit of 1e7 (0.8 GB in memory); give fewer cycles or samples per cycle");
     synth_oscillator(s, *out).write(*out);
   } else if (kind == "static") {
     StaticSetup s;

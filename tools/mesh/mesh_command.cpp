@@ -36,10 +36,10 @@ const char* mesh_usage =
 // a path that is not a regular file. Checked before anything is read or built.
 void require_mesh_output(const std::string& out, const std::string& command) {
   const std::string ext = std::filesystem::path(out).extension().string();
+  mesh::require_output_target(out);  // a folder, FIFO or device first: whatever its name (issue 54, item 16)
   if (!mesh::is_exodus_path(out) && ext != ".msh")
     throw BadInput(command + ": cannot write '" + out + "': unknown mesh extension '" + ext +
                    "'; give a gmsh .msh or an Exodus II .exo, .e, .g or .gen file");
-  mesh::require_output_target(out);
 }
 
 void write_mesh_file(const mesh::Mesh& m, const std::string& out) {

@@ -5,24 +5,24 @@
 
 usage: /usr/bin/python3 tools/plot/gw_figures.py DIR     (writes DIR/fig4_*.png)
 """
-import csv
 import os
+import pathlib
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import pyplot  # noqa: E402  (matplotlib, Agg: imported after the inputs are checked)
+from cli_errors import guarded, read_csv_rows, require_folder  # noqa: E402
 
 
 def rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+    return read_csv_rows(path, "a CSV of tribex gw figures", "run `tribex gw figures --out DIR` first")
 
 
 def main(d):
+    require_folder(d, "the --out folder of tribex gw figures")
     # Fig. 4.6: discrete populations converge to the continuous curve.
     r = rows(os.path.join(d, "fig4_6.csv"))
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(5.5, 4.2))
     for label in sorted({x["contacting_at_t1.5"] for x in r}, key=lambda s: float(s)):
         sel = [x for x in r if x["contacting_at_t1.5"] == label and float(x["load"]) > 0]
@@ -105,5 +105,6 @@ def main(d):
 
 if __name__ == "__main__":
     if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    main(sys.argv[1])
+        print(__doc__, file=sys.stderr)
+        sys.exit(2)
+    sys.exit(guarded(lambda: main(sys.argv[1])))

@@ -5,13 +5,12 @@
 usage: /usr/bin/python3 tools/plot/plot_history.py HISTORY.csv OUT.png --columns a,b,c [--title T]
 """
 import argparse
-import csv
+import pathlib
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import pyplot  # noqa: E402  (matplotlib, Agg: imported after the inputs are checked)
+from cli_errors import guarded, read_csv_rows  # noqa: E402
 
 
 def main():
@@ -21,11 +20,8 @@ def main():
     p.add_argument("--columns", required=True, help="comma-separated column names")
     p.add_argument("--title", default="")
     a = p.parse_args()
-    with open(a.history) as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        print(f"error: {a.history} has no data rows", file=sys.stderr)
-        return 2
+    rows = read_csv_rows(a.history, "a tribex history.csv", "give the history.csv of a run")
+    plt = pyplot()
     names = a.columns.split(",")
     missing = [n for n in names if n not in rows[0]]
     if missing:
@@ -47,4 +43,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

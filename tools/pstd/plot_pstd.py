@@ -6,19 +6,27 @@ normal_force.png   normal force vs position, PSTD events shaded (report Fig. 2.2
 contacts_area.png  contacting asperities and true contact area vs position (Figs. 2.25, 2.26)
 area_study.png     normal force vs position for 1..N counterface copies (Fig. 2.24), if area_study.csv exists
 """
-import csv
 import os
+import pathlib
 import sys
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import pyplot  # noqa: E402  (matplotlib, Agg: imported after the inputs are checked)
+from cli_errors import InputError, guarded, read_csv_rows, require_folder  # noqa: E402
 
 
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return {k: [float(r[k]) for r in rows] for k in (rows[0].keys() if rows else [])}
+def read(path, may_be_empty=False):
+    """The columns of a CSV of `tribex pstd` as lists of floats (events.csv may have no rows)."""
+    fix = "give the -o folder of a finished `tribex pstd` run"
+    if may_be_empty and os.path.isfile(path) and os.path.getsize(path) > 0:
+        with open(path, newline="") as f:
+            if sum(1 for _ in f) == 1:  # the header alone: no events
+                return {}
+    rows = read_csv_rows(path, "a CSV of tribex pstd", fix)
+    try:
+        return {k: [float(r[k]) for r in rows] for k in rows[0].keys()}
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{path}: not a complete CSV of tribex pstd ({e})") from None
 
 
 def shade_events(ax, events):
@@ -29,8 +37,10 @@ def shade_events(ax, events):
 
 
 def main(out):
+    require_folder(out, "the -o folder of a tribex pstd run")
     t = read(os.path.join(out, "trajectory.csv"))
-    ev = read(os.path.join(out, "events.csv"))
+    ev = read(os.path.join(out, "events.csv"), may_be_empty=True)
+    plt = pyplot()
     x = [p / 1e3 for p in t["position[nm]"]]
 
     fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -81,5 +91,6 @@ def main(out):
 
 if __name__ == "__main__":
     if len(sys.argv) != 2:
-        sys.exit("usage: plot_pstd.py OUTDIR")
-    main(sys.argv[1])
+        print("usage: plot_pstd.py OUTDIR", file=sys.stderr)
+        sys.exit(2)
+    sys.exit(guarded(lambda: main(sys.argv[1])))

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -141,12 +142,35 @@ RawProfile map_row(const mesh::afm::HeightMap& map, std::size_t iy) { return map
 
 RawProfile map_column(const mesh::afm::HeightMap& map, std::size_t ix) { return map_line(map, false, ix); }
 
+void check_sample_count(double count, const std::string& what, const std::string& fix) {
+  if (count <= kMaxProfileSamples) return;
+  char b[64];
+  std::snprintf(b, sizeof b, "%.3g samples", count);
+  throw tools::BadInput("tribex pstd: " + what + " needs " + b + ", more than the limit of 1e8 samples per profile (0.8 GB "
+                        "an array); " + fix);
+}
+
+namespace {
+std::string um(double length) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%g um", length * 1e6);
+  return b;
+}
+std::string metres(double length) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%g m", length);
+  return b;
+}
+}  // namespace
+
 Profile periodic_fine(const RawProfile& raw, double dx) {
   Profile p;
   p.dx = dx;
   p.source_dx = raw.mean_spacing();
   p.origin = raw.origin;
   const double length = raw.x.back() - raw.x.front() + p.source_dx;
+  check_sample_count(length / dx, "the substrate (" + um(length) + " at --sampling " + metres(dx) + ")",
+                     "choose a coarser --sampling or a shorter substrate");
   const auto n = static_cast<std::size_t>(std::floor(length / dx + 1e-9));
   p.z = resample(raw.x, raw.z, raw.x.front(), dx, n, true);
   return p;
@@ -170,6 +194,8 @@ Profile window_fine(const RawProfile& raw, double start, double length, double d
   p.dx = dx;
   p.source_dx = spacing;
   p.origin = raw.origin;
+  check_sample_count(length / dx, "a counterface segment (" + um(length) + " at --sampling " + metres(dx) + ")",
+                     "choose a coarser --sampling or a shorter --segment-length");
   const auto n = static_cast<std::size_t>(std::floor(length / dx + 1e-9));
   p.z = resample(w.x, w.z, start, dx, n, false);
   return p;

@@ -33,6 +33,13 @@ RawProfile map_row(const mesh::afm::HeightMap& map, std::size_t iy);
 /// Column ix of a height map: along y, orthogonal to the scan direction.
 RawProfile map_column(const mesh::afm::HeightMap& map, std::size_t ix);
 
+/// The most samples of one profile (source or model grid; issue 54, item 12): 1e8 doubles are 0.8 GB per
+/// array, and a run's cost grows as the square of the count (steps x window). tools/pstd/README.md.
+inline constexpr double kMaxProfileSamples = 1e8;
+/// Throws BadInput naming `what` (e.g. "the substrate (10 um at --sampling 1e-30 m)"), the count and the
+/// bound when count (a length over a spacing) is not finite or above kMaxProfileSamples; `fix` says what to change.
+void check_sample_count(double count, const std::string& what, const std::string& fix);
+
 /// The whole source line, oversampled to spacing dx and closed periodically (the substrate).
 Profile periodic_fine(const RawProfile& raw, double dx);
 /// [start, start + length) of the source line, oversampled to dx; optionally levelled (least-squares line

@@ -104,6 +104,16 @@ Profiles make_profiles(tools::Args& a, double dx, std::uint64_t seed) {
   if (!(rms >= 0) || !(corr > 0) || !(source_dx > 0) || !(substrate_length > 0))
     throw tools::BadInput("tribex pstd: --rms must be >= 0 and --corr, --source-dx, --substrate-length > 0");
   if (source_dx < dx) throw tools::BadInput("tribex pstd: --source-dx must not be finer than --sampling");
+  // Bounded before anything is allocated (issue 54, item 12; pstd::kMaxProfileSamples, tools/pstd/README.md).
+  if (!afm && !substrate_file)
+    pstd::check_sample_count(substrate_length / source_dx,
+                             "the synthetic substrate (--substrate-length " + tools::json_number(substrate_length) +
+                                 " m at --source-dx " + tools::json_number(source_dx) + " m)",
+                             "choose a shorter --substrate-length or a coarser --source-dx");
+  pstd::check_sample_count(segment_length / dx * static_cast<double>(segments),
+                           "the counterface (--segments " + std::to_string(segments) + " x --segment-length " +
+                               tools::json_number(segment_length) + " m at --sampling " + tools::json_number(dx) + " m)",
+                           "choose a coarser --sampling, fewer --segments or a shorter --segment-length");
 
   Profiles p;
   const auto k_segments = static_cast<std::size_t>(segments);

@@ -4,8 +4,9 @@ a window, means, relative errors, a deck's piecewise-linear function, the trapez
 quasi-static (kinetic / internal energy) figure, the command line, the plot set-up and the failure report. Each script keeps its own reference, tolerances and messages.
 """
 import argparse
-import csv
 import os
+
+from cli_errors import InputError, read_csv_rows
 
 
 def read_history(path):
@@ -13,8 +14,11 @@ def read_history(path):
     file (a name ending in .csv) or the run's output folder."""
     if os.path.isdir(path) or not path.endswith(".csv"):
         path = os.path.join(path, "history.csv")
-    with open(path) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    rows = read_csv_rows(path, "a tribex history.csv", "give the history.csv (or output folder) of a finished run")
+    try:
+        return [{k: float(v) for k, v in r.items()} for r in rows]
+    except (TypeError, ValueError) as e:  # a cut row (None) or a word where a number belongs
+        raise InputError(f"{path}: not a complete tribex history.csv ({e})") from None
 
 
 def history_parser(doc, plot_help, positional="history"):

@@ -34,6 +34,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 from history_checks import deepest_index, pyplot, read_history  # noqa: E402
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1, ebar, f_deep, hertz_area  # noqa: E402
 from make_decks import RUNS  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MIN_RINGS = 3.0
@@ -482,4 +483,4 @@ def write_results(runs_dir):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -14,18 +14,22 @@ receives the slave nodal forces through its shape functions at the slave nodes, 
 integral of a uniform traction); see verification/README.md.
 """
 import argparse
-import csv
+import pathlib
 import sys
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from cli_errors import guarded, read_csv_rows  # noqa: E402
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("output")
     a = p.parse_args()
-    rows = list(csv.DictReader(open(f"{a.output}/history.csv")))
+    rows = read_csv_rows(f"{a.output}/history.csv", "the contact patch run's history.csv",
+                         "give the output folder of a finished run of contact_patch.i")
     last = rows[-1]
     f = lambda k: float(last[k])  # noqa: E731
     P = f("contact_normal_force")
@@ -51,4 +55,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -10,6 +10,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import deepest_index, read_history  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 
 def pull_off(output):
@@ -32,4 +33,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -10,6 +10,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from cli_errors import guarded  # noqa: E402
 from history_checks import (finish_axes, history_parser, mean, pyplot, read_history,  # noqa: E402
                             report_failures, rows_between, save_figure)
 
@@ -57,4 +58,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -20,6 +20,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import pyplot, read_history, report_failures, save_figure  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 E, NU, Y, K = 161e9, 0.23, 4e9, 20e9   # Pa: the decks' material
 L = 10e-9                               # m, cube edge
@@ -99,4 +100,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -22,6 +22,7 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import finish_axes, history_parser, pyplot, read_history, report_failures, save_figure  # noqa: E402
 from results_h5 import si  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 E, NU, Y, R = 161e9, 0.23, 4e9, 27e-9   # the deck's silicon and sphere
 E_STAR = E / (2 * (1 - NU * NU))        # two identical bodies
@@ -108,4 +109,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -16,6 +16,7 @@ import sys
 from scipy import integrate
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from cli_errors import guarded  # noqa: E402
 from history_checks import (finish_axes, history_parser, max_kinetic_over_stored, mean, pyplot,  # noqa: E402
                             read_history, report_failures, rows_between, save_figure)
 
@@ -103,4 +104,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

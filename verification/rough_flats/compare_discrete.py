@@ -13,6 +13,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import finish_axes, history_parser, pyplot, read_history, report_failures, rows_between, save_figure  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 E_STAR, W = 84.1e9, 0.05                      # Pa, J/m^2 (rough_flats_discrete.i)
@@ -78,4 +79,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -17,6 +17,7 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import finish_axes, history_parser, pyplot, read_history, report_failures, save_figure  # noqa: E402
 from rough_theory import gw_integral, noncontact_attraction  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 ETA, R, SIGMA = 3.796e16, 14.71e-9, 1.536e-9        # di-5 summits: 1/m^2, m, m
 E_STAR, W = 84.1e9, 0.1                              # Pa, J/m^2
@@ -79,4 +80,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -15,6 +15,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
+from cli_errors import guarded  # noqa: E402
 from history_checks import (finish_axes, history_parser, mean, pyplot, read_history, report_failures,  # noqa: E402
                             rows_between, save_figure)
 
@@ -90,4 +91,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

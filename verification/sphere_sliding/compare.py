@@ -25,6 +25,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 from contact_theory import dmt_radius as dmt_radius_of, effective_modulus  # noqa: E402
 from history_checks import pyplot, read_history, report_failures, save_figure  # noqa: E402
 from sliding_checks import base_reaction_failure, friction_radius_axes, sliding_rows, steady_window  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 E, NU, R = 161e9, 0.23, 27e-9
 ESTAR = effective_modulus(E, NU)
@@ -99,4 +100,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -16,6 +16,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import finish_axes, pyplot, read_history, save_figure  # noqa: E402
+from cli_errors import guarded  # noqa: E402
 
 E, NU, RHO = 160e9, 0.22, 2330.0
 L, A, V0, T_RAMP = 100e-9, 1e-18, 1.0, 1e-12
@@ -70,4 +71,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))

@@ -39,6 +39,9 @@ from contact_theory import dmt_radius, effective_modulus  # noqa: E402
 from history_checks import (max_kinetic_over_stored, mean, pyplot, read_history, report_failures,  # noqa: E402
                             rows_between, save_figure)
 from sliding_checks import base_reaction_failure, friction_radius_axes, sliding_rows, steady_window  # noqa: E402
+from cli_errors import guarded, make_folder, require_executable, require_folder  # noqa: E402
+
+MADE = []  # output folders this run created: removed again on bad input
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LOAD = 500e-9                      # N, as in make_decks.py
@@ -176,7 +179,11 @@ def main():
                          "(DIR/<deck>_output, e.g. an earlier run's --out), within 1 %%")
     a = ap.parse_args()
     cases = [c for c in CASES if a.case in (None, c[0])]
-    os.makedirs(a.out, exist_ok=True)
+    if a.no_run:
+        require_folder(a.out, "the --out folder of an earlier afm_sliding.py run", "run without --no-run first")
+    else:
+        require_executable(a.tribex, "--tribex", "build tribex (README.md) or give its path with --tribex")
+        make_folder(a.out, MADE)
     results, failures = {}, []
     for case, label, tau in cases:
         name = f"afm_sliding_{a.variant}_{case}" + ("_mass_scaled" if a.mass_scaled else "")
@@ -222,4 +229,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main, MADE))

@@ -31,6 +31,9 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
 from history_checks import finish_axes, mean, pyplot, read_history, report_failures, rows_between, save_figure  # noqa: E402
 from rough_theory import gw_integral, noncontact_attraction  # noqa: E402
+from cli_errors import InputError, guarded, make_folder, require_executable  # noqa: E402
+
+MADE = []  # output folders this run created: removed again on bad input
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
@@ -180,13 +183,15 @@ def main():
     a = ap.parse_args()
     variants = a.variants.split(",")
     if any(v not in VARIANTS for v in variants):
-        sys.exit(f"run_clamp.py: --variants takes {', '.join(VARIANTS)}")
+        raise InputError(f"run_clamp.py: --variants takes {', '.join(VARIANTS)}, got '{a.variants}'")
     with open(os.path.join(HERE, "clamp.i")) as f:
         deck_text = f.read()
+    require_executable(a.tribex, "--tribex", "build tribex (README.md) or give its path with --tribex")
     failures, results = [], []
     for variant in variants:
         out = os.path.join(a.out, variant)
-        os.makedirs(out, exist_ok=True)
+        make_folder(a.out, MADE)
+        make_folder(out, MADE)
         deck = variant_deck(deck_text, variant)
         points = [run_load(a.tribex, deck, load, out) for load in (LOADS_REDUCED if a.reduced else LOADS_FULL)]
         mu, mu_sigma, f_adh, f_adh_sigma = fit_variant(a.tribex, points, out, variant)
@@ -205,4 +210,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main, MADE))

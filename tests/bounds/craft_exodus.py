@@ -1,0 +1,44 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Writes a crafted copy of a netCDF classic Exodus II file (tests/bounds/cases.sh, issue 54 items 11, 16).
+
+usage: craft_exodus.py SRC DST elements|name_length|cut|not_exodus
+  elements:    the header's num_elem dimension set to 2,000,000,000
+  name_length: the global attribute maximum_name_length set to 2,000,000,000
+  cut:         the first half of the file
+  duplicate_dimension: dimension num_nod_ns9 renamed num_nod_ns8 (the first fuzz finding: the libraries
+               misread it and read_exodus crashed)
+  not_exodus:  a netCDF classic file with one dimension and variable, no Exodus structure (SRC unused)
+"""
+import struct
+import sys
+
+
+def patch(data, marker, skip, value):
+    at = data.find(marker)
+    if at < 0:
+        sys.exit(f"craft_exodus.py: {marker!r} not found")
+    at += len(marker) + skip
+    return data[:at] + struct.pack(">i", value) + data[at + 4:]
+
+
+src, dst, kind = sys.argv[1:4]
+if kind == "not_exodus":
+    import netCDF4
+    with netCDF4.Dataset(dst, "w", format="NETCDF3_64BIT_OFFSET") as f:
+        f.createDimension("x", 4)
+        f.createVariable("temperature", "f8", ("x",))[:] = [1.0, 2.0, 3.0, 4.0]
+    sys.exit(0)
+data = open(src, "rb").read()
+if kind == "elements":
+    data = patch(data, b"\x00\x00\x00\x08num_elem", 0, 2_000_000_000)
+elif kind == "name_length":
+    data = patch(data, b"\x00\x00\x00\x13maximum_name_length\x00", 8, 2_000_000_000)
+elif kind == "duplicate_dimension":
+    marker = b"\x00\x00\x00\x0bnum_nod_ns9"
+    if marker not in data:
+        sys.exit("craft_exodus.py: no dimension num_nod_ns9")
+    data = data.replace(marker, b"\x00\x00\x00\x0bnum_nod_ns8", 1)
+elif kind == "cut":
+    data = data[: len(data) // 2]
+open(dst, "wb").write(data)

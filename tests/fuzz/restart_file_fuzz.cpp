@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// libFuzzer target for restart files (issue 54, items 9, 11, 17): any bytes, written to a scratch file,
+// must give an archive whose values pass check_restart_values, or a SetupError naming the file, from
+// read_restart_file (HDF5) and the checks; never a crash, a hang, an allocation beyond what the file
+// holds or another exception. Built only with -DTRIBEX_FUZZ=ON (clang); tests/fuzz/CMakeLists.txt.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+#include "inputs/deck.hpp"
+#include "solver/errors.hpp"
+#include "solver/restart/restart_checks.hpp"
+#include "solver/restart/state_archive.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const std::string path = "restart_fuzz_" + std::to_string(getpid()) + ".h5";
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return 0;
+  std::fwrite(data, 1, size, f);
+  std::fclose(f);
+  tribex::inputs::TimeControlSpec tc;  // the span of tests/parallel/mpi_wave.i, whose files are the seeds
+  tc.termination_time = 2e-11;
+  try {
+    const tribex::solver::StateArchive a = tribex::solver::read_restart_file(path);
+    tribex::solver::check_restart_values(a, tc, true, path);
+    // What restore_state reads first: typed accessors on the archive.
+    if (a.has("u")) (void)a.array("u");
+    if (a.has("stable_elements")) (void)a.integer_array("stable_elements");
+  } catch (const tribex::solver::SetupError&) {
+    // expected for almost every input
+  }
+  return 0;
+}
