@@ -25,16 +25,17 @@ using tools::Args;
 using tools::BadInput;
 
 const char* usage =
-    "usage: tribex adhesion-curve [--radius 27nm | --tabor MU] [--work 0.05J/m^2] [--z0 0.3nm] [--cutoff 20z0]\n"
-    "         [--e-star E* | --youngs 161GPa --poisson 0.23] [--max-load P] [--resolution 8] [--penalty 1000]\n"
-    "         [-o DIR] [--no-plot] [--json]\n"
+    "usage: tribex adhesion-curve [--radius 27nm | --tabor MU] [--work 0.05J/m^2] [--z0 0.3nm] [--cutoff H_C]\n"
+    "         [--e-star E* | --youngs 161GPa --poisson 0.23] [--max-load P] [--contact-gap G_J]\n"
+    "         [--resolution 8] [--penalty 1000] [-o DIR] [--no-plot] [--json]\n"
     "An elastic sphere (paraboloid, radius R) on a flat, both with the composite modulus E*\n"
     "(default: Si on Si, E*= E/(2(1-nu^2))), interacting by the law of `model = adhesion`: the Lennard-Jones 3-9\n"
     "traction (work W, equilibrium separation z0, cut-off separation h_c, default 20 z0, shifted to be\n"
     "continuous) outside contact and hard contact (a stiff penalty, k = PENALTY E*/z0) inside, solved\n"
     "self-consistently on rings (docs/theory.md 6.7, tools/adhesion/README.md). The curve is traced from out\n"
     "of range through contact to the largest load --max-load (default 3 pi W_c R; required when W = 0).\n"
-    "--tabor MU sets R = MU^3 E*^2 z0^3/W^2 (mu_T = (R W^2/(E*^2 z0^3))^(1/3)). --resolution: rings per\n"
+    "--tabor MU sets R = MU^3 E*^2 z0^3/W^2 (mu_T = (R W^2/(E*^2 z0^3))^(1/3)). --contact-gap: the contact radius is where\n"
+    "g <= g_j (the FE's in-contact rule, default 0.05 z0; 0 when W = 0). --resolution: rings per\n"
     "shortest gap length at the contact edge (Eq. 6.7.5). Writes DIR/adhesion.csv (the curve, SI and\n"
     "normalised), DIR/limits.csv (DMT, JKR, Maugis-Dugdale), DIR/summary.json (pull-off under load control,\n"
     "jump-out and jump-in under displacement control) and DIR/adhesion.png (default DIR = adhesion_output).\n";
@@ -87,6 +88,9 @@ Problem parse_problem(Args& a, CurveSettings& set) {
   pb.radius = tabor ? std::pow(*tabor, 3) * pb.e_star * pb.e_star * std::pow(law.z0, 3) / (law.work * law.work)
                     : radius.value_or(27e-9);
   if (!(pb.radius > 0)) throw BadInput("tribex adhesion-curve: --radius must be > 0 (e.g. --radius 27nm)");
+  pb.contact_gap = a.quantity("--contact-gap", law.work > 0 ? 0.05 * law.z0 : 0.0, dim::length);
+  if (!(pb.contact_gap >= 0 && pb.contact_gap < 0.2 * law.z0))
+    throw BadInput("tribex adhesion-curve: --contact-gap takes 0 <= g_j < 0.2 z0 (the FE's junction gap tolerance; default 0.05 z0)");
   const double kappa = a.real("--penalty", 1000);
   if (!(kappa >= 10 && kappa <= 1e6)) throw BadInput("tribex adhesion-curve: --penalty takes 10..1e6 (k = PENALTY E*/z0; default 1000)");
   pb.law.penalty = kappa * pb.e_star / law.z0;

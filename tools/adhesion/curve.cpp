@@ -73,16 +73,17 @@ class Tracer {
   double r_cut_ = 0;
 };
 
-// The outermost radius where g = g_eq (p changes sign; Eq. 6.7.6), by bisection between grid points.
+// The contact radius: the outermost radius where g <= g_j, the in-contact gap of the FE
+// (`junction gap tolerance`, docs/theory.md 7.2; Eq. 6.7.6), by bisection between grid points.
 double contact_radius_of(const Problem& pb, const Equilibrium& s) {
-  if (pb.law.law.work == 0) return s.control_radius;  // g* = g_eq = 0: the control is the edge
-  const double geq = pb.law.zero_pressure_gap();
+  const double gj = pb.contact_gap;
+  if (pb.law.law.work == 0 && gj == 0) return s.control_radius;  // g* = 0 = g_j: the control is the edge
   std::size_t k = s.gap.size();
-  while (k > 0 && s.gap[k - 1] > geq) --k;
-  if (k == 0) return gap_at(pb, s, 0.0) <= geq ? s.grid.points[0] : 0.0;
+  while (k > 0 && s.gap[k - 1] > gj) --k;
+  if (k == 0) return gap_at(pb, s, 0.0) <= gj ? s.grid.points[0] : 0.0;
   if (k == s.gap.size()) return s.grid.edges.back();
   double lo = s.grid.points[k - 1], hi = s.grid.points[k];
-  for (int i = 0; i < 50 && hi - lo > 1e-9 * hi; ++i) (gap_at(pb, s, 0.5 * (lo + hi)) <= geq ? lo : hi) = 0.5 * (lo + hi);
+  for (int i = 0; i < 50 && hi - lo > 1e-9 * hi; ++i) (gap_at(pb, s, 0.5 * (lo + hi)) <= gj ? lo : hi) = 0.5 * (lo + hi);
   return 0.5 * (lo + hi);
 }
 
@@ -120,7 +121,7 @@ bool small_step(const Problem& pb, const CurveSettings& set, const Curve& c, con
   if (c.points.empty()) return true;
   const auto& p = c.points.back();
   const double wc = pb.law.captured_work();
-  const double load_scale = wc > 0 ? M_PI * wc * pb.radius : set.max_load / 20;
+  const double load_scale = wc > 0 ? M_PI * wc * pb.radius : set.max_load;
   if (std::abs(next.load - p.load) > set.max_load_step * load_scale) return false;
   if (wc == 0) return true;
   const double k = 4 * pb.e_star / 3, approach_scale = std::cbrt(M_PI * M_PI * wc * wc * pb.radius / (k * k));

@@ -16,6 +16,7 @@ struct Problem {
   double radius = 0;  // R, m (paraboloid r^2/(2R))
   double e_star = 0;  // composite modulus E*, Pa
   GapLaw law;
+  double contact_gap = 0;  // g_j, m: in contact where g <= g_j (the FE's `junction gap tolerance`, default 0.05 z0)
 };
 
 /// Ring edges (0 = edges[0] < ... < edges.back() = r_max) and collocation midpoints.
