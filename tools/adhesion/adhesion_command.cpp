@@ -26,14 +26,15 @@ using tools::BadInput;
 
 const char* usage =
     "usage: tribex adhesion-curve [--radius 27nm | --tabor MU] [--work 0.05J/m^2] [--z0 0.3nm] [--cutoff H_C]\n"
-    "         [--e-star E* | --youngs 161GPa --poisson 0.23] [--max-load P] [--contact-gap G_J]\n"
+    "         [--e-star E* | --youngs 161GPa --poisson 0.23] [--max-load P | --max-load-bar 3] [--contact-gap G_J]\n"
     "         [--resolution 8] [--penalty 1000] [-o DIR] [--no-plot] [--json]\n"
     "An elastic sphere (paraboloid, radius R) on a flat, both with the composite modulus E*\n"
     "(default: Si on Si, E*= E/(2(1-nu^2))), interacting by the law of `model = adhesion`: the Lennard-Jones 3-9\n"
     "traction (work W, equilibrium separation z0, cut-off separation h_c, default 20 z0, shifted to be\n"
     "continuous) outside contact and hard contact (a stiff penalty, k = PENALTY E*/z0) inside, solved\n"
     "self-consistently on rings (docs/theory.md 6.7, tools/adhesion/README.md). The curve is traced from out\n"
-    "of range through contact to the largest load --max-load (default 3 pi W_c R; required when W = 0).\n"
+    "of range through contact to the largest load --max-load (N) or --max-load-bar (in pi W_c R, default 3;\n"
+    "--max-load is required when W = 0).\n"
     "--tabor MU sets R = MU^3 E*^2 z0^3/W^2 (mu_T = (R W^2/(E*^2 z0^3))^(1/3)). --contact-gap: the contact radius is where\n"
     "g <= g_j (the FE's in-contact rule, default 0.05 z0; 0 when W = 0). --resolution: rings per\n"
     "shortest gap length at the contact edge (Eq. 6.7.5). Writes DIR/adhesion.csv (the curve, SI and\n"
@@ -98,8 +99,10 @@ Problem parse_problem(Args& a, CurveSettings& set) {
   if (!(set.points_per_length >= 2 && set.points_per_length <= 100))
     throw BadInput("tribex adhesion-curve: --resolution takes 2..100 rings per gap length (default 8)");
   const auto max_load = a.quantity("--max-load", dim::force);
+  const auto max_load_bar = a.real("--max-load-bar");
+  if (max_load && max_load_bar) throw BadInput("tribex adhesion-curve: give --max-load or --max-load-bar, not both");
   if (!max_load && law.work == 0) throw BadInput("tribex adhesion-curve: --work 0 needs --max-load (e.g. --max-load 50nN)");
-  set.max_load = max_load.value_or(3 * M_PI * pb.law.captured_work() * pb.radius);
+  set.max_load = max_load.value_or(max_load_bar.value_or(3) * M_PI * pb.law.captured_work() * pb.radius);
   if (!(set.max_load > 0)) throw BadInput("tribex adhesion-curve: --max-load must be > 0 (e.g. --max-load 50nN)");
   return pb;
 }
