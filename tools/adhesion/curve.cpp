@@ -75,9 +75,7 @@ class Tracer {
 
 // The contact radius: the outermost radius where g <= g_j, the in-contact gap of the FE
 // (`junction gap tolerance`, docs/theory.md 7.2; Eq. 6.7.6), by bisection between grid points.
-double contact_radius_of(const Problem& pb, const Equilibrium& s) {
-  const double gj = pb.contact_gap;
-  if (pb.law.law.work == 0 && gj == 0) return s.control_radius;  // g* = 0 = g_j: the control is the edge
+double radius_where(const Problem& pb, const Equilibrium& s, double gj) {
   std::size_t k = s.gap.size();
   while (k > 0 && s.gap[k - 1] > gj) --k;
   if (k == 0) return gap_at(pb, s, 0.0) <= gj ? s.grid.points[0] : 0.0;
@@ -85,6 +83,11 @@ double contact_radius_of(const Problem& pb, const Equilibrium& s) {
   double lo = s.grid.points[k - 1], hi = s.grid.points[k];
   for (int i = 0; i < 50 && hi - lo > 1e-9 * hi; ++i) (gap_at(pb, s, 0.5 * (lo + hi)) <= gj ? lo : hi) = 0.5 * (lo + hi);
   return 0.5 * (lo + hi);
+}
+
+double contact_radius_of(const Problem& pb, const Equilibrium& s) {
+  if (pb.law.law.work == 0 && pb.contact_gap == 0) return s.control_radius;  // g* = 0 = g_j: the control is the edge
+  return radius_where(pb, s, pb.contact_gap);
 }
 
 CurvePoint point_of(const Problem& pb, const Equilibrium& s, bool contact) {
@@ -95,6 +98,7 @@ CurvePoint point_of(const Problem& pb, const Equilibrium& s, bool contact) {
   p.load = s.load;
   p.contact_radius = contact_radius_of(pb, s);
   p.bonded_radius = contact ? s.control_radius : 0.0;
+  p.zone_radius = pb.law.law.work > 0 ? radius_where(pb, s, pb.law.law.z0) : p.contact_radius;
   p.central_gap = s.central_gap;
   p.min_gap = *std::min_element(s.gap.begin(), s.gap.end());
   p.rings = static_cast<int>(s.gap.size());
@@ -184,7 +188,7 @@ Marker refine(Tracer& tr, const std::vector<Equilibrium>& states, const Curve& c
     if (f1 <= f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = eval(x1); }
     else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = eval(x2); }
   }
-  return {true, best.approach, best.load, best.contact_radius, best.bonded_radius};
+  return {true, best.approach, best.load, best.contact_radius, best.bonded_radius, best.zone_radius};
 }
 
 }  // namespace
@@ -237,7 +241,7 @@ Curve trace_curve(const Problem& pb, const CurveSettings& set) {
   const std::size_t last = c.points.size() - 1;
   auto at = [&](std::size_t k) {
     const auto& q = c.points[k];
-    return Marker{true, q.approach, q.load, q.contact_radius, q.bonded_radius};
+    return Marker{true, q.approach, q.load, q.contact_radius, q.bonded_radius, q.zone_radius};
   };
   c.pull_off = m.pull_off > 0 && m.pull_off < last ? refine(tr, states, c, m.pull_off, true, 1.0) : at(m.pull_off);
   if (m.jump_in) c.jump_in = refine(tr, states, c, *m.jump_in, false, -1.0);
