@@ -138,8 +138,8 @@ int run(const std::vector<std::string>& argv) {
   } else {
     std::printf("%s\n%zu points, up to %d rings (%.2f s)\n", about.str().c_str(), c.points.size(), c.max_rings, seconds);
     if (s.load > 0) {
-      std::printf("pull-off (load control)   P/(pi W_c R) = %.5f  at delta = %.4g z0, a = %.4g nm\n", c.pull_off.load / s.load,
-                  c.pull_off.approach / pb.law.law.z0, c.pull_off.contact_radius * 1e9);
+      std::printf("pull-off (load control)   P/(pi W_c R) = %.5f (%.4g nN) at delta = %.4g z0, a = %.4g nm\n",
+                  c.pull_off.load / s.load, c.pull_off.load * 1e9, c.pull_off.approach / pb.law.law.z0, c.pull_off.contact_radius * 1e9);
       if (c.jump_out.found)
         std::printf("jump-out (displ. control) P/(pi W_c R) = %.5f  at delta = %.4g z0, a = %.4g nm\n", c.jump_out.load / s.load,
                     c.jump_out.approach / pb.law.law.z0, c.jump_out.contact_radius * 1e9);
