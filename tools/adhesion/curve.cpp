@@ -74,7 +74,7 @@ class Tracer {
 };
 
 // The contact radius: the outermost radius where g <= g_j, the in-contact gap of the FE
-// (`junction gap tolerance`, docs/theory.md 7.2; Eq. 6.7.6), by bisection between grid points.
+// (`junction gap tolerance`, docs/theory.md 7.2 and 6.7.6), by bisection between grid points.
 double radius_where(const Problem& pb, const Equilibrium& s, double gj) {
   std::size_t k = s.gap.size();
   while (k > 0 && s.gap[k - 1] > gj) --k;
@@ -164,7 +164,7 @@ void follow(Tracer& tr, const CurveSettings& set, Curve& c, std::vector<Equilibr
 }
 
 // Golden-section search of y(s) (load or approach, sign +1 for a minimum, -1 for a maximum) on
-// [s_{k-1}, s_{k+1}] with a solve at every trial parameter, from the traced state k (Eq. 6.7.7):
+// [s_{k-1}, s_{k+1}] with a solve at every trial parameter, from the traced state k (docs/theory.md 6.7.7):
 // exact to the solver's tolerance at smooth extrema and at kinks (the contact onset) alike.
 Marker refine(Tracer& tr, const std::vector<Equilibrium>& states, const Curve& c, std::size_t k, bool of_load, double sign) {
   const Problem& pb = tr.problem();

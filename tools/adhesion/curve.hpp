@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The load-approach curve of the Lennard-Jones sphere-flat reference traced through both branches
-// (docs/theory.md 6.7.4): before contact the control is the central gap g(0), stepped from the cut-off
-// to 0; in contact it is the contact radius a, stepped up to the largest load. Neither turns at the
-// jump-in or the jump-out (the turning points of delta), so the path passes both; the jumps, the
-// pull-off under load control and under displacement control are read off the traced path.
+// (docs/theory.md 6.7.4): first the control is the central gap g(0), stepped from the cut-off down to
+// g* = 0.2 z0; then the radius rho where g = g*, stepped up to the largest load. Neither turns at the
+// jump-in or the jump-out (the turning points of delta), so the path passes both; the pull-off under load
+// control and the jumps under displacement control are read off the traced path and refined (6.7.7).
 #pragma once
 
 #include <optional>
@@ -16,8 +16,8 @@ namespace tribex::adhesion {
 struct CurveSettings {
   double points_per_length = 8;  // ring spacing at the edge = (shortest gap length)/this (Eq. 6.7.5)
   double growth = 1.1;           // ratio of neighbouring ring widths away from the edge
-  double radius_step = 0.03;     // relative step in a on the contact branch
-  int gap_steps = 60;            // steps of the central gap from g_c to 0 before contact
+  double radius_step = 0.03;     // relative step in rho between targets (steps adapt below it)
+  int gap_steps = 60;            // targets of the central gap from g_c to g*
   double max_load = 0;           // N; the contact branch ends past it
   double max_load_step = 0.03;   // largest change of P/(pi W_c R) between traced points
 };
@@ -29,7 +29,7 @@ struct CurvePoint {
   double load = 0;          // P, N (compressive positive)
   double contact_radius = 0;// a, m: outermost radius with p >= 0 (g <= g_eq)
   double bonded_radius = 0; // rho, m: the radius where g = g* (0 while g(0) > g*)
-  double zone_radius = 0;   // outermost radius where g = z0, m: the cohesive zone is a..zone_radius (Eq. 6.7.6)
+  double zone_radius = 0;   // outermost radius where g = z0, m: the cohesive zone is a..zone_radius (docs/theory.md 6.7.6)
   double central_gap = 0;   // g(0), m
   double min_gap = 0;       // smallest gap on the grid, m (negative: penalty penetration)
   int rings = 0;
@@ -49,7 +49,7 @@ struct Curve {
   int max_rings = 0;
 };
 
-/// Length scales of Eq. 6.7.5: the gap rises by z0 over about min(E* z0^2/W, sqrt(2 R z0), R z0/a).
+/// Eq. 6.7.5: the gap rises by z0 over about min(E* z0^2/W, sqrt(2 R z0), R z0/a).
 double gap_length(const Problem& pb, double a);
 
 /// g*: the gap that defines the control radius rho on the contact branch (Eq. 6.7.4): 0.2 z0 (about

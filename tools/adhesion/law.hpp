@@ -33,14 +33,6 @@ struct GapLaw {
   double shift() const {
     return law.work == 0 ? 0.0 : contact::lj_traction(law.cutoff, law.work, law.z0);
   }
-  /// The gap where p changes sign, sigma_s(g_eq) = 0 (about sigma_a(h_c) z0^2/(16 W), 2e-5 z0 at
-  /// h_c = 20 z0; 0 when W = 0): the edge of the compressive zone, the contact radius (Eq. 6.7.6).
-  double zero_pressure_gap() const {
-    if (law.work == 0) return 0.0;
-    double lo = 0, hi = 0.2 * law.z0;  // p(0) = sigma_a(h_c) >= 0 > p(0.2 z0)
-    for (int i = 0; i < 100; ++i) (pressure(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-    return 0.5 * (lo + hi);
-  }
   /// The work the applied law captures, -U(z0) (docs/theory.md 6.3), J/m^2.
   double captured_work() const { return law.work == 0 ? 0.0 : contact::captured_work(law); }
 };

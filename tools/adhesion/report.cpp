@@ -38,7 +38,7 @@ std::string curve_csv(const Curve& c, const Problem& pb, const std::string& abou
   const Scales s = scales_of(pb);
   std::ostringstream o;
   o << "# tribex adhesion-curve: " << about << "\n"
-    << "# branch 0 = before contact (control: central gap), 1 = in contact (control: contact radius a);"
+    << "# branch 0: control the central gap (down to g* = 0.2 z0); 1: control rho, the radius where g = g*;"
        " approach 0 = undeformed surfaces touching (h = z0); load compressive positive\n"
     << "# normalised with the captured work W_c (docs/theory.md 6.7.6): load_bar = P/(pi W_c R),"
        " a_bar = a (K/(pi W_c R^2))^(1/3), approach_bar = delta (K^2/(pi^2 W_c^2 R))^(1/3), K = 4E*/3\n"

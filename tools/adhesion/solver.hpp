@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // One equilibrium of the Lennard-Jones sphere-flat reference (docs/theory.md 6.7): the gap
 //   g(r) = -delta + r^2/(2R) + sum_j C(r, ring j) p(g_j)                  (Eq. 6.7.2)
-// collocated at the ring midpoints, closed by one control equation g(r_c) = g_target: the contact
-// edge (r_c = a, g_target = 0) on the contact branch, the central gap (r_c = 0) before contact.
+// collocated at the ring midpoints, closed by one control equation g(r_c) = g_target (Eq. 6.7.4): the
+// central gap (r_c = 0) first, then the radius rho where g = g* (r_c = rho, g_target = g*).
 // Unknowns: the gaps at the midpoints and delta; Newton with a backtracking line search.
 #pragma once
 
@@ -24,7 +24,7 @@ struct Grid {
   std::vector<double> edges, points;
 };
 
-/// Edges graded geometrically (ratio `growth`) away from `focus` (the contact edge; 0 before contact):
+/// Edges graded geometrically (ratio `growth`) away from `focus` (rho; 0 while the central gap is the control):
 /// spacing `fine` at the focus, at most `coarse_in` inside it and `coarse_out` outside, up to r_max.
 Grid graded_grid(double focus, double fine, double coarse_in, double coarse_out, double growth, double r_max);
 
@@ -32,7 +32,7 @@ struct Equilibrium {
   Grid grid;
   std::vector<double> gap;    // at grid.points, m
   double approach = 0;        // delta, m (0 = the undeformed surfaces at touching, h = z0)
-  double control_radius = 0;  // r_c, m (the contact radius a on the contact branch, 0 before contact)
+  double control_radius = 0;  // r_c, m (rho on branch 1, 0 while the central gap is the control)
   double load = 0;            // P = 2 pi int p r dr, N, compressive positive
   double central_gap = 0;     // g(0), m
   int iterations = 0;
