@@ -47,7 +47,7 @@ TEST(AdhesionCli, HelpAndARun) {
   ASSERT_EQ(code, 0) << err;
   int rows = 0;
   EXPECT_EQ(header_of(dir / "adhesion.csv", rows),
-            "branch[-],approach[m],load[N],contact_radius[m],bonded_radius[m],zone_radius[m],central_gap[m],min_gap[m],rings[-],"
+            "branch[-],approach[m],load[N],contact_radius[m],compressive_radius[m],bonded_radius[m],zone_radius[m],central_gap[m],min_gap[m],rings[-],"
             "approach_over_z0[-],load_bar[-],a_bar[-],approach_bar[-]");
   EXPECT_GT(rows, 100);
   EXPECT_EQ(header_of(dir / "limits.csv", rows),

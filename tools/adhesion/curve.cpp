@@ -85,6 +85,21 @@ double radius_where(const Problem& pb, const Equilibrium& s, double gj) {
   return 0.5 * (lo + hi);
 }
 
+// The edge of the hard contact: the penalty pressure q = -k g > 0 of the last two rings that carry it,
+// q^2 extrapolated linearly in r to zero (exact for an elliptic edge, as the FE's pressure-fit radius);
+// clamped to the next ring. 0 when no ring penetrates.
+double compressive_radius_of(const Equilibrium& s) {
+  std::size_t k = s.gap.size();
+  while (k > 0 && !(s.gap[k - 1] < 0)) --k;
+  if (k == 0) return 0.0;
+  const auto& r = s.grid.points;
+  const double q1 = s.gap[k - 1] * s.gap[k - 1];
+  if (k == 1 || k == s.gap.size()) return s.grid.edges[k];
+  const double q0 = s.gap[k - 2] * s.gap[k - 2];
+  if (!(q0 > q1)) return s.grid.edges[k];
+  return std::min(r[k - 1] + q1 * (r[k - 1] - r[k - 2]) / (q0 - q1), r[k]);
+}
+
 double contact_radius_of(const Problem& pb, const Equilibrium& s) {
   if (pb.law.law.work == 0 && pb.contact_gap == 0) return s.control_radius;  // g* = 0 = g_j: the control is the edge
   return radius_where(pb, s, pb.contact_gap);
@@ -98,6 +113,7 @@ CurvePoint point_of(const Problem& pb, const Equilibrium& s, bool contact) {
   p.load = s.load;
   p.contact_radius = contact_radius_of(pb, s);
   p.bonded_radius = contact ? s.control_radius : 0.0;
+  p.compressive_radius = pb.law.law.work == 0 ? p.contact_radius : compressive_radius_of(s);
   p.zone_radius = pb.law.law.work > 0 ? radius_where(pb, s, pb.law.law.z0) : p.contact_radius;
   p.central_gap = s.central_gap;
   p.min_gap = *std::min_element(s.gap.begin(), s.gap.end());
@@ -188,7 +204,7 @@ Marker refine(Tracer& tr, const std::vector<Equilibrium>& states, const Curve& c
     if (f1 <= f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = eval(x1); }
     else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = eval(x2); }
   }
-  return {true, best.approach, best.load, best.contact_radius, best.bonded_radius, best.zone_radius};
+  return {true, best.approach, best.load, best.contact_radius, best.compressive_radius, best.bonded_radius, best.zone_radius};
 }
 
 }  // namespace
@@ -241,7 +257,7 @@ Curve trace_curve(const Problem& pb, const CurveSettings& set) {
   const std::size_t last = c.points.size() - 1;
   auto at = [&](std::size_t k) {
     const auto& q = c.points[k];
-    return Marker{true, q.approach, q.load, q.contact_radius, q.bonded_radius, q.zone_radius};
+    return Marker{true, q.approach, q.load, q.contact_radius, q.compressive_radius, q.bonded_radius, q.zone_radius};
   };
   c.pull_off = m.pull_off > 0 && m.pull_off < last ? refine(tr, states, c, m.pull_off, true, 1.0) : at(m.pull_off);
   if (m.jump_in) c.jump_in = refine(tr, states, c, *m.jump_in, false, -1.0);

@@ -28,6 +28,7 @@ struct CurvePoint {
   double approach = 0;      // delta, m
   double load = 0;          // P, N (compressive positive)
   double contact_radius = 0;// a, m: outermost radius with p >= 0 (g <= g_eq)
+  double compressive_radius = 0;  // outermost radius where g <= 0 (the hard contact carries pressure), m
   double bonded_radius = 0; // rho, m: the radius where g = g* (0 while g(0) > g*)
   double zone_radius = 0;   // outermost radius where g = z0, m: the cohesive zone is a..zone_radius (docs/theory.md 6.7.6)
   double central_gap = 0;   // g(0), m
@@ -38,7 +39,7 @@ struct CurvePoint {
 /// A point found between traced points by a parabola through three neighbours (in s).
 struct Marker {
   bool found = false;
-  double approach = 0, load = 0, contact_radius = 0, bonded_radius = 0, zone_radius = 0;
+  double approach = 0, load = 0, contact_radius = 0, compressive_radius = 0, bonded_radius = 0, zone_radius = 0;
 };
 
 struct Curve {

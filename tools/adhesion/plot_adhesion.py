@@ -48,9 +48,7 @@ def main():
     marker(ax1, s["jump_in_displacement_control"], "c^", "jump-in (displacement control)", 1)
     top = max(d["load_bar"])
     ax1.set_ylim(-2.3, top * 1.05)
-    lo = min(min(d["approach_bar"]), -2.0)
-    ax1.set_xlim(max(lo, -3.0 * abs(s["jump_out_displacement_control"]["approach_bar"]) if s["jump_out_displacement_control"] else lo),
-                 max(d["approach_bar"]) * 1.05)
+    ax1.set_xlim(max(min(d["approach_bar"]), -3.0), max(d["approach_bar"]) * 1.05)
     ax1.axhline(0, color="0.7", lw=0.5)
     ax1.set_xlabel("approach delta (K^2/(pi^2 W_c^2 R))^(1/3)  (-)")
     ax1.set_ylabel("load P / (pi W_c R)  (-)")
@@ -60,6 +58,7 @@ def main():
     ax2.plot(d["load_bar"], d["a_bar"], "k-", lw=1.8, label="Lennard-Jones: g <= g_j radius (FE in contact)")
     sc = (s["radius_m"] ** 2 * 3.14159265358979 * s["captured_work_J_m2"] / (4 * s["e_star_Pa"] / 3)) ** (1 / 3)
     ax2.plot(d["load_bar"], [r / sc for r in d["bonded_radius"]], "k:", lw=1, label="Lennard-Jones: g <= 0.2 z0 radius")
+    ax2.plot(d["load_bar"], [r / sc for r in d["compressive_radius"]], "k-.", lw=1, label="Lennard-Jones: g <= 0 radius (p > 0)")
     ax2.plot(lim["md_load_bar"], lim["a_bar"], "b--", lw=1, label="Maugis-Dugdale")
     ax2.plot(lim["dmt_load_bar"], lim["a_bar"], "g:", lw=1, label="DMT")
     ax2.plot(lim["jkr_load_bar"], lim["a_bar"], "r-.", lw=1, label="JKR")

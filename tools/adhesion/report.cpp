@@ -42,12 +42,12 @@ std::string curve_csv(const Curve& c, const Problem& pb, const std::string& abou
        " approach 0 = undeformed surfaces touching (h = z0); load compressive positive\n"
     << "# normalised with the captured work W_c (docs/theory.md 6.7.6): load_bar = P/(pi W_c R),"
        " a_bar = a (K/(pi W_c R^2))^(1/3), approach_bar = delta (K^2/(pi^2 W_c^2 R))^(1/3), K = 4E*/3\n"
-    << "branch[-],approach[m],load[N],contact_radius[m],bonded_radius[m],zone_radius[m],central_gap[m],min_gap[m],rings[-],"
+    << "branch[-],approach[m],load[N],contact_radius[m],compressive_radius[m],bonded_radius[m],zone_radius[m],central_gap[m],min_gap[m],rings[-],"
        "approach_over_z0[-],load_bar[-],a_bar[-],approach_bar[-]\n";
   char b[400];
   for (const auto& p : c.points) {
-    std::snprintf(b, sizeof b, "%d,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.6g,%d,%.10g,", p.branch, p.approach, p.load,
-                  p.contact_radius, p.bonded_radius, p.zone_radius, p.central_gap, p.min_gap, p.rings, p.approach / pb.law.law.z0);
+    std::snprintf(b, sizeof b, "%d,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.6g,%d,%.10g,", p.branch, p.approach, p.load,
+                  p.contact_radius, p.compressive_radius, p.bonded_radius, p.zone_radius, p.central_gap, p.min_gap, p.rings, p.approach / pb.law.law.z0);
     o << b << bar(p.load, s.load) << ',' << bar(p.contact_radius, s.radius) << ',' << bar(p.approach, s.approach) << '\n';
   }
   return o.str();
@@ -79,7 +79,8 @@ std::string marker_json(const Marker& m, const Scales& s) {
   if (!m.found) return "null";
   std::ostringstream o;
   o << "{\"approach_m\": " << json_number(m.approach) << ", \"load_N\": " << json_number(m.load)
-    << ", \"contact_radius_m\": " << json_number(m.contact_radius) << ", \"bonded_radius_m\": " << json_number(m.bonded_radius)
+    << ", \"contact_radius_m\": " << json_number(m.contact_radius)
+    << ", \"compressive_radius_m\": " << json_number(m.compressive_radius) << ", \"bonded_radius_m\": " << json_number(m.bonded_radius)
     << ", \"zone_radius_m\": " << json_number(m.zone_radius)
     << ", \"load_bar\": "
     << (s.load > 0 ? json_number(m.load / s.load) : "null") << ", \"approach_bar\": "
