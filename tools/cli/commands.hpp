@@ -24,5 +24,7 @@ int fit_command(const std::vector<std::string>& args);
 int mesh_command(const std::vector<std::string>& args);
 /// tools/layered/layered_command.cpp: `tribex layered`: sphere on bonded elastic layers (Hankel-space kernel).
 int layered_command(const std::vector<std::string>& args);
+/// tools/adhesion/adhesion_command.cpp: `tribex adhesion-curve`: Lennard-Jones sphere-flat reference (both branches).
+int adhesion_curve_command(const std::vector<std::string>& args);
 
 }  // namespace tribex::cli

@@ -37,6 +37,7 @@ const std::vector<Command> commands = {
     {"friction-test", "friction-test data reduction: spring calibration, mu_s, mu_d", tribex::cli::friction_test_command},
     {"fit", "fit tau* and W to AFM friction-vs-load data (report Eq. 3.1, DMT/JKR/COS/MD)", tribex::cli::fit_command},
     {"layered", "sphere on bonded elastic layers: a, delta, f against P~ and A, b (continuum reference)", tribex::cli::layered_command},
+    {"adhesion-curve", "Lennard-Jones sphere on a flat: load-approach curve, pull-off, jump-in/out (reference)", tribex::cli::adhesion_curve_command},
     {"mesh", "mesh generators (.msh): tribex mesh afm FILE --window ... -o MESH.msh", tribex::cli::mesh_command},
 };
 

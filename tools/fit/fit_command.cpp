@@ -17,6 +17,7 @@
 #include "tools/common/fit_report.hpp"
 #include "tools/common/panel_plot.hpp"
 #include "tools/fit/friction_fit.hpp"
+#include "tools/fit/regime.hpp"
 
 namespace tribex::fit {
 namespace {
@@ -40,6 +41,8 @@ const char* top_usage =
   "          --coating-table verification/coated/results.csv (ebar_c_over_ebar,A,b[,A_sigma,b_sigma],\n"     \
   "          interpolated in ln(Ebar_c/Ebar)) or --A A --b b; f = min(1, max(f_deep, A P~^b))\n"             \
   "  cos:    --alpha A (fixed; fitted when absent)     md: --lambda L | --z0 Z (lambda from W)\n"            \
+  "  --z0 Z (default 0.3nm) also sets the Tabor parameter mu_T of the fit: dmt and coated assume DMT and\n"    \
+  "          warn above mu_T 0.3, jkr assumes JKR and warns below 3; cos and md cover the transition\n"      \
   "  --pressure-dependent            tau = tau0 + alpha_p p: F = tau0 A + alpha_p int_A p dA\n"
 
 const char* friction_usage =
@@ -211,6 +214,9 @@ int friction_command(const std::vector<std::string>& argv) {
     }
   }
   r.add("pull_off_load", fit.pull_off_load, -1, "N", "of the fitted model");
+  const RegimeCheck regime = check_regime(model, fit.best);
+  r.text.emplace_back("regime", regime.regime ? tools::regime_text(*regime.regime) : std::string("transition (any mu_T)"));
+  r.add("tabor", regime.tabor, -1, "", "mu_T = (R W^2/(E*^2 z0^3))^(1/3); " + regime.basis);
   r.add("rms_residual", fit.lm.rms_residual, -1, residual == Residual::absolute ? "N" : "", "");
   r.add("points", static_cast<double>(load.size()), -1, "");
   std::vector<std::vector<double>> corr;
@@ -242,6 +248,7 @@ int friction_command(const std::vector<std::string>& argv) {
                   names[0].c_str(), names[0].c_str());
     }
   }
+  if (!regime.warning.empty()) std::fprintf(stderr, "%s\n", regime.warning.c_str());
   if (!no_plot) plot_fit(plot.value_or(tools::default_plot_path(file)), model, fit, load, friction);
   return tools::exit_ok;
 }

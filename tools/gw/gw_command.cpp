@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tools/common/args.hpp"
+#include "tools/common/tabor.hpp"
 #include "tools/common/errors.hpp"
 #include "tools/common/text_file.hpp"
 #include "contact/rough/gw_integrals.hpp"
@@ -93,7 +94,9 @@ int curve(const std::vector<std::string>& argv) {
       "Columns t, count, area, load of the continuous GW; with --population N also those of a discrete\n"
       "population of N Gaussian summit heights (random, seeded, or --stratified at the normal quantiles);\n"
       "with --beta the DMT applied load, beta = 3 pi W sqrt(R) / (2 E* sigma_s^{3/2}), and --z0 (units of\n"
-      "sigma_s) adds the 3-9 attraction of the asperities out of contact.\n"
+      "sigma_s) adds the 3-9 attraction of the asperities out of contact. The adhesive load is DMT per asperity:\n"
+      "it assumes each asperity's Tabor parameter mu_T = (2 beta/(3 pi))^(2/3)/z0 <= 0.3 and, with --z0, warns\n"
+      "(one line on stderr) when it is larger (docs/theory.md 10.4).\n"
       "With --noncontact-scale S --noncontact-z0 Z [--noncontact-cutoff C] [--surface-sigma G] the column\n"
       "noncontact_load is the (DMT) load minus the attraction of the non-contacting area (docs/theory.md 10.8;\n"
       "the rough-surface law's option): S = (8 W / (3 z0)) / (eta (4/3) E* sqrt(R) sigma_s^{3/2}) the\n"
@@ -108,6 +111,14 @@ int curve(const std::vector<std::string>& argv) {
   const std::string csv = a.text("--csv", "");
   a.finish();
   if (beta < 0 || z0 < 0) throw BadInput("--beta and --z0 must be >= 0");
+  if (beta > 0 && z0 > 0) {
+    char where[120];
+    std::snprintf(where, sizeof where, "beta = %g, z0 = %g sigma_s", beta, z0);
+    const std::string w = tools::regime_warning(tools::AdhesionRegime::dmt, gw::asperity_tabor(beta, z0),
+                                                "tribex gw curve (DMT asperities)", where,
+                                                "the dmt_load columns overstate each asperity's pull-off");
+    if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
+  }
   std::ostringstream o;
   o << "t,count,area,load";
   if (!pop.empty()) o << ",discrete_count,discrete_area,discrete_load";

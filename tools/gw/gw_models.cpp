@@ -103,4 +103,6 @@ double tangential_gw_discrete(const std::vector<double>& heights, double t, doub
   return sum / static_cast<double>(heights.size());
 }
 
+double asperity_tabor(double beta, double z0) { return std::pow(2.0 * beta / (3.0 * M_PI), 2.0 / 3.0) / z0; }
+
 }  // namespace tribex::gw

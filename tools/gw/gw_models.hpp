@@ -41,6 +41,11 @@ std::vector<double> stratified_gaussian_population(std::size_t n);
 GwPoint dmt_gw(double t, double beta, double z0 = 0.0);
 GwPoint dmt_gw_discrete(const std::vector<double>& heights, double t, double beta, double z0 = 0.0);
 
+/// The Tabor parameter of one asperity in these units (docs/theory.md 10.4): with W/E* = 2 beta
+/// sigma_s^{3/2}/(3 pi sqrt(R)), mu_T = (R W^2/(E*^2 z0^3))^(1/3) = (2 beta/(3 pi))^(2/3)/z0 (z0 in sigma_s;
+/// R cancels). The DMT per-asperity law assumes mu_T <= 0.3 (tools/common/tabor.hpp).
+double asperity_tabor(double beta, double z0);
+
 /// GW-like tangential model (report Fig. 4.11): each contacting asperity sticks with the Mindlin
 /// stiffness k = 8 G* a (a = sqrt(R w)) until its shear capacity tau* pi R w, then slides.
 /// In units of slip delta_ref = pi tau* sqrt(R sigma_s) / (8 G*) and force tau* pi R sigma_s N,

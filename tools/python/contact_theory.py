@@ -15,6 +15,25 @@ def dmt_radius(P, R, W, estar):
     return (3 * R * max(P + 2 * math.pi * W * R, 0.0) / (4 * estar)) ** (1 / 3)
 
 
+# Where DMT and JKR stop holding for the Lennard-Jones law (tools/common/tabor.hpp holds the same numbers
+# for the C++ tools; tools/adhesion/README.md, regression table: 1.86 pi W R at mu_T = 0.3, 1.54 at 3).
+DMT_MAX_TABOR = 0.3
+JKR_MIN_TABOR = 3.0
+
+
+def tabor_parameter(R, W, estar, z0):
+    """mu_T = (R W^2 / (E*^2 z0^3))^(1/3) (docs/theory.md 8.5), SI."""
+    return (R * W * W / (estar * estar * z0 ** 3)) ** (1 / 3)
+
+
+def dmt_regime_warning(tabor, who, where, advice):
+    """"" when tabor <= DMT_MAX_TABOR, else one line: WHO assumes DMT but mu_T = ... (WHERE); ADVICE."""
+    if not tabor > DMT_MAX_TABOR:
+        return ""
+    return (f"warning: {who} assumes DMT (mu_T <= {DMT_MAX_TABOR:g}) but mu_T = {tabor:.3g} ({where}): the pull-off "
+            f"there lies between 1.5 and 2 pi W R and below the DMT 2 pi W R (tools/adhesion/README.md); {advice}")
+
+
 # The contact-radius estimators, by the name --radius takes, and their history columns
 # (solver/output/history_columns.cpp; errors on the Hertz decks: verification/hertz/README.md, "The
 # contact-radius estimators"): the elliptic fit of the nodal pressures, the gap sign change on

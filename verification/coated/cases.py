@@ -9,6 +9,7 @@ h_c = (h_c/R) R = 2.0 nm in every case and E = 161 GPa except case 7, where both
 
 NU, NU_C = 0.23, 0.40
 H_C = 2.0  # coating thickness, nm
+Z0 = 0.3  # equilibrium separation of the adhesion runs, nm (make_decks.py; h_c = 6 nm = 20 z0)
 
 # case: (R nm, E GPa, E_c GPa, Table B.1 Ebar_c/Ebar, max P/(Ebar_c h_c^2))
 TABLE_B1 = {

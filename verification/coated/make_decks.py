@@ -18,7 +18,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1  # noqa: E402
+from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1, Z0  # noqa: E402
 from deck_templates import (HEX8_FULLY_INTEGRATED, block_parameters, cycloid_travel, elastic_material,  # noqa: E402
                             contact_definition, fixed_displacement, history_output, piecewise_linear_function, prescribed,
                             results_output, values_lines, write_deck)
@@ -193,7 +193,7 @@ def write(name, run):
     adhesion = ""
     if W > 0:
         adhesion = (f"          model = adhesion\n          work of adhesion = {W:g} J/m^2\n"
-                    f"          equilibrium separation = 0.3 nm\n"
+                    f"          equilibrium separation = {Z0:g} nm\n"
                     f"          adhesion cutoff = 6 nm      # 20 z0: the law keeps 99 % of W (docs/theory.md 6.3)\n")
     what = {"limit_thick": "Limit h_c -> infinity: substrate of the coating material (f -> 1).",
             "limit_thin": "Limit h_c -> 0: a 0.02 nm coating (f -> (2/(1 + Ebar/Ebar_c))^(2/3)), "

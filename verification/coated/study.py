@@ -32,7 +32,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import deepest_index, pyplot, read_history  # noqa: E402
-from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1, ebar, f_deep, hertz_area  # noqa: E402
+from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1, Z0, ebar, f_deep, hertz_area  # noqa: E402
+from contact_theory import dmt_regime_warning, tabor_parameter  # noqa: E402
 from make_decks import RUNS  # noqa: E402
 from cli_errors import guarded  # noqa: E402
 
@@ -181,6 +182,18 @@ def pb_difference(m):
 COLLAPSE_TOLERANCE = 0.05  # smoothed area difference at the same effective load
 
 
+def collapse_regime(m):
+    """The collapse onto P + 2 pi R W assumes DMT (docs/theory.md 8.2). The run's Tabor parameter lies
+    between the tip on the Si substrate (E* = Ebar/2) and the tip on the coating alone
+    (1/E* = 1/Ebar + 1/Ebar_c, a thick coating); returns both and the one-line warning ("" inside DMT)."""
+    eb, ebc = ebar(m["E"], NU), ebar(m["Ec"], NU_C)
+    lo = tabor_parameter(m["R"], m["W"], eb / 2, Z0 * 1e-9)
+    hi = tabor_parameter(m["R"], m["W"], 1 / (1 / eb + 1 / ebc), Z0 * 1e-9)
+    where = f"R = {m['R'] * 1e9:g} nm, W = {m['W']:g} J/m^2, z0 = {Z0:g} nm, E* of the coating alone; {lo:.3g} on the Si substrate"
+    return lo, hi, dmt_regime_warning(hi, f"the adhesion collapse of {m['name']}", where,
+                                      "the collapse is then an approximation: compare with tribex adhesion-curve")
+
+
 def collapse_check(ref, m):
     """Report Fig. 3.5: the area of an adhesive run against P + 2 pi R W collapses onto the W = 0
     run's. Two measures over the common range of effective load (rows with a >= MIN_RINGS h):
@@ -197,7 +210,9 @@ def collapse_check(ref, m):
     mx = max(abs(v) for _, v in e)
     rms = math.sqrt(sum(v * v for _, v in e) / len(e))
     ok = smooth <= COLLAPSE_TOLERANCE
-    return ok, (f"Adhesion, W = {m['W']:g} J/m^2 ({mesh_text(m)}; 2 pi R W = {2 * math.pi * m['R'] * m['W'] * 1e9:.2f} nN): "
+    lo_mu, hi_mu, _ = collapse_regime(m)
+    return ok, (f"Adhesion, W = {m['W']:g} J/m^2 ({mesh_text(m)}; 2 pi R W = {2 * math.pi * m['R'] * m['W'] * 1e9:.2f} nN; "
+                f"DMT assumed, mu_T = {lo_mu:.3g}-{hi_mu:.3g} between the Si substrate and the coating alone): "
                 f"area against P + 2 pi R W vs the W = 0 run over P~ = {lo:.3f}-{hi:.2f}: power-law fits differ by at most "
                 f"{smooth:.2%} (acceptance {COLLAPSE_TOLERANCE:.0%}; W run A = {fw['A']:.4f}, b = {fw['b']:.4f} against "
                 f"{f0['A']:.4f}, {f0['b']:.4f}); point by point max |difference| {mx:.2%}, rms {rms:.2%} over {len(e)} loads: "
@@ -335,6 +350,9 @@ def check(a):
     if m["W"] > 0:
         ok, text = collapse_check(measure("case1", os.path.join(a.runs, "coated_case1")), m)
         print(text)
+        warning = collapse_regime(m)[2]
+        if warning:
+            print(warning)
         return 0 if ok else 1
     fit = power_fit(fitted_rows(m))
     if fit is None:
@@ -454,6 +472,8 @@ def write_results(runs_dir):
     if "case1" in ms and adh:
         for m in adh:
             lines.append(collapse_check(ms["case1"], m)[1])
+            if collapse_regime(m)[2]:
+                lines.append(collapse_regime(m)[2])
         plot_collapse(ms["case1"], adh, os.path.join(HERE, "plots", "adhesion_collapse.png"))
         lines.append("")
     # Limits.
