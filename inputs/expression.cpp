@@ -100,12 +100,17 @@ class Parser {
     if (!(e.dimension == dim::none)) fail("an exponent must be dimensionless, got " + describe_dimension(e.dimension));
     Quantity r{std::pow(base.value, e.value), dim::none};
     if (!(base.dimension == dim::none)) {
-      const double n = std::round(e.value);
-      if (n != e.value || std::fabs(n) > 12)
-        fail("a quantity with a unit (" + describe_dimension(base.dimension) +
-             ") can only be raised to an integer power up to 12; make the base dimensionless first");
-      const int k = static_cast<int>(n);
-      r.dimension = {base.dimension.mass * k, base.dimension.length * k, base.dimension.time * k};
+      // A unit's exponents stay integers: (m^2/s^2)^(1/2) = m/s is fine, m^(1/2) is not.
+      int out[3] = {};
+      const int in[3] = {base.dimension.mass, base.dimension.length, base.dimension.time};
+      for (int k = 0; k < 3; ++k) {
+        const double x = in[k] * e.value, n = std::round(x);
+        if (std::fabs(x - n) > 1e-9 || std::fabs(n) > 12)
+          fail("(" + describe_dimension(base.dimension) + ")^" + std::to_string(e.value) +
+               " has no unit with integer powers (up to 12); make the base dimensionless first (divide by its unit)");
+        out[k] = static_cast<int>(n);
+      }
+      r.dimension = {out[0], out[1], out[2]};
     }
     return r;
   }
@@ -127,7 +132,7 @@ class Parser {
       const std::string_view name = t_.substr(start, i_ - start);
       const Quantity* q = lookup_(name);
       if (!q) fail("'" + std::string(name) + "' is not defined; define it above on a line of its own, {" +
-                   std::string(name) + " = VALUE} (a unit belongs right after its number: 2 nm, not nm 2)");
+                   std::string(name) + " = VALUE}");
       return *q;
     }
     fail("unexpected '" + std::string(1, c) + "'" + where() + "; expected a number, a name or '('");

@@ -213,7 +213,7 @@ std::vector<LogicalLine> expand_parameters(const std::vector<LogicalLine>& lines
 }
 
 std::string parameter_definitions_text(const std::vector<DeckParameter>& parameters) {
-  std::string s;
+  std::string s = parameters.empty() ? "" : "# parameters in SI, --set values applied\n";
   for (const DeckParameter& p : parameters)
     s += "{" + p.name + " = " + shortest(p.value) + (p.unit.empty() ? "" : " " + p.unit) + "}\n";
   return s;

@@ -17,7 +17,8 @@ Deck parse_lines(const std::vector<LogicalLine>& raw_lines, const std::string& f
   const Scope root = build_deck_tree(lines, file_name, sink);
   Deck deck = build_deck(root, file_name, sink);
   sink.throw_if_any();
-  deck.resolved_text = parameter_definitions_text(parameters) + resolved_text(root);
+  deck.resolved_text = resolved_text(root);  // its first line is a comment; the definitions go below it
+  deck.resolved_text.insert(deck.resolved_text.find('\n') + 1, parameter_definitions_text(parameters));
   deck.parameters = std::move(parameters);
   for (const auto& line : lines)  // the deck and its includes (an output folder must not overwrite them)
     if (deck.files_read.empty() || deck.files_read.back() != line.where().file) deck.files_read.push_back(line.where().file);

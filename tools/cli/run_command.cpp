@@ -137,9 +137,6 @@ int check_command(const std::vector<std::string>& argv) {
       std::printf("  material %-12s %-11s rho %.6g kg/m^3, E %.6g Pa, nu %.4g\n", m.name.c_str(),
                   p.model.c_str(), m.density, p.youngs_modulus,
                   p.poissons_ratio);
-  for (const auto& p : deck.parameters)
-    std::printf("  parameter %-12s %.10g %s%s\n", p.name.c_str(), p.value, p.unit.c_str(),
-                p.set_on_command_line ? " (--set)" : "");
   solver::RunOptions options;
   options.check_only = true;
   solver::run_deck(deck, options);
