@@ -122,7 +122,9 @@ struct GeneratedAsperitySpec {
   bool paraboloid = false;  // `tip profile = paraboloid`: z = r^2/(2R) instead of the sphere
   std::optional<std::array<double, 3>> apex;  // `apex position`: where the apex goes, m (default (0, 0, gap))
   std::optional<double> gap_above_surface;    // m: tip lowered to this vertical gap over the `afm surface`
+  std::optional<std::array<double, 2>> fine_x_range;  // `fine x range`: the substrate's fine strip X0 X1, m
   SourceLocation where;
+  std::map<std::string, SourceLocation> key_where;  // the line of each key the deck gives (limit messages)
 };
 
 /// `begin afm surface` inside a finite element model: an all-hex substrate block whose top follows
