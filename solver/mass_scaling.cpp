@@ -101,6 +101,44 @@ MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double
   return report;
 }
 
+void warn_scaled_silent_boundaries(const std::vector<inputs::SilentBoundarySpec>& boundaries, Model& model) {
+  for (const auto& sb : boundaries) {
+    const auto found = model.mesh.side_sets.find(sb.side_set);
+    double counts[2] = {0.0, 0.0};  // faces, faces on scaled elements
+    double largest = 1.0;
+    int block = -1;
+    if (found != model.mesh.side_sets.end())
+      for (const auto& side : found->second) {
+        const int b = model.element_block[static_cast<std::size_t>(side.element)];
+        const ElementBlock& blk = model.blocks[static_cast<std::size_t>(b)];
+        const double s = blk.mass_scale.empty() ? 1.0 : blk.mass_scale[static_cast<std::size_t>(side.element - blk.first_element)];
+        counts[0] += 1.0;
+        if (s > 1.0) {
+          counts[1] += 1.0;
+          if (s > largest) block = b;
+          largest = std::max(largest, s);
+        }
+      }
+    parallel::sum(counts, 2);
+    const double rank_largest = largest;
+    largest = parallel::max(largest);
+    // The block of the largest factor, from the rank that holds it (every rank has the same block list).
+    block = static_cast<int>(parallel::max(rank_largest == largest && block >= 0 ? double(block) : -1.0));
+    if (counts[1] == 0.0 || block < 0) continue;
+    const double root = std::sqrt(largest);
+    RunWarning w;
+    w.kind = WarningKind::scaled_silent_boundary;
+    w.value = w.max_value = (root - 1.0) / (root + 1.0);
+    w.message = format("%s: silent boundary on side set '%s': %.0f of its %.0f faces lie on mass-scaled elements (largest "
+                       "density factor %.3g, block '%s'); their wave impedance is sqrt(s) rho c against the dashpots' "
+                       "rho c, so a normally incident wave reflects up to %.3g of its amplitude (docs/theory.md 1.4.1); "
+                       "leave that block out of 'blocks' of 'begin mass scaling', or lower the factor",
+                       sb.where.str().c_str(), sb.side_set.c_str(), counts[1], counts[0], largest,
+                       model.blocks[static_cast<std::size_t>(block)].name.c_str(), w.value);
+    model.setup.warnings.push_back(std::move(w));
+  }
+}
+
 ContactMassRaise raise_contact_node_masses(const std::vector<int>& nodes, const std::vector<double>& unscaled_mass,
                                            double factor, const std::vector<double>& owned, std::vector<double>& mass) {
   ContactMassRaise raised;

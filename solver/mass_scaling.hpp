@@ -66,6 +66,12 @@ struct MassScalingReport {
 MassScalingReport apply_mass_scaling(const inputs::MassScalingSpec& spec, double time_step_scale_factor,
                                      double maximum_time_step, Model& model);
 
+/// Set-up warning (issue 51): a silent boundary (docs/theory.md 4) whose faces lie on mass-scaled elements.
+/// Its dashpots keep the physical impedance rho c, the scaled element's is sqrt(s) rho c, so a normally
+/// incident wave reflects (sqrt(s) - 1) / (sqrt(s) + 1) of its amplitude there. Adds one warning per such
+/// boundary to model.setup (counts over the ranks), naming the side set, the block and what to change.
+void warn_scaled_silent_boundaries(const std::vector<inputs::SilentBoundarySpec>& boundaries, Model& model);
+
 /// Contact consistency (docs/theory.md 1.4.1): every contact surface node gets at least `factor` times
 /// its unscaled lumped mass; the model set-up passes factor = (dt / dt_0)^2, dt the scaled run's step and
 /// dt_0 the unscaled one, so that each surface node's k dt^2 / m, for the unscaled penalty k and for the

@@ -297,48 +297,48 @@ Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const Conta
 
 namespace {
 
-Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part, const ContactFaces* faces) {
-  const auto& region = deck.procedure.region;
-  const inputs::FiniteElementModelSpec* fem = &model_spec(deck);
-  Model model;
-  model.mesh = std::move(mesh);
-  const mesh::Mesh& m = model.mesh;
-  const int nn = m.node_count();
-  if (part)
-    model.domain.init_parallel(*part);
-  else
-    model.domain.init_serial(nn, m.element_count());
-  parallel::Domain& domain = model.domain;
-  const SetSizes sizes = part ? SetSizes{part->node_set_size, part->side_set_size} : set_sizes_of(m);
+// The set-up's state while a Model is assembled: the deck, the mesh sets' whole sizes, and the checks
+// every step shares. Each member function is one step of `assemble`, in the order it calls them.
+struct Assembly {
+  const inputs::Deck& deck;
+  const inputs::RegionSpec& region;
+  const inputs::FiniteElementModelSpec& fem;
+  const parallel::MeshPart* part;
+  Model& model;
+  const mesh::Mesh& m;
+  SetSizes sizes;
+  std::vector<std::string> block_names;
+  std::map<int, std::string> owner;  // constrained dof -> the deck location that constrained it
+  SilentSums silent;
+
   // Node numbers in messages are the whole mesh's.
-  const auto number = [&](int local_node) { return std::to_string(domain.global_node[local_node] + 1); };
-  const auto checked_node_set = [&](const std::string& name, const inputs::SourceLocation& where) -> const std::vector<int>& {
+  std::string number(int local_node) const { return std::to_string(model.domain.global_node[local_node] + 1); }
+
+  const std::vector<int>& checked_node_set(const std::string& name, const inputs::SourceLocation& where) const {
     auto it = m.node_sets.find(name);
     if (it == m.node_sets.end()) missing(where, "node set", name, keys_of(m.node_sets));
     if (sizes.node.at(name) == 0) throw SetupError(where.str() + ": error: node set '" + name + "' is empty");
     return it->second;
-  };
-  const auto checked_side_set = [&](const std::string& name, const inputs::SourceLocation& where) -> const std::vector<mesh::Side>& {
+  }
+
+  const std::vector<mesh::Side>& checked_side_set(const std::string& name, const inputs::SourceLocation& where) const {
     auto it = m.side_sets.find(name);
     if (it == m.side_sets.end()) missing(where, "side set", name, keys_of(m.side_sets));
     if (sizes.side.at(name) == 0) throw SetupError(where.str() + ": error: side set '" + name + "' is empty");
     return it->second;
-  };
+  }
 
-  SilentSums silent;
-  // Checks that can fail on some ranks only (a node or element of this rank's part) are agreed on
-  // before the collective part below, so that every rank stops with the same message.
-  std::exception_ptr local_error;
-  try {
+  void add_functions() {
     for (const auto& f : deck.functions) {
       model.functions.emplace_back(f);
       model.function_names.push_back(f.name);
     }
+  }
 
-    // Element blocks: every mesh block needs parameters, every parameter block a mesh block.
-    std::vector<std::string> block_names;
+  // Element blocks: every mesh block needs parameters, every parameter block a mesh block.
+  void add_blocks() {
     for (const auto& b : m.blocks) block_names.push_back(b.name);
-    for (const auto& p : fem->blocks)
+    for (const auto& p : fem.blocks)
       if (!m.find_block(p.block)) {
         const std::string hint = inputs::closest_match(p.block, block_names);
         throw SetupError(p.where.str() + ": error: block '" + p.block + "' is not in the mesh" +
@@ -346,28 +346,34 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
       }
     model.element_block.assign(static_cast<std::size_t>(m.element_count()), -1);
     for (const auto& b : m.blocks) {
-      const auto* p = parameters_of(*fem, b.name);
+      const auto* p = parameters_of(fem, b.name);
       if (!p)
-        throw SetupError(fem->where.str() + ": error: mesh block '" + b.name +
-                         "' has no 'begin parameters for block " + b.name + "' in finite element model '" + fem->name + "'");
+        throw SetupError(fem.where.str() + ": error: mesh block '" + b.name +
+                         "' has no 'begin parameters for block " + b.name + "' in finite element model '" + fem.name + "'");
       const auto* material = deck.find_material(p->material);
       const auto* section = deck.find_section(p->section);
-      model.blocks.push_back(make_element_block(m, b, make_material(*material, p->model), *section, part ? domain.global_element : std::vector<int>{}));
+      model.blocks.push_back(make_element_block(m, b, make_material(*material, p->model), *section,
+                                                part ? model.domain.global_element : std::vector<int>{}));
       for (int e = 0; e < b.element_count; ++e) model.element_block[b.first_element + e] = static_cast<int>(model.blocks.size() - 1);
     }
+  }
 
-    // Bodies: a surface layer block belongs to the block it was split from (followed back to a block
-    // of the mesh as built or read, which the split never empties).
+  // Bodies: a surface layer block belongs to the block it was split from (followed back to a block
+  // of the mesh as built or read, which the split never empties).
+  void assign_bodies() {
     for (const auto& b : model.blocks) {
       std::string root = b.name;
-      for (auto sl = fem->surface_layers.rbegin(); sl != fem->surface_layers.rend(); ++sl)
+      for (auto sl = fem.surface_layers.rbegin(); sl != fem.surface_layers.rend(); ++sl)
         if (sl->name == root) root = sl->from_block;
       auto body = std::find_if(model.blocks.begin(), model.blocks.end(), [&](const auto& q) { return q.name == root; });
       model.block_body.push_back(body != model.blocks.end() ? static_cast<int>(body - model.blocks.begin())
                                                             : static_cast<int>(model.block_body.size()));
     }
+  }
 
-    // Lumped mass: rho V0 / 8 to each node of each element (docs/theory.md 1.2).
+  // Lumped mass: rho V0 / 8 to each node of each element (docs/theory.md 1.2).
+  void lump_masses() {
+    const int nn = m.node_count();
     model.mass.assign(static_cast<std::size_t>(nn), 0.0);
     for (const auto& blk : model.blocks) {
       const double rho = materials::density_of(blk.material);
@@ -378,20 +384,22 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
       }
     }
     for (int n = 0; n < nn; ++n)
-      if (!(model.mass[n] > 0.0)) throw orphan_node_error(domain.global_node[n]);
+      if (!(model.mass[n] > 0.0)) throw orphan_node_error(model.domain.global_node[n]);
+  }
 
-    // Kinematic constraints; a dof may be constrained once only.
-    std::map<int, std::string> owner;  // dof -> deck location that constrained it
-    auto constrain = [&](int dof, Constraints::Kind kind, int function, double scale, const inputs::SourceLocation& where) {
-      auto [it, inserted] = owner.emplace(dof, where.str());
-      if (!inserted)
-        throw SetupError(where.str() + ": error: node " + number(dof / 3) + " component " + "xyz"[dof % 3] +
-                         " is already constrained at " + it->second + "; constrain each component once");
-      model.constraints.dof.push_back(dof);
-      model.constraints.kind.push_back(kind);
-      model.constraints.function.push_back(function);
-      model.constraints.scale.push_back(scale);
-    };
+  // Kinematic constraints; a dof may be constrained once only.
+  void constrain(int dof, Constraints::Kind kind, int function, double scale, const inputs::SourceLocation& where) {
+    auto [it, inserted] = owner.emplace(dof, where.str());
+    if (!inserted)
+      throw SetupError(where.str() + ": error: node " + number(dof / 3) + " component " + "xyz"[dof % 3] +
+                       " is already constrained at " + it->second + "; constrain each component once");
+    model.constraints.dof.push_back(dof);
+    model.constraints.kind.push_back(kind);
+    model.constraints.function.push_back(function);
+    model.constraints.scale.push_back(scale);
+  }
+
+  void add_constraints() {
     for (const auto& f : region.fixed_displacements)
       for (int n : checked_node_set(f.node_set, f.where))
         for (auto c : f.components) constrain(3 * n + static_cast<int>(c), Constraints::Kind::fixed, -1, 0.0, f.where);
@@ -401,8 +409,10 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
       for (int n : checked_node_set(p.node_set, p.where))
         constrain(3 * n + static_cast<int>(p.component), kind, function_index(model, p.function), p.scale_factor, p.where);
     }
+  }
 
-    model.initial_velocity.assign(3 * static_cast<std::size_t>(nn), 0.0);
+  void add_initial_velocities() {
+    model.initial_velocity.assign(3 * static_cast<std::size_t>(m.node_count()), 0.0);
     for (const auto& iv : region.initial_velocities) {
       std::vector<int> nodes;
       if (!iv.node_set.empty()) {
@@ -416,7 +426,9 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
       for (int n : nodes)
         for (int i = 0; i < 3; ++i) model.initial_velocity[3 * n + i] = iv.velocity[i];
     }
+  }
 
+  void add_pressures() {
     for (const auto& p : region.pressures) {
       PressureLoad load;
       for (const auto& s : checked_side_set(p.side_set, p.where)) {
@@ -428,8 +440,10 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
       load.scale = p.scale_factor;
       model.pressures.push_back(std::move(load));
     }
+  }
 
-    // Prescribed forces: on free dofs only (a constrained dof's force would go into its reaction).
+  // Prescribed forces: on free dofs only (a constrained dof's force would go into its reaction).
+  void add_nodal_forces() {
     for (const auto& p : region.prescribed_forces) {
       NodalForceLoad load;
       const auto nodes = checked_node_set(p.node_set, p.where);
@@ -440,18 +454,20 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
                            " component " + "xyz"[dof % 3] + ", which is constrained at " + it->second +
                            "; load a free component or remove the constraint");
         // On the owner's copy only: shared nodes' partial forces are summed over the ranks.
-        if (domain.owned[n] > 0.0) load.dof.push_back(dof);
+        if (model.domain.owned[n] > 0.0) load.dof.push_back(dof);
       }
       load.function = function_index(model, p.function);
       const int whole_set = sizes.node.at(p.node_set);
       load.scale = whole_set == 0 ? 0.0 : p.scale_factor / static_cast<double>(whole_set);
       model.nodal_forces.push_back(std::move(load));
     }
+  }
 
-    // Silent boundaries: accumulate area vectors and coefficients per node over the faces.
+  // Silent boundaries: accumulate area vectors and coefficients per node over the faces (docs/theory.md 4.2).
+  void accumulate_silent_boundaries() {
     if (!region.silent_boundaries.empty()) {
-      silent.area.assign(3 * static_cast<std::size_t>(nn), 0.0);
-      silent.coefficients.assign(3 * static_cast<std::size_t>(nn), 0.0);
+      silent.area.assign(3 * static_cast<std::size_t>(m.node_count()), 0.0);
+      silent.coefficients.assign(3 * static_cast<std::size_t>(m.node_count()), 0.0);
     }
     for (const auto& sb : region.silent_boundaries) {
       for (const auto& s : checked_side_set(sb.side_set, sb.where)) {
@@ -471,44 +487,71 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
         }
       }
     }
-    model.mass_damping = region.mass_damping_coefficient;
-    // History columns of node sets: checked here so that `tribex check` finds a missing one.
-    if (region.history) {
-      for (const auto& name : region.history->reaction_force_node_sets)
-        checked_node_set(name, region.history->reaction_force_where);
-      for (const auto& name : region.history->displacement_node_sets) checked_node_set(name, region.history->displacement_where);
-    }
-
-  } catch (...) {
-    local_error = std::current_exception();
   }
-  agree_on_errors(local_error);
+
+  // History columns of node sets: checked here so that `tribex check` finds a missing one.
+  void check_history_sets() const {
+    if (!region.history) return;
+    for (const auto& name : region.history->reaction_force_node_sets) checked_node_set(name, region.history->reaction_force_where);
+    for (const auto& name : region.history->displacement_node_sets) checked_node_set(name, region.history->displacement_where);
+  }
+
+  // The rank-local steps. Checks that can fail on some ranks only (a node or element of this rank's
+  // part) are agreed on before the collective steps, so that every rank stops with the same message.
+  void local_steps() {
+    std::exception_ptr local_error;
+    try {
+      add_functions();
+      add_blocks();
+      assign_bodies();
+      lump_masses();
+      add_constraints();
+      add_initial_velocities();
+      add_pressures();
+      add_nodal_forces();
+      accumulate_silent_boundaries();
+      model.mass_damping = region.mass_damping_coefficient;
+      check_history_sets();
+    } catch (...) {
+      local_error = std::current_exception();
+    }
+    agree_on_errors(local_error);
+  }
 
   // Mass scaling before the contact, which is built on the scaled masses and step (the junction's slip
-  // prediction, the rough-surface bounds) but takes its penalty from the unscaled ones, kept here
-  // (docs/theory.md 1.4.1). Both act on this rank's partial masses, summed over the ranks after.
-  std::vector<double> unscaled_mass;
-  if (region.mass_scaling) {
-    const auto& tc = deck.procedure.time_control;
-    if (region.contact) unscaled_mass = model.mass;
-    if (model.mass_damping > 0.0) model.damping_mass = model.mass;
-    model.mass_scaling = apply_mass_scaling(*region.mass_scaling, tc.time_step_scale_factor,
-                                            tc.maximum_time_step.value_or(INFINITY), model);
+  // prediction, the rough-surface bounds) but takes its penalty from the unscaled ones, returned here
+  // (docs/theory.md 1.4.1). Both act on this rank's partial masses; the masses are summed over the
+  // ranks after.
+  std::vector<double> scale_and_sum_masses() {
+    parallel::Domain& domain = model.domain;
+    std::vector<double> unscaled_mass;
+    if (region.mass_scaling) {
+      const auto& tc = deck.procedure.time_control;
+      if (region.contact) unscaled_mass = model.mass;
+      if (model.mass_damping > 0.0) model.damping_mass = model.mass;
+      model.mass_scaling = apply_mass_scaling(*region.mass_scaling, tc.time_step_scale_factor,
+                                              tc.maximum_time_step.value_or(INFINITY), model);
+      warn_scaled_silent_boundaries(region.silent_boundaries, model);
+    }
+    domain.sum_shared(model.mass.data(), 1);
+    if (!unscaled_mass.empty()) domain.sum_shared(unscaled_mass.data(), 1);
+    if (!model.damping_mass.empty()) {
+      domain.sum_shared(model.damping_mass.data(), 1);
+      if (model.mass_scaling.active)
+        model.preflight.push_back("  mass damping from the unscaled masses (mass scaling): the damping force of the deck without it");
+      else
+        model.damping_mass.clear();
+    }
+    parallel::sum(&model.total_mass, 1);
+    return unscaled_mass;
   }
-  domain.sum_shared(model.mass.data(), 1);
-  if (!unscaled_mass.empty()) domain.sum_shared(unscaled_mass.data(), 1);
-  if (!model.damping_mass.empty()) {
-    domain.sum_shared(model.damping_mass.data(), 1);
-    if (model.mass_scaling.active)
-      model.preflight.push_back("  mass damping from the unscaled masses (mass scaling): the damping force of the deck without it");
-    else
-      model.damping_mass.clear();
-  }
-  parallel::sum(&model.total_mass, 1);
-  if (!silent.area.empty()) {
-    domain.sum_shared(silent.area.data(), 3);
-    domain.sum_shared(silent.coefficients.data(), 3);
-    for (int n = 0; n < nn; ++n) {
+
+  // The silent boundaries' per-node normals and dashpot coefficients, from the sums over the ranks.
+  void finish_silent_boundaries() {
+    if (silent.area.empty()) return;
+    model.domain.sum_shared(silent.area.data(), 3);
+    model.domain.sum_shared(silent.coefficients.data(), 3);
+    for (int n = 0; n < m.node_count(); ++n) {
       if (silent.coefficients[3 * n + 2] == 0.0) continue;
       const double* acc = &silent.area[3 * static_cast<std::size_t>(n)];
       const double len = std::sqrt(acc[0] * acc[0] + acc[1] * acc[1] + acc[2] * acc[2]);
@@ -518,7 +561,10 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
       model.silent.c_tangential.push_back(silent.coefficients[3 * n + 1]);
     }
   }
-  if (region.contact) {
+
+  // The contact on the scaled masses and step, its penalty from the unscaled ones (docs/theory.md 1.4.1).
+  void add_contact(const ContactFaces* faces, std::vector<double> unscaled_mass) {
+    if (!region.contact) return;
     const auto& tc = deck.procedure.time_control;
     const double dt = std::min(tc.time_step_scale_factor * whole_model_stable_time_step(model).dt,
                                tc.maximum_time_step.value_or(INFINITY));
@@ -530,18 +576,31 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
                                   &model.setup);
     model.contact_global_node = f.global_node;
     model.contact_reference = f.coordinates;
-    unscaled_mass = std::move(v.unscaled_mass);
-    if (model.mass_scaling.active) {
-      model.contact->set_unscaled_penalty_reference(std::move(unscaled_mass), model.mass_scaling.unscaled_time_step);
-      model.preflight.push_back(
-          format("  contact penalty from the unscaled masses and step %.6g s (mass scaling): k dt^2 / m_eff = %.3g "
-                 "(the penalty scale factor) on the scaled ones, as unscaled",
-                 model.mass_scaling.unscaled_time_step, region.contact->penalty_scale_factor));
-    }
+    if (!model.mass_scaling.active) return;
+    model.contact->set_unscaled_penalty_reference(std::move(v.unscaled_mass), model.mass_scaling.unscaled_time_step);
+    model.preflight.push_back(
+        format("  contact penalty from the unscaled masses and step %.6g s (mass scaling): k dt^2 / m_eff = %.3g "
+               "(the penalty scale factor) on the scaled ones, as unscaled",
+               model.mass_scaling.unscaled_time_step, region.contact->penalty_scale_factor));
   }
+};
+
+Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPart* part, const ContactFaces* faces) {
+  Model model;
+  model.mesh = std::move(mesh);
+  if (part)
+    model.domain.init_parallel(*part);
+  else
+    model.domain.init_serial(model.mesh.node_count(), model.mesh.element_count());
+  Assembly a{deck, deck.procedure.region, model_spec(deck), part, model, model.mesh,
+             part ? SetSizes{part->node_set_size, part->side_set_size} : set_sizes_of(model.mesh), {}, {}, {}};
+  a.local_steps();
+  std::vector<double> unscaled_mass = a.scale_and_sum_masses();
+  a.finish_silent_boundaries();
+  a.add_contact(faces, std::move(unscaled_mass));
   // The counters report the loop's messages (summary.json rank_counts, per step): set-up's sums are not among them.
-  domain.traffic = {};
-  domain.communication_seconds = 0.0;
+  model.domain.traffic = {};
+  model.domain.communication_seconds = 0.0;
   return model;
 }
 

@@ -58,7 +58,6 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
   std::fill(weighted_gap_.begin(), weighted_gap_.end(), 0.0);
   std::fill(overlap_area_.begin(), overlap_area_.end(), 0.0);
   segments_.clear();
-  const double factor = settings.factor;
   // Sweep 1: segments, weighted gaps, and the adhesion traction at the integration points.
   for (int f = 0; f < slave.face_count(); ++f) {
     const int* sn = &slave.face_nodes[4 * f];
@@ -81,96 +80,117 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
       double Y[12];
       for (int a = 0; a < 4; ++a)
         for (int i = 0; i < 3; ++i) Y[3 * a + i] = x[3 * mn[a] + i];
-      SegmentQuadrature& q = quadrature_;
-      if (!integrate_segment(plane, Y, q, settings.adhesion)) continue;
-      double g_min = INFINITY, g_max = -INFINITY;
-      for (int p = 0; p < q.count; ++p) {
-        g_min = std::min(g_min, q.gap[p]);
-        g_max = std::max(g_max, q.gap[p]);
-      }
-      // Beyond the capture distance, or deeper than the margin (the far side of a thin body).
-      if (g_min > settings.margin || g_max < -settings.margin) continue;
       Segment s{};
+      SegmentSums sums{};
+      if (!integrate_pair(plane, Y, settings, face_totals, s, sums)) continue;
       s.slave_face = f;
       s.master_face = mface;
-      for (int i = 0; i < 3; ++i) {
-        s.normal[i] = plane.normal[i];
-        s.e1[i] = plane.e1[i];
-        s.e2[i] = plane.e2[i];
-      }
-      double adhesion_slave[12] = {}, adhesion_master[12] = {};
-      double gap_sum[4] = {0, 0, 0, 0}, area_sum[4] = {0, 0, 0, 0};  // local: no aliasing with s in the loop
-      for (int p = 0; p < q.count; ++p) {
-        const double w = q.weight[p], g = q.gap[p];
-        const double* N = q.slave_shape[p];
-        const double* Phi = q.master_shape[p];
-        const double s0 = q.master_slope[p][0], s1 = q.master_slope[p][1];
-        double wN[4];
-        for (int a = 0; a < 4; ++a) {
-          wN[a] = w * N[a];
-          gap_sum[a] += wN[a] * g;
-          area_sum[a] += wN[a];
-        }
-        for (int a = 0; a < 4; ++a) {
-          const double wPhi = w * Phi[a];
-          for (int b = a; b < 4; ++b) {  // M and G are symmetric in (a, b)
-            const double m = wN[a] * N[b];
-            s.M[a][b] += m;
-            s.G[a][b][0] += m * s0;
-            s.G[a][b][1] += m * s1;
-          }
-          for (int b = 0; b < 4; ++b) {
-            const double d = wPhi * N[b];
-            s.D[a][b] += d;
-            s.H[a][b][0] += d * s0;
-            s.H[a][b][1] += d * s1;
-          }
-        }
-        if (settings.adhesion) {
-          // The law's separation is the distance to the master's tangent plane, g (-n_s . n_m)
-          // (g is measured along n_s), as the node-to-face rule measures it along n_m.
-          const double* nm = q.master_normal[p];
-          const double separation = -g * (plane.normal[0] * nm[0] + plane.normal[1] * nm[1] + plane.normal[2] * nm[2]);
-          if (separation <= settings.law.capture_gap()) {
-            face_totals.adhesion_energy += factor * w * adhesive_energy(separation, settings.law);
-            const double sigma = adhesive_traction(separation, settings.law);  // 0 for g < 0 (penalty side)
-            if (sigma != 0.0) {
-              face_totals.adhesive_force += factor * sigma * w;
-              for (int a = 0; a < 4; ++a)
-                for (int i = 0; i < 3; ++i) {
-                  // The slave point pulled toward the master (against n_m), the master point back.
-                  adhesion_slave[3 * a + i] -= factor * sigma * w * N[a] * nm[i];
-                  adhesion_master[3 * a + i] -= factor * sigma * w * Phi[a] * nm[i];
-                }
-            }
-          }
-        }
-      }
       for (int a = 0; a < 4; ++a) {
-        weighted_gap_[sl[a]] += gap_sum[a];
-        overlap_area_[sl[a]] += area_sum[a];
+        weighted_gap_[sl[a]] += sums.gap[a];
+        overlap_area_[sl[a]] += sums.area[a];
       }
       if (settings.adhesion)
         for (int a = 0; a < 4; ++a)
           for (int i = 0; i < 3; ++i) {
-            force[3 * sn[a] + i] += adhesion_slave[3 * a + i];
-            traction[3 * sn[a] + i] += adhesion_slave[3 * a + i] / slave.node_area[sl[a]];
-            force[3 * mn[a] + i] -= adhesion_master[3 * a + i];
+            force[3 * sn[a] + i] += sums.adhesion_slave[3 * a + i];
+            traction[3 * sn[a] + i] += sums.adhesion_slave[3 * a + i] / slave.node_area[sl[a]];
+            force[3 * mn[a] + i] -= sums.adhesion_master[3 * a + i];
           }
       segments_.push_back(s);
     }
   }
-  // Nodal pressures p_j = k_A (-g~_j / A_j) where the mean gap is a penetration within the margin.
+  nodal_pressures(slave, settings, totals);
+  apply_pressures(slave, master, force, traction);
+  return totals;
+}
+
+// The segment of a slave face's plane and a master face (docs/theory.md 5.3): its quadrature, the
+// mortar matrices M, D (and the slope terms G, H), the weighted gap and area per slave node, and the
+// Lennard-Jones traction at each integration point (6.1) as nodal forces.
+bool MortarEnforcement::integrate_pair(const SlaveFacePlane& plane, const double Y[12], const MortarSettings& settings,
+                                       MortarTotals& face_totals, Segment& s, SegmentSums& sums) {
+  SegmentQuadrature& q = quadrature_;
+  if (!integrate_segment(plane, Y, q, settings.adhesion)) return false;
+  double g_min = INFINITY, g_max = -INFINITY;
+  for (int p = 0; p < q.count; ++p) {
+    g_min = std::min(g_min, q.gap[p]);
+    g_max = std::max(g_max, q.gap[p]);
+  }
+  // Beyond the capture distance, or deeper than the margin (the far side of a thin body).
+  if (g_min > settings.margin || g_max < -settings.margin) return false;
+  for (int i = 0; i < 3; ++i) {
+    s.normal[i] = plane.normal[i];
+    s.e1[i] = plane.e1[i];
+    s.e2[i] = plane.e2[i];
+  }
+  const double factor = settings.factor;
+  double gap_sum[4] = {0, 0, 0, 0}, area_sum[4] = {0, 0, 0, 0};  // local: no aliasing with s in the loop
+  for (int p = 0; p < q.count; ++p) {
+    const double w = q.weight[p], g = q.gap[p];
+    const double* N = q.slave_shape[p];
+    const double* Phi = q.master_shape[p];
+    const double s0 = q.master_slope[p][0], s1 = q.master_slope[p][1];
+    double wN[4];
+    for (int a = 0; a < 4; ++a) {
+      wN[a] = w * N[a];
+      gap_sum[a] += wN[a] * g;
+      area_sum[a] += wN[a];
+    }
+    for (int a = 0; a < 4; ++a) {
+      const double wPhi = w * Phi[a];
+      for (int b = a; b < 4; ++b) {  // M and G are symmetric in (a, b)
+        const double m = wN[a] * N[b];
+        s.M[a][b] += m;
+        s.G[a][b][0] += m * s0;
+        s.G[a][b][1] += m * s1;
+      }
+      for (int b = 0; b < 4; ++b) {
+        const double d = wPhi * N[b];
+        s.D[a][b] += d;
+        s.H[a][b][0] += d * s0;
+        s.H[a][b][1] += d * s1;
+      }
+    }
+    if (!settings.adhesion) continue;
+    // The law's separation is the distance to the master's tangent plane, g (-n_s . n_m) (g is
+    // measured along n_s), as the node-to-face rule measures it along n_m.
+    const double* nm = q.master_normal[p];
+    const double separation = -g * (plane.normal[0] * nm[0] + plane.normal[1] * nm[1] + plane.normal[2] * nm[2]);
+    if (!(separation <= settings.law.capture_gap())) continue;
+    face_totals.adhesion_energy += factor * w * adhesive_energy(separation, settings.law);
+    const double sigma = adhesive_traction(separation, settings.law);  // 0 for g < 0 (penalty side)
+    if (sigma == 0.0) continue;
+    face_totals.adhesive_force += factor * sigma * w;
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) {
+        // The slave point pulled toward the master (against n_m), the master point back.
+        sums.adhesion_slave[3 * a + i] -= factor * sigma * w * N[a] * nm[i];
+        sums.adhesion_master[3 * a + i] -= factor * sigma * w * Phi[a] * nm[i];
+      }
+  }
+  for (int a = 0; a < 4; ++a) {
+    sums.gap[a] = gap_sum[a];
+    sums.area[a] = area_sum[a];
+  }
+  return true;
+}
+
+// Nodal pressures p_j = k_A (-g~_j / A_j) where the mean gap is a penetration within the margin.
+void MortarEnforcement::nodal_pressures(const ContactSurface& slave, const MortarSettings& settings, MortarTotals& totals) {
   for (int k = 0; k < slave.node_count(); ++k) {
     pressure_[k] = 0.0;
     mean_gap_[k] = overlap_area_[k] > 0.0 ? weighted_gap_[k] / overlap_area_[k] : NAN;
     if (overlap_area_[k] > 0.0 && mean_gap_[k] < 0.0 && -mean_gap_[k] <= settings.margin) {
-      pressure_[k] = factor * settings.penalty_per_area * (-mean_gap_[k]);
+      pressure_[k] = settings.factor * settings.penalty_per_area * (-mean_gap_[k]);
       if (!settings.counted || settings.counted[slave.nodes[k]]) totals.compressive_force += pressure_[k] * overlap_area_[k];
     }
   }
-  // Sweep 2: f_i = -n_s sum_j M_ij p_j + sum_j G_ij p_j on the slave, f_k = +n_s sum_j D_kj p_j - sum_j H_kj p_j
-  // on the master.
+}
+
+// Sweep 2: f_i = -n_s sum_j M_ij p_j + sum_j G_ij p_j on the slave, f_k = +n_s sum_j D_kj p_j - sum_j H_kj p_j
+// on the master.
+void MortarEnforcement::apply_pressures(const ContactSurface& slave, const ContactSurface& master, double* force,
+                                        double* traction) const {
   for (const Segment& s : segments_) {
     const int* sn = &slave.face_nodes[4 * s.slave_face];
     const int* sl = &slave.face_local[4 * s.slave_face];
@@ -196,7 +216,6 @@ MortarTotals MortarEnforcement::apply(const double* x, const ContactSurface& sla
       }
     }
   }
-  return totals;
 }
 
 }  // namespace tribex::contact

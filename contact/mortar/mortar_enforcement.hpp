@@ -91,6 +91,18 @@ class MortarEnforcement {
     double H[4][4][2];  // int Phi_k N_b grad h_m dA, along e1, e2
     double e1[3], e2[3];
   };
+  // A segment's sums over its integration points besides the matrices: weighted gap and area per
+  // slave node, and the adhesive nodal forces on the slave and master face (N, [node][3]).
+  struct SegmentSums {
+    double gap[4], area[4];
+    double adhesion_slave[12], adhesion_master[12];
+  };
+  // apply()'s steps: one slave face against one master face (false: no overlap within the margin),
+  // the nodal pressures from the weighted gaps, and the pressures' nodal forces.
+  bool integrate_pair(const SlaveFacePlane& plane, const double Y[12], const MortarSettings& settings,
+                      MortarTotals& face_totals, Segment& s, SegmentSums& sums);
+  void nodal_pressures(const ContactSurface& slave, const MortarSettings& settings, MortarTotals& totals);
+  void apply_pressures(const ContactSurface& slave, const ContactSurface& master, double* force, double* traction) const;
   std::vector<double> weighted_gap_, overlap_area_, mean_gap_, pressure_;
   std::vector<Segment> segments_;
   SegmentQuadrature quadrature_;

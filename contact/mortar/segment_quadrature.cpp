@@ -110,6 +110,61 @@ SlaveFacePlane slave_face_plane(const double X[12]) {
   return s;
 }
 
+namespace {
+
+// Quick reject: the master's projected corners and the slave polygon have disjoint bounding boxes
+// in the plane (most candidates of a broad-phase list).
+bool disjoint_in_plane(const double mx[4], const double my[4], const Polygon2& slave) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  double slo[2] = {INFINITY, INFINITY}, shi[2] = {-INFINITY, -INFINITY};
+  for (int a = 0; a < 4; ++a) {
+    lo[0] = std::min(lo[0], mx[a]);
+    hi[0] = std::max(hi[0], mx[a]);
+    lo[1] = std::min(lo[1], my[a]);
+    hi[1] = std::max(hi[1], my[a]);
+    slo[0] = std::min(slo[0], slave.x[a]);
+    shi[0] = std::max(shi[0], slave.x[a]);
+    slo[1] = std::min(slo[1], slave.y[a]);
+    shi[1] = std::max(shi[1], slave.y[a]);
+  }
+  return lo[0] >= shi[0] || hi[0] <= slo[0] || lo[1] >= shi[1] || hi[1] <= slo[1];
+}
+
+// Facing faces only (the reversed master runs counter-clockwise in the plane); a master face seen
+// edge-on (projected area below 1 % of its own, i.e. tilted more than 89.4 degrees from the slave
+// plane) has an ill-conditioned projected map.
+bool faces_the_slave(const Polygon2& master, const double Y[12]) {
+  const double projected = signed_area(master);
+  double diag1[3], diag2[3];
+  for (int i = 0; i < 3; ++i) {
+    diag1[i] = Y[6 + i] - Y[i];
+    diag2[i] = Y[9 + i] - Y[3 + i];
+  }
+  const double c[3] = {diag1[1] * diag2[2] - diag1[2] * diag2[1], diag1[2] * diag2[0] - diag1[0] * diag2[2],
+                       diag1[0] * diag2[1] - diag1[1] * diag2[0]};
+  return !(projected <= 0.01 * 0.5 * std::sqrt(dot(c, c)));  // (NaN: not rejected here, as before)
+}
+
+// The master face's unit normal at its parametric point (xm, em): the cross product of the
+// tangents dx/dxi, dx/deta of the bilinear face.
+void master_unit_normal(const double Y[12], double xm, double em, double n[3]) {
+  double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
+  for (int a = 0; a < 4; ++a) {
+    const double Ns = 0.25 * xi_a[a] * (1 + eta_a[a] * em), Nt = 0.25 * eta_a[a] * (1 + xi_a[a] * xm);
+    for (int i = 0; i < 3; ++i) {
+      t1[i] += Ns * Y[3 * a + i];
+      t2[i] += Nt * Y[3 * a + i];
+    }
+  }
+  n[0] = t1[1] * t2[2] - t1[2] * t2[1];
+  n[1] = t1[2] * t2[0] - t1[0] * t2[2];
+  n[2] = t1[0] * t2[1] - t1[1] * t2[0];
+  const double len = std::sqrt(dot(n, n));
+  for (int i = 0; i < 3; ++i) n[i] /= len;
+}
+
+}  // namespace
+
 bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQuadrature& q, bool master_normals) {
   q.count = 0;
   q.area = 0.0;
@@ -123,37 +178,14 @@ bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQ
     mx[a] = dot(r, slave.e1);
     my[a] = dot(r, slave.e2);
   }
-  // Quick reject: disjoint bounding boxes in the plane (most candidates of a broad-phase list).
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  double slo[2] = {INFINITY, INFINITY}, shi[2] = {-INFINITY, -INFINITY};
-  for (int a = 0; a < 4; ++a) {
-    lo[0] = std::min(lo[0], mx[a]);
-    hi[0] = std::max(hi[0], mx[a]);
-    lo[1] = std::min(lo[1], my[a]);
-    hi[1] = std::max(hi[1], my[a]);
-    slo[0] = std::min(slo[0], slave.polygon.x[a]);
-    shi[0] = std::max(shi[0], slave.polygon.x[a]);
-    slo[1] = std::min(slo[1], slave.polygon.y[a]);
-    shi[1] = std::max(shi[1], slave.polygon.y[a]);
-  }
-  if (lo[0] >= shi[0] || hi[0] <= slo[0] || lo[1] >= shi[1] || hi[1] <= slo[1]) return false;
+  if (disjoint_in_plane(mx, my, slave.polygon)) return false;
   Polygon2 master;
   master.count = 4;
   for (int a = 0; a < 4; ++a) {
     master.x[a] = mx[3 - a];
     master.y[a] = my[3 - a];
   }
-  // Facing faces only; a master face seen edge-on (projected area below 1 % of its own, i.e.
-  // tilted more than 89.4 degrees from the slave plane) has an ill-conditioned projected map.
-  const double projected = signed_area(master);
-  double diag1[3], diag2[3];
-  for (int i = 0; i < 3; ++i) {
-    diag1[i] = Y[6 + i] - Y[i];
-    diag2[i] = Y[9 + i] - Y[3 + i];
-  }
-  const double c[3] = {diag1[1] * diag2[2] - diag1[2] * diag2[1], diag1[2] * diag2[0] - diag1[0] * diag2[2],
-                       diag1[0] * diag2[1] - diag1[1] * diag2[0]};
-  if (projected <= 0.01 * 0.5 * std::sqrt(dot(c, c))) return false;
+  if (!faces_the_slave(master, Y)) return false;
   const Polygon2 overlap = clip_convex(master, slave.polygon);
   if (overlap.count < 3) return false;
   // The overlap of convex polygons is convex: a fan of count - 2 triangles from its first vertex
@@ -216,22 +248,7 @@ bool integrate_segment(const SlaveFacePlane& slave, const double Y[12], SegmentQ
       const double det = jx_xi * jy_eta - jy_xi * jx_eta;
       q.master_slope[k][0] = (jy_eta * h_xi - jy_xi * h_eta) / det;
       q.master_slope[k][1] = (jx_xi * h_eta - jx_eta * h_xi) / det;
-      if (master_normals) {
-        double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
-        for (int a = 0; a < 4; ++a) {
-          const double Ns = 0.25 * xi_a[a] * (1 + eta_a[a] * em), Nt = 0.25 * eta_a[a] * (1 + xi_a[a] * xm);
-          for (int i = 0; i < 3; ++i) {
-            t1[i] += Ns * Y[3 * a + i];
-            t2[i] += Nt * Y[3 * a + i];
-          }
-        }
-        double* n = q.master_normal[k];
-        n[0] = t1[1] * t2[2] - t1[2] * t2[1];
-        n[1] = t1[2] * t2[0] - t1[0] * t2[2];
-        n[2] = t1[0] * t2[1] - t1[1] * t2[0];
-        const double len = std::sqrt(dot(n, n));
-        for (int i = 0; i < 3; ++i) n[i] /= len;
-      }
+      if (master_normals) master_unit_normal(Y, xm, em, q.master_normal[k]);
     }
   }
   return q.count > 0;

@@ -44,6 +44,7 @@ const char* kind_name(WarningKind kind) {
     case WarningKind::adhesion_cutoff: return "adhesion_cutoff";
     case WarningKind::unsafe_choice: return "unsafe_choice";
     case WarningKind::large_strain: return "large_strain";
+    case WarningKind::scaled_silent_boundary: return "scaled_silent_boundary";
   }
   return "unknown";
 }

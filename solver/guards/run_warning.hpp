@@ -16,6 +16,7 @@ enum class WarningKind {
   adhesion_cutoff,  // set-up: the adhesion law's cut-off keeps less than 99 % of W
   unsafe_choice,    // a choice known to be unsafe, once the run reaches where it is (see SetupFindings)
   large_strain,     // a small-strain elastic block's largest principal strain above small_strain_warning
+  scaled_silent_boundary,  // set-up: a silent boundary on mass-scaled elements (it reflects)
 };
 
 /// The name written to summary.json and the log ("energy_error", ...).

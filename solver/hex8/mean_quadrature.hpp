@@ -61,6 +61,33 @@ inline void hourglass_base_combinations(const T r0, const T r1, const T r2, cons
   f[7] = r0 - d;
 }
 
+/// The finite lanes' shares of the block's totals (in element order, so that a block's total is a sum
+/// over its elements in order) and, on output steps, their Cauchy stresses.
+template <class T, class Material, bool HourglassViscosity>
+inline void add_lane_totals(const Material& mat, ElementBlock& blk, int e, unsigned finite_lanes, const T& strain_energy,
+                            const T& viscous_power, const T& k_hg, const T& hg_energy, const T& hg_power,
+                            const T& dissipated, const T H[9], const T* state, bool want_stress, ElementPassTotals& totals) {
+  using materials::lane;
+  constexpr int n = materials::lane_count<T>;
+  constexpr int ns = Material::state_size;
+  for (int l = 0; l < n; ++l) {
+    if (!(finite_lanes >> l & 1u)) continue;
+    totals.strain_energy += lane(strain_energy, l);
+    totals.hourglass_energy += 0.5 * lane(k_hg, l) * lane(hg_energy, l);
+    // the element's dissipation rate first, so that a block's total is a sum over elements in order
+    double element_power = lane(viscous_power, l);
+    if constexpr (HourglassViscosity) element_power += blk.hg_c[e + l] * lane(hg_power, l);
+    totals.viscous_power += element_power;
+    if constexpr (Material::dissipates) totals.plastic_work += lane(dissipated, l) * blk.volume0[e + l];
+    if (want_stress) {
+      double Hl[9], state_l[ns > 0 ? ns : 1];
+      for (int k = 0; k < 9; ++k) Hl[k] = lane(H[k], l);
+      for (int k = 0; k < ns; ++k) state_l[k] = lane(state[k], l);
+      materials::point_cauchy_stress(mat, Hl, state_l, &blk.stress[6 * (e + l)]);
+    }
+  }
+}
+
 /// Elements e .. e + lane_count<T> - 1 of a mean-quadrature block (e a multiple of the lane count).
 template <class T, class Material, bool HourglassViscosity>
 inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
@@ -155,23 +182,8 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
       totals.first_inverted = blk.first_element + e + l;
   subtract_nodal(force, nodes, f, finite_lanes);
 
-  const T strain_energy = W * V, viscous_power = -q * edot * V;
-  for (int l = 0; l < n; ++l) {
-    if (!(finite_lanes >> l & 1u)) continue;
-    totals.strain_energy += lane(strain_energy, l);
-    totals.hourglass_energy += 0.5 * lane(k_hg, l) * lane(hg_energy, l);
-    // the element's dissipation rate first, so that a block's total is a sum over elements in order
-    double element_power = lane(viscous_power, l);
-    if constexpr (HourglassViscosity) element_power += blk.hg_c[e + l] * lane(hg_power, l);
-    totals.viscous_power += element_power;
-    if constexpr (Material::dissipates) totals.plastic_work += lane(dissipated, l) * blk.volume0[e + l];
-    if (want_stress) {
-      double Hl[9], state_l[ns > 0 ? ns : 1];
-      for (int k = 0; k < 9; ++k) Hl[k] = lane(H[k], l);
-      for (int k = 0; k < ns; ++k) state_l[k] = lane(state[k], l);
-      materials::point_cauchy_stress(mat, Hl, state_l, &blk.stress[6 * (e + l)]);
-    }
-  }
+  add_lane_totals<T, Material, HourglassViscosity>(mat, blk, e, finite_lanes, W * V, -q * edot * V, k_hg, hg_energy,
+                                                   hg_power, dissipated, H, state, want_stress, totals);
   if (want_stable_step) add_stable_steps(mat, blk, e, H, B, totals.stable);
 }
 

@@ -2,6 +2,7 @@
 #include "solver/integrators/central_difference.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -177,40 +178,55 @@ void CentralDifference::init() {
 
 void CentralDifference::compute_forces(double t, bool want_stress, bool want_stable_step) {
   std::fill(f_.begin(), f_.end(), 0.0);
-  // Applied pressures (follower loads on the current configuration) and prescribed nodal forces;
-  // f_ext is zero off the loaded dofs, so only those are cleared and copied.
-  if (!loaded_dofs_.empty()) {
-    for (int d : loaded_dofs_) f_ext_[d] = 0.0;
-    for (const auto& load : model_.nodal_forces) {
-      const double f = load.scale * model_.functions[load.function](t);
-      for (int dof : load.dof) f_ext_[dof] += f;
-    }
-    const auto& X = model_.mesh.coordinates;
-    for (const auto& load : model_.pressures) {
-      const double p = load.scale * model_.functions[load.function](t);
-      for (std::size_t face = 0; face < load.face_nodes.size() / 4; ++face) {
-        const int* n = &load.face_nodes[4 * face];
-        double d1[3], d2[3];
-        for (int i = 0; i < 3; ++i) {
-          d1[i] = X[3 * n[2] + i] + u_[3 * n[2] + i] - X[3 * n[0] + i] - u_[3 * n[0] + i];
-          d2[i] = X[3 * n[3] + i] + u_[3 * n[3] + i] - X[3 * n[1] + i] - u_[3 * n[1] + i];
-        }
-        // Area vector a = (d1 x d2)/2 (outward); each node takes -p a / 4.
-        const double a[3] = {0.5 * (d1[1] * d2[2] - d1[2] * d2[1]), 0.5 * (d1[2] * d2[0] - d1[0] * d2[2]),
-                             0.5 * (d1[0] * d2[1] - d1[1] * d2[0])};
-        for (int I = 0; I < 4; ++I)
-          for (int i = 0; i < 3; ++i) f_ext_[3 * n[I] + i] -= 0.25 * p * a[i];
-      }
-    }
-    for (int d : loaded_dofs_) f_[d] = f_ext_[d];
+  apply_loads(t);
+  add_element_forces(t, want_stress, want_stable_step);
+  force_time_ = t;
+  // Partial nodal forces of shared nodes summed over the ranks that hold them.
+  model_.domain.sum_shared(f_.data());
+  raise_pending_failure();
+  if (model_.contact) add_contact_forces();
+}
+
+// Applied pressures (follower loads on the current configuration) and prescribed nodal forces;
+// f_ext is zero off the loaded dofs, so only those are cleared and copied.
+void CentralDifference::apply_loads(double t) {
+  if (loaded_dofs_.empty()) return;
+  for (int d : loaded_dofs_) f_ext_[d] = 0.0;
+  for (const auto& load : model_.nodal_forces) {
+    const double f = load.scale * model_.functions[load.function](t);
+    for (int dof : load.dof) f_ext_[dof] += f;
   }
+  const auto& X = model_.mesh.coordinates;
+  for (const auto& load : model_.pressures) {
+    const double p = load.scale * model_.functions[load.function](t);
+    for (std::size_t face = 0; face < load.face_nodes.size() / 4; ++face) {
+      const int* n = &load.face_nodes[4 * face];
+      double d1[3], d2[3];
+      for (int i = 0; i < 3; ++i) {
+        d1[i] = X[3 * n[2] + i] + u_[3 * n[2] + i] - X[3 * n[0] + i] - u_[3 * n[0] + i];
+        d2[i] = X[3 * n[3] + i] + u_[3 * n[3] + i] - X[3 * n[1] + i] - u_[3 * n[1] + i];
+      }
+      // Area vector a = (d1 x d2)/2 (outward); each node takes -p a / 4.
+      const double a[3] = {0.5 * (d1[1] * d2[2] - d1[2] * d2[1]), 0.5 * (d1[2] * d2[0] - d1[0] * d2[2]),
+                           0.5 * (d1[0] * d2[1] - d1[1] * d2[0])};
+      for (int I = 0; I < 4; ++I)
+        for (int i = 0; i < 3; ++i) f_ext_[3 * n[I] + i] -= 0.25 * p * a[i];
+    }
+  }
+  for (int d : loaded_dofs_) f_[d] = f_ext_[d];
+}
+
+// The element pass, block by block: internal forces into f_, this rank's stored energies and
+// dissipation rates, and (when asked) the stable step, folded in block order as
+// compute_stable_time_step visits them.
+void CentralDifference::add_element_forces(double t, bool want_stress, bool want_stable_step) {
   double strain = 0.0, hourglass = 0.0;
   viscous_power_ = 0.0;
   hex8::StableStepMin stable;
   for (auto& blk : model_.blocks) {
     const auto totals = add_internal_forces(blk, model_.mesh.connectivity.data(), model_.mesh.coordinates.data(), u_.data(),
                                             v_.data(), f_.data(), t - force_time_, want_stress, want_stable_step);
-    if (want_stable_step) {  // blocks in order, as compute_stable_time_step visits them
+    if (want_stable_step) {
       if (totals.stable.dt < stable.dt) {
         stable.dt = totals.stable.dt;
         stable.controlling_element = totals.stable.controlling_element;
@@ -229,56 +245,52 @@ void CentralDifference::compute_forces(double t, bool want_stress, bool want_sta
     folded_stable_ = {stable.dt, stable.controlling_element, stable.inverted_element};
     folded_stable_valid_ = true;
   }
-  force_time_ = t;
   // This rank's parts; account_time_n sums them over the ranks.
   energies_.internal = strain;
   energies_.hourglass = hourglass;
-  // Partial nodal forces of shared nodes summed over the ranks that hold them.
-  model_.domain.sum_shared(f_.data());
-  raise_pending_failure();
+}
 
-  if (model_.contact) {
-    // The contact runs in its own numbering (surface node k) on this rank's rows and, in a
-    // distributed run, the ghost rows of its region (parallel/contact_region.hpp); each rank adds the
-    // contact forces of the surface nodes it holds, complete there by the region's reach.
-    const auto contact_start = std::chrono::steady_clock::now();
-    const auto& X = model_.mesh.coordinates;
-    const auto& local = model_.domain.surface_local();
-    // f_ (internal + applied, summed over the ranks, no contact yet) and the last step size let the
-    // junction shear predict the slip of the coming velocity update (contact/contact_manager.hpp, step 5).
-    for (std::size_t k = 0; k < local.size(); ++k) {
-      if (const int l = local[k]; l >= 0)
-        for (int i = 0; i < 3; ++i) {
-          x_[3 * k + i] = X[3 * l + i] + u_[3 * l + i];
-          v_contact_[3 * k + i] = v_[3 * l + i];
-          f_other_contact_[3 * k + i] = f_[3 * l + i];
-        }
-      for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = 0.0;
-    }
-    bool refreshed = false;
-    if (contact_region_) {
-      refreshed = model_.contact->plan_searches(x_.data());
-      if (refreshed) {
-        contact_region_->refresh(x_.data(), *model_.contact);
-        model_.contact->set_present(contact_region_->present());
+// The contact runs in its own numbering (surface node k) on this rank's rows and, in a distributed
+// run, the ghost rows of its region (parallel/contact_region.hpp); each rank adds the contact forces
+// of the surface nodes it holds, complete there by the region's reach.
+void CentralDifference::add_contact_forces() {
+  const auto contact_start = std::chrono::steady_clock::now();
+  const auto& X = model_.mesh.coordinates;
+  const auto& local = model_.domain.surface_local();
+  // f_ (internal + applied, summed over the ranks, no contact yet) and the last step size let the
+  // junction shear predict the slip of the coming velocity update (contact/contact_manager.hpp, step 5).
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    if (const int l = local[k]; l >= 0)
+      for (int i = 0; i < 3; ++i) {
+        x_[3 * k + i] = X[3 * l + i] + u_[3 * l + i];
+        v_contact_[3 * k + i] = v_[3 * l + i];
+        f_other_contact_[3 * k + i] = f_[3 * l + i];
       }
-      contact_region_->fill_ghosts(x_.data(), v_contact_.data(), f_other_contact_.data());
-    }
-    contact_totals_ = model_.contact->compute_forces(x_.data(), v_contact_.data(), f_contact_.data(),
-                                                     f_other_contact_.data(), dt_half_);
-    // Until the next search only the ghost rows the passes read travel (owner computes: the nodes
-    // near this rank's slave nodes, not the whole band of the region).
-    if (refreshed && model_.contact->owner_computes()) contact_region_->trim(model_.contact->rows_read());
-    if (contact_region_ && model_.contact->owner_computes()) complete_contact_forces();
-    for (std::size_t k = 0; k < local.size(); ++k)
-      if (const int l = local[k]; l >= 0)
-        for (int i = 0; i < 3; ++i) f_[3 * l + i] += f_contact_[3 * k + i];
-    // The nodes the totals name, in the whole mesh's numbering.
-    const auto& whole = model_.contact_global_node;
-    if (contact_totals_.penetration_node >= 0) contact_totals_.penetration_node = whole[contact_totals_.penetration_node];
-    if (contact_totals_.motion_node >= 0) contact_totals_.motion_node = whole[contact_totals_.motion_node];
-    contact_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
+    for (int i = 0; i < 3; ++i) f_contact_[3 * k + i] = 0.0;
   }
+  bool refreshed = false;
+  if (contact_region_) {
+    refreshed = model_.contact->plan_searches(x_.data());
+    if (refreshed) {
+      contact_region_->refresh(x_.data(), *model_.contact);
+      model_.contact->set_present(contact_region_->present());
+    }
+    contact_region_->fill_ghosts(x_.data(), v_contact_.data(), f_other_contact_.data());
+  }
+  contact_totals_ = model_.contact->compute_forces(x_.data(), v_contact_.data(), f_contact_.data(),
+                                                   f_other_contact_.data(), dt_half_);
+  // Until the next search only the ghost rows the passes read travel (owner computes: the nodes
+  // near this rank's slave nodes, not the whole band of the region).
+  if (refreshed && model_.contact->owner_computes()) contact_region_->trim(model_.contact->rows_read());
+  if (contact_region_ && model_.contact->owner_computes()) complete_contact_forces();
+  for (std::size_t k = 0; k < local.size(); ++k)
+    if (const int l = local[k]; l >= 0)
+      for (int i = 0; i < 3; ++i) f_[3 * l + i] += f_contact_[3 * k + i];
+  // The nodes the totals name, in the whole mesh's numbering.
+  const auto& whole = model_.contact_global_node;
+  if (contact_totals_.penetration_node >= 0) contact_totals_.penetration_node = whole[contact_totals_.penetration_node];
+  if (contact_totals_.motion_node >= 0) contact_totals_.motion_node = whole[contact_totals_.motion_node];
+  contact_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
 }
 
 // Owner-computes contact: each slave node was computed on its owner only, so the forces on a node are
@@ -375,14 +387,35 @@ void CentralDifference::apply_constraints() {
 }
 
 void CentralDifference::account_time_n() {
-  // Kinetic energy in the form the central-difference scheme conserves exactly for linear
-  // problems, KE^n = (1/2) v^{n-1/2} . M v^{n+1/2} (the "shadow" energy of the leapfrog), so the
-  // energy balance measures the model, not the averaging of v^n. At n = 0, v^{-1/2} = v^0.
-  double ke = 0.0;
-  const double h = dt_n_;
-  // Sums over nodes count each node once, on the rank that owns it (owned_mass_ is 0 elsewhere).
-  // One pass over the nodes for every all-node sum (kinetic energy, momentum, mass damping), per
-  // node, not per dof (no d / 3, d % 3); v^n in registers (velocity_at_n), no array written.
+  StepSums sums;
+  sum_node_terms(sums);
+  sum_load_power(sums);
+  if (model_.contact) sum_contact_power(sums);
+  sum_silent_power(sums);
+  sums.internal = energies_.internal;
+  sums.hourglass = energies_.hourglass;
+  sums.viscous_power = viscous_power_;
+  sums.plastic_work = plastic_work_;
+  reduce_over_ranks(sums);
+  momentum_[0] = sums.momentum_x;
+  momentum_[1] = sums.momentum_y;
+  momentum_[2] = sums.momentum_z;
+  energies_.internal = sums.internal;
+  energies_.hourglass = sums.hourglass;
+  viscous_power_ = sums.viscous_power;
+  energies_.plastic_dissipation = sums.plastic_work;
+  if (!std::isfinite(sums.kinetic)) fail_on_non_finite_velocity();
+  energies_.kinetic = sums.kinetic;
+  add_step_to_ledger(sums);
+}
+
+// Kinetic energy in the form the central-difference scheme conserves exactly for linear problems,
+// KE^n = (1/2) v^{n-1/2} . M v^{n+1/2} (the "shadow" energy of the leapfrog), so the energy balance
+// measures the model, not the averaging of v^n (at n = 0, v^{-1/2} = v^0); momentum; mass damping.
+// Sums over nodes count each node once, on the rank that owns it (owned_mass_ is 0 elsewhere). One
+// pass over the nodes for every all-node sum, per node, not per dof (no d / 3, d % 3); v^n in
+// registers (velocity_at_n), no array written.
+void CentralDifference::sum_node_terms(StepSums& s) const {
   const bool first_step = reported_first_step_;
   const std::size_t nodes = owned_mass_.size();
   const double* v_minus = v_prev_.data();
@@ -390,50 +423,53 @@ void CentralDifference::account_time_n() {
   const double* mass = owned_mass_.data();
   const double* damped_mass = owned_damping_mass_.empty() ? mass : owned_damping_mass_.data();
   double p[3] = {0.0, 0.0, 0.0};
-  double damp_left = 0.0, damp_right = 0.0;
   if (model_.mass_damping > 0.0)
-    sum_over_nodes<true>(first_step, nodes, v_minus, v_plus, mass, damped_mass, ke, p, damp_left, damp_right);
+    sum_over_nodes<true>(first_step, nodes, v_minus, v_plus, mass, damped_mass, s.kinetic, p, s.damping_left, s.damping_right);
   else
-    sum_over_nodes<false>(first_step, nodes, v_minus, v_plus, mass, damped_mass, ke, p, damp_left, damp_right);
-  for (int i = 0; i < 3; ++i) momentum_[i] = p[i];
+    sum_over_nodes<false>(first_step, nodes, v_minus, v_plus, mass, damped_mass, s.kinetic, p, s.damping_left, s.damping_right);
+  s.momentum_x = p[0];
+  s.momentum_y = p[1];
+  s.momentum_z = p[2];
+}
 
-  // Work of the reactions and applied loads, in the pairing that makes the balance exact for
-  // the scheme: W^{n} - W^{n-1} = (1/2) v^{n-1/2} . (dt^{n-1} F^{n-1} + dt^n F^n), which with the
-  // shadow kinetic energy above gives KE + IE = E0 + W to round-off for linear problems (also
-  // across the half first step and variable steps). The F^{n-1} half is kept from the last step.
-  double power_left = 0.0, power_right = 0.0;
+// Work of the reactions and applied loads, in the pairing that makes the balance exact for the
+// scheme: W^{n} - W^{n-1} = (1/2) v^{n-1/2} . (dt^{n-1} F^{n-1} + dt^n F^n), which with the shadow
+// kinetic energy gives KE + IE = E0 + W to round-off for linear problems (also across the half first
+// step and variable steps). The F^{n-1} half is kept from the last step (add_step_to_ledger).
+void CentralDifference::sum_load_power(StepSums& s) const {
   const auto& owned = model_.domain.owned;
   for (int dof : model_.constraints.dof) {
-    power_left += owned[dof / 3] * reaction_[dof] * v_prev_[dof];
-    power_right += owned[dof / 3] * reaction_[dof] * v_[dof];
+    s.external_left += owned[dof / 3] * reaction_[dof] * v_prev_[dof];
+    s.external_right += owned[dof / 3] * reaction_[dof] * v_[dof];
   }
   // f_ext is zero off the loaded dofs: summing over them alone gives the same bits.
   for (int d : loaded_dofs_) {
-    power_left += f_ext_[d] * v_prev_[d];
-    power_right += f_ext_[d] * v_[d];
+    s.external_left += f_ext_[d] * v_prev_[d];
+    s.external_right += f_ext_[d] * v_[d];
   }
+}
 
-  // Contact: the energy held or dissipated by the interface is minus the work of the contact
-  // forces on the bodies, in the same pairing.
-  double c_left = 0.0, c_right = 0.0;
-  if (model_.contact) {
-    const auto& local = model_.domain.surface_local();
-    const auto& surface_owned = model_.domain.surface_owned();
-    for (std::size_t k = 0; k < local.size(); ++k) {
-      const int l = local[k];
-      if (l < 0) continue;
-      for (int i = 0; i < 3; ++i) {
-        c_left += surface_owned[k] * f_contact_[3 * k + i] * v_prev_[3 * l + i];
-        c_right += surface_owned[k] * f_contact_[3 * k + i] * v_[3 * l + i];
-      }
+// Contact: the energy held or dissipated by the interface is minus the work of the contact forces
+// on the bodies, in the same pairing.
+void CentralDifference::sum_contact_power(StepSums& s) const {
+  const auto& local = model_.domain.surface_local();
+  const auto& surface_owned = model_.domain.surface_owned();
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    const int l = local[k];
+    if (l < 0) continue;
+    for (int i = 0; i < 3; ++i) {
+      s.contact_left += surface_owned[k] * f_contact_[3 * k + i] * v_prev_[3 * l + i];
+      s.contact_right += surface_owned[k] * f_contact_[3 * k + i] * v_[3 * l + i];
     }
   }
+}
 
-  // Dashpots, mass damping and element viscosity: the force F^n = -C v^n (semi-implicit) or
-  // -C v^{n-1/2} (element viscosity, evaluated with the last half-step velocity) enters the balance
-  // in the same pairing as the loads: through time n, all of F^{n-1} and the v^{n-1/2} half of F^n.
+// Dashpots: the force F^n = -C v^n (semi-implicit) enters the balance in the same pairing as the
+// loads: through time n, all of F^{n-1} and the v^{n-1/2} half of F^n (docs/theory.md 4.3).
+void CentralDifference::sum_silent_power(StepSums& s) const {
+  const bool first_step = reported_first_step_;
+  const auto& owned = model_.domain.owned;
   const auto& sb = model_.silent;
-  double silent_left = 0.0, silent_right = 0.0;
   for (std::size_t k = 0; k < sb.node.size(); ++k) {
     const int node = sb.node[k];
     const double* nv = &sb.normal[3 * k];
@@ -446,55 +482,49 @@ void CentralDifference::account_time_n() {
     const double rn = vr[0] * nv[0] + vr[1] * nv[1] + vr[2] * nv[2];
     const double bl = vb[0] * vl[0] + vb[1] * vl[1] + vb[2] * vl[2];
     const double br = vb[0] * vr[0] + vb[1] * vr[1] + vb[2] * vr[2];
-    silent_left += owned[node] * (sb.c_normal[k] * bn * ln + sb.c_tangential[k] * (bl - bn * ln));
-    silent_right += owned[node] * (sb.c_normal[k] * bn * rn + sb.c_tangential[k] * (br - bn * rn));
+    s.silent_left += owned[node] * (sb.c_normal[k] * bn * ln + sb.c_tangential[k] * (bl - bn * ln));
+    s.silent_right += owned[node] * (sb.c_normal[k] * bn * rn + sb.c_tangential[k] * (br - bn * rn));
   }
+}
 
-  // One reduction over the ranks for every sum of this step (no-op on one rank).
-  double sums[16] = {ke,        momentum_[0],  momentum_[1],  momentum_[2],       power_left,        power_right,
-                     c_left,    c_right,       silent_left,   silent_right,      damp_left,         damp_right,
-                     energies_.internal,       energies_.hourglass,              viscous_power_,    plastic_work_};
-  if (!model_.domain.serial()) {
-    const auto start = std::chrono::steady_clock::now();
-    parallel::sum(sums, 16);
-    model_.domain.communication_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  ke = sums[0];
-  for (int i = 0; i < 3; ++i) momentum_[i] = sums[1 + i];
-  power_left = sums[4];
-  power_right = sums[5];
-  c_left = sums[6];
-  c_right = sums[7];
-  silent_left = sums[8];
-  silent_right = sums[9];
-  damp_left = sums[10];
-  damp_right = sums[11];
-  energies_.internal = sums[12];
-  energies_.hourglass = sums[13];
-  viscous_power_ = sums[14];
-  energies_.plastic_dissipation = sums[15];
-  if (!std::isfinite(ke)) {
-    for (std::size_t d = 0; d < v_.size() && pending_failure_.empty(); ++d)
-      if (!std::isfinite(v_[d]))
-        pending_failure_ = "velocity of node " + std::to_string(model_.domain.global_node[d / 3] + 1) + " is not finite" +
-                           where_and_when(step_, time_) +
-                           " (instability: reduce the time step scale factor, check the loads and materials)";
-    if (pending_failure_.empty() && model_.domain.serial()) pending_failure_ = "kinetic energy is not finite" + where_and_when(step_, time_);
-    raise_pending_failure();
-  }
-  energies_.kinetic = ke;
-  if (step_ > 0) energies_.external_work += 0.5 * (external_power_right_ + h * power_left);
-  external_power_right_ = h * power_right;
+// One reduction over the ranks for every sum of this step, in step_sum_fields' layout (no-op on one rank).
+void CentralDifference::reduce_over_ranks(StepSums& s) {
+  if (model_.domain.serial()) return;
+  const auto start = std::chrono::steady_clock::now();
+  std::array<double, step_sum_fields.size()> packed;
+  for (std::size_t i = 0; i < packed.size(); ++i) packed[i] = s.*step_sum_fields[i];
+  parallel::sum(packed.data(), static_cast<int>(packed.size()));
+  for (std::size_t i = 0; i < packed.size(); ++i) s.*step_sum_fields[i] = packed[i];
+  model_.domain.communication_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A kinetic energy that is not finite: the first node whose velocity is not, or (one rank) the energy.
+void CentralDifference::fail_on_non_finite_velocity() {
+  for (std::size_t d = 0; d < v_.size() && pending_failure_.empty(); ++d)
+    if (!std::isfinite(v_[d]))
+      pending_failure_ = "velocity of node " + std::to_string(model_.domain.global_node[d / 3] + 1) + " is not finite" +
+                         where_and_when(step_, time_) +
+                         " (instability: reduce the time step scale factor, check the loads and materials)";
+  if (pending_failure_.empty() && model_.domain.serial()) pending_failure_ = "kinetic energy is not finite" + where_and_when(step_, time_);
+  raise_pending_failure();
+}
+
+// The trapezoidal rules: this step's left halves with the last step's right halves (kept scaled by
+// their step, h F^{n-1} . v^{n-1/2}), then this step's right halves kept for the next.
+void CentralDifference::add_step_to_ledger(const StepSums& s) {
+  const double h = dt_n_;
+  if (step_ > 0) energies_.external_work += 0.5 * (external_power_right_ + h * s.external_left);
+  external_power_right_ = h * s.external_right;
   if (model_.contact) {
-    if (step_ > 0) energies_.contact_work -= 0.5 * (contact_power_right_ + h * c_left);
-    contact_power_right_ = h * c_right;
+    if (step_ > 0) energies_.contact_work -= 0.5 * (contact_power_right_ + h * s.contact_left);
+    contact_power_right_ = h * s.contact_right;
   }
   if (step_ == 0) energies_.initial = energies_.kinetic + energies_.internal + energies_.hourglass;
-  energies_.silent_boundary_dissipation += 0.5 * (silent_power_right_ + h * silent_left);
-  silent_power_right_ = h * silent_right;
+  energies_.silent_boundary_dissipation += 0.5 * (silent_power_right_ + h * s.silent_left);
+  silent_power_right_ = h * s.silent_right;
   if (model_.mass_damping > 0.0) {
-    energies_.damping_dissipation += 0.5 * model_.mass_damping * (damping_power_right_ + h * damp_left);
-    damping_power_right_ = h * damp_right;
+    energies_.damping_dissipation += 0.5 * model_.mass_damping * (damping_power_right_ + h * s.damping_left);
+    damping_power_right_ = h * s.damping_right;
   }
   // Element viscosity: F^n . v^{n-1/2} is the computed power; the v^{n+1/2} half is taken equal to
   // it (the element forces are not kept per node), an O(dt^2) per-step approximation.

@@ -19,6 +19,7 @@
 // allocation: every array is sized in the constructor.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -26,6 +27,7 @@
 
 #include "inputs/deck.hpp"
 #include "solver/energy.hpp"
+#include "solver/integrators/step_sums.hpp"
 #include "solver/model.hpp"
 #include "solver/parallel/contact_region.hpp"
 #include "solver/stable_time_step.hpp"
@@ -83,6 +85,27 @@ class CentralDifference {
  private:
   /// want_stable_step: the element pass also gives the stable step at this u (folded_stable_).
   void compute_forces(double t, bool want_stress, bool want_stable_step);
+  // compute_forces' steps, in order:
+  void apply_loads(double t);
+  void add_element_forces(double t, bool want_stress, bool want_stable_step);
+  void add_contact_forces();
+  // account_time_n's steps, in order (each adds this rank's part to the step's sums):
+  void sum_node_terms(StepSums& sums) const;
+  void sum_load_power(StepSums& sums) const;
+  void sum_contact_power(StepSums& sums) const;
+  void sum_silent_power(StepSums& sums) const;
+  void reduce_over_ranks(StepSums& sums);
+  void fail_on_non_finite_velocity();
+  void add_step_to_ledger(const StepSums& sums);
+  /// What step() reads from the step before besides the nodal arrays: the right halves of the
+  /// trapezoidal rules, the last pass's viscous power and the contact's wall time. Restart files keep
+  /// them as "lagged_power" in this order (central_difference_state.cpp saves and restores by it).
+  template <class Self>
+  static auto lagged_members(Self& self) {
+    return std::array{&self.external_power_right_, &self.viscous_power_,       &self.silent_power_right_,
+                      &self.damping_power_right_,  &self.viscous_power_right_, &self.contact_power_right_,
+                      &self.contact_seconds_};
+  }
   bool stable_step_due() const { return step_ % dt_update_interval_ == 0 || stable_.dt <= 0.0; }
   void update_velocity();
   void apply_constraints();

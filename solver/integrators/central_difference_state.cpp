@@ -36,9 +36,9 @@ void CentralDifference::save_state(StateArchive& a) const {
   a.put("external_force", f_ext_);
   a.put("reaction", reaction_);
   a.put("energies", stored_array(energy_fields(), energies_));
-  a.put("lagged_power", std::vector<double>{external_power_right_, viscous_power_, silent_power_right_,
-                                            damping_power_right_, viscous_power_right_, contact_power_right_,
-                                            contact_seconds_});
+  std::vector<double> lagged;
+  for (const double* member : lagged_members(*this)) lagged.push_back(*member);
+  a.put("lagged_power", lagged);
   a.put("momentum", std::vector<double>(momentum_, momentum_ + 3));
   a.put("material_work", std::vector<double>{plastic_work_, force_time_});
   for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
@@ -96,15 +96,10 @@ void CentralDifference::restore_state(const StateArchive& a) {
   a.get("external_force", f_ext_);
   a.get("reaction", reaction_);
   restore_array(energy_fields(), a.array("energies"), energies_, "the energy ledger");
-  std::vector<double> lagged(7);
+  const auto members = lagged_members(*this);
+  std::vector<double> lagged(members.size());
   a.get("lagged_power", lagged);
-  external_power_right_ = lagged[0];
-  viscous_power_ = lagged[1];
-  silent_power_right_ = lagged[2];
-  damping_power_right_ = lagged[3];
-  viscous_power_right_ = lagged[4];
-  contact_power_right_ = lagged[5];
-  contact_seconds_ = lagged[6];
+  for (std::size_t k = 0; k < members.size(); ++k) *members[k] = lagged[k];
   std::vector<double> p(3);
   a.get("momentum", p);
   for (int i = 0; i < 3; ++i) momentum_[i] = p[i];

@@ -67,7 +67,7 @@ std::span<const Field<contact::ContactTotals>> contact_total_fields() {
   return table;
 }
 
-// Restart order: 9 values per warning (message is made again from them). summary.json writes the
+// Restart order: 13 values per warning (message is made again from them). summary.json writes the
 // rows in this order, kind and message as strings and node 1-based (null: none).
 std::span<const Field<RunWarning>> warning_fields() {
   using W = RunWarning;

@@ -195,24 +195,29 @@ TEST(MortarContact, UniformPenetrationGivesConsistentNodalLoads) {
 }
 
 // A mass-scaled run (ContactManager::set_unscaled_penalty_reference, docs/theory.md 1.4.1): the mortar
-// k_A keeps the unscaled masses' and step's value, m_A,0 / dt_0^2, where that is below the cap
-// 2 m_A / dt^2 on the run's masses and step, and is the cap where it is not.
-TEST(MortarContact, MassScaledRunKeepsTheUnscaledPenaltyUpToTheCap) {
+// k_A keeps the unscaled masses' and step's value, s m_A,0 / dt_0^2, bounded by s m_A / dt^2 on the run's
+// masses and step (k_A dt^2 / m_A <= s; in a run the contact-node raise keeps the bound from binding).
+TEST(MortarContact, MassScaledRunKeepsTheUnscaledPenaltyUpToTheBound) {
   const double overlap = 0.01 * nm;
   Flats f = flats(overlap, 0.0, 3, 4, 5 * nm, Enforcement::mortar);
-  const auto pressure = [&](double unscaled_dt) {
-    // The manager's run step is 1e-15 s on masses 1e-24 kg; the reference masses are the same.
-    f.manager->set_unscaled_penalty_reference(f.mass, unscaled_dt);
+  const auto pressure = [&](const std::vector<double>& unscaled_mass, double unscaled_dt) {
+    // The manager's run step is 1e-15 s on masses f.mass.
+    f.manager->set_unscaled_penalty_reference(unscaled_mass, unscaled_dt);
     std::vector<double> force(f.mesh.coordinates.size(), 0.0);
     return f.manager->compute_forces(f.mesh.coordinates.data(), nullptr, force.data()).compressive_force / (100 * nm * nm);
   };
   const auto& slave = f.manager->surfaces()[0];
   const auto& master = f.manager->surfaces()[1];
   const double k_run = mortar_penalty_per_area(slave, master, f.mass, 1.0, 1e-15);
-  // The step grew by 1.3 over the unscaled one, the masses did not: k_A,0 = 1.69 k_A(run) < 2 k_A(run).
-  EXPECT_NEAR(pressure(1e-15 / 1.3) / (1.69 * k_run * overlap), 1.0, 1e-12);
-  // By 2: k_A,0 would be 4 k_A(run); the cap holds it at 2.
-  EXPECT_NEAR(pressure(1e-15 / 2.0) / (2.0 * k_run * overlap), 1.0, 1e-12);
+  // Masses raised by 1.69 with the step (the raise m >= (dt/dt_0)^2 m_0): k_A,0 = k_A(run), kept exactly.
+  std::vector<double> lighter = f.mass;
+  for (double& m : lighter) m /= 1.69;
+  EXPECT_NEAR(pressure(lighter, 1e-15 / 1.3) / (k_run * overlap), 1.0, 1e-12);
+  // Masses raised by 2.56 (more than the step asks): k_A,0 = (1.69 / 2.56) k_A(run), the unscaled value.
+  for (double& m : lighter) m *= 1.69 / 2.56;
+  EXPECT_NEAR(pressure(lighter, 1e-15 / 1.3) / (1.69 / 2.56 * k_run * overlap), 1.0, 1e-12);
+  // The step grew by 2, the masses did not: k_A,0 would be 4 k_A(run); the bound holds it at k_A(run).
+  EXPECT_NEAR(pressure(f.mass, 1e-15 / 2.0) / (k_run * overlap), 1.0, 1e-12);
 }
 
 // Node-to-face on the same pair, for contrast: the master loads are not the consistent ones.

@@ -96,7 +96,7 @@ TEST(OutputTables, ContactTotalsRestartArrayKeepsItsLayoutAndIntegers) {
   EXPECT_EQ(solver::stored_array(solver::contact_total_fields(), back), a);
 }
 
-TEST(OutputTables, WarningRestartRunIsNineValuesAndTheMessageIsNotKept) {
+TEST(OutputTables, WarningRestartRunIsThirteenValuesAndTheMessageIsNotKept) {
   solver::RunWarning w;
   w.kind = solver::WarningKind::contact_motion;
   w.step = 857;
@@ -107,10 +107,16 @@ TEST(OutputTables, WarningRestartRunIsNineValuesAndTheMessageIsNotKept) {
   w.max_step = 900;
   w.max_time = 7e-11;
   w.node = 515;
+  w.source = solver::EnergySource::contact;
+  w.source_change = -4.95e-19;
+  w.block = 2;
+  w.since_step = 800;
   w.message = "not kept";
   std::vector<double> flat;
   solver::append_stored(solver::warning_fields(), w, flat);
-  EXPECT_EQ(flat, (std::vector<double>{3, 857, 6.6e-11, 1.0 / 3.0, 0.5, 1.08, 900, 7e-11, 515}));
+  EXPECT_EQ(flat.size(), 13u);
+  EXPECT_EQ(std::vector<double>(flat.begin(), flat.begin() + 9),
+            (std::vector<double>{3, 857, 6.6e-11, 1.0 / 3.0, 0.5, 1.08, 900, 7e-11, 515}));
   solver::RunWarning back;
   solver::restore_stored(solver::warning_fields(), flat.data(), back);
   EXPECT_EQ(back.kind, solver::WarningKind::contact_motion);
@@ -118,6 +124,10 @@ TEST(OutputTables, WarningRestartRunIsNineValuesAndTheMessageIsNotKept) {
   EXPECT_EQ(back.max_step, 900);
   EXPECT_EQ(back.node, 515);
   EXPECT_EQ(back.value, 1.0 / 3.0);
+  EXPECT_EQ(back.source, solver::EnergySource::contact);
+  EXPECT_EQ(back.source_change, -4.95e-19);
+  EXPECT_EQ(back.block, 2);
+  EXPECT_EQ(back.since_step, 800);
   EXPECT_TRUE(back.message.empty());
 }
 
@@ -182,7 +192,7 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
        {"\"status\": \"numerical failure: element 8 \\\"inverted\\\"\",\n", "\"exit_code\": 3,\n", "\"steps\": 1234,\n",
         "\"final_time\": 0.125,\n", "\"deck_sha256\": null,\n", "\"total_wall_time_s\": null,\n",
         "\"initial_stable_time_step\": 0.0625,\n", "\"controlling_element\": 8,\n", "\"energy_unit\": \"J\",\n",
-        "{\"kind\": \"penetration\", \"step\": 10, \"time\": 0, ", "\"node\": null, \"source\": null, ", "\"since_step\": 0, \"message\": \"deep\"}",
+        "{\"kind\": \"penetration\", \"step\": 10, \"time\": 0, ", "\"node\": null, \"source\": null, \"source_change\": 0, \"block\": null, \"since_step\": 0, \"message\": \"deep\"}",
         "\"energies\": {\"kinetic\": 1.5, \"internal\": 0, ", "\"plastic_dissipation\": 0.25},\n",
         "\"units\": {\"steps\": \"count\", \"final_time\": \"s\", ", "\"energy_error\": \"-\", \"energies\": {\"kinetic\": \"J\", ",
         "\"warnings\": {\"step\": \"count\", \"time\": \"s\", ", "\"mass_scaling\": null,\n",
