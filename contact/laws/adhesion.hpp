@@ -26,8 +26,9 @@ struct Adhesion {
   // The default cut-off h_c = 20 z0 keeps 99.03 % of W (docs/theory.md 6.3; 5 z0 keeps 86.1 %, 10 z0 96.3 %).
   static constexpr double default_cutoff_in_z0 = 20.0;
   static constexpr double default_gap_tolerance_in_z0 = 0.05;
-  // W >= 0: W = 0 leaves the law's penalty contact alone, repulsive only (the W = 0 member of a sweep;
-  // tests/contact: the same history as `model = frictionless`).
+  // W >= 0: with W = 0 the traction sigma_a (docs/theory.md 6.1, proportional to W) vanishes and the
+  // penalty contact alone remains, repulsive only (the W = 0 member of a sweep; tests/params: the same
+  // history as `model = frictionless`, bit for bit).
   static constexpr KeyDecl work_key{"work of adhesion", "J/m^2", 0.0, false, true,
                                     "W of the Lennard-Jones adhesion law (0: no attraction, penalty contact only)"};
   static constexpr KeyDecl z0_key{"equilibrium separation", "m", 0.0, true, true, "z0 of the Lennard-Jones adhesion law"};
