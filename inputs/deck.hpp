@@ -27,6 +27,21 @@ struct SourceLocation {
   std::string str() const;  // "file:line:col"
 };
 
+/// A deck parameter `{NAME = EXPRESSION}` with its value (inputs/parameters.hpp).
+struct DeckParameter {
+  std::string name;
+  double value = 0.0;        // SI
+  std::string unit;          // SI unit text of its dimension ("m", "J/m^2"); "" when dimensionless
+  bool set_on_command_line = false;  // `--set NAME=...` replaced the deck's value
+  SourceLocation where;      // the definition line
+};
+
+/// One `--set NAME=EXPRESSION` of the command line (inputs/parameters.hpp).
+struct ParameterSetting {
+  std::string name;
+  std::string expression;
+};
+
 /// `begin function NAME` with `type = piecewise linear` and a `begin values` table (t, f(t)).
 /// Outside the table the function is held constant at its end values.
 struct FunctionSpec {
@@ -108,7 +123,9 @@ struct GeneratedAsperitySpec {
   bool paraboloid = false;  // `tip profile = paraboloid`: z = r^2/(2R) instead of the sphere
   std::optional<std::array<double, 3>> apex;  // `apex position`: where the apex goes, m (default (0, 0, gap))
   std::optional<double> gap_above_surface;    // m: tip lowered to this vertical gap over the `afm surface`
+  std::optional<std::array<double, 2>> fine_x_range;  // `fine x range`: the substrate's fine strip X0 X1, m
   SourceLocation where;
+  std::map<std::string, SourceLocation> key_where;  // the line of each key the deck gives (limit messages)
 };
 
 /// `begin afm surface` inside a finite element model: an all-hex substrate block whose top follows
@@ -387,6 +404,8 @@ struct Deck {
   ProcedureSpec procedure;
   /// The resolved deck, defaults filled in, in deck syntax: echoed to log.txt.
   std::string resolved_text;
+  /// `{NAME = ...}` parameters in definition order, with --set values applied (summary.json "parameters").
+  std::vector<DeckParameter> parameters;
 
   const FunctionSpec* find_function(const std::string& n) const;
   const MaterialSpec* find_material(const std::string& n) const;

@@ -285,6 +285,11 @@ class Builder {
       g.paraboloid = word(*a, "tip profile") == "paraboloid";
       if (auto v = get(*a, "apex position"); v && v->numbers.size() == 3) g.apex = {{v->numbers[0], v->numbers[1], v->numbers[2]}};
       g.gap_above_surface = optional_real(*a, "gap above surface");
+      if (auto v = get(*a, "fine x range"); v && v->numbers.size() == 2) g.fine_x_range = {{v->numbers[0], v->numbers[1]}};
+      for (const char* key : {"radius", "tip width", "tip height", "substrate width", "substrate depth", "gap", "element size",
+                              "fine half width", "fine depth", "fine x range", "grading ratio", "coating thickness",
+                              "coating layers", "symmetry"})
+        if (const KeyLine* k = a->find(key)) g.key_where[key] = k->where;
       if (g.gap_above_surface && (!g.tip_only || afm.empty()))
         error(where(*a, "gap above surface"), *a,
               "'gap above surface' places a tip over an 'afm surface': it needs 'substrate = none' and a 'begin afm "

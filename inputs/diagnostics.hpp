@@ -29,11 +29,13 @@ class DeckError : public std::runtime_error {
 };
 
 /// Parse and validate a deck file (following `include FILE` lines relative to the including
-/// file). Throws DeckError with every problem found.
-Deck parse_deck_file(const std::string& path);
+/// file). `settings` replace the values of the deck's parameters (`--set`; inputs/parameters.hpp).
+/// Throws DeckError with every problem found.
+Deck parse_deck_file(const std::string& path, const std::vector<ParameterSetting>& settings = {});
 
 /// The same for deck text already in memory; `file_name` is used in messages and to resolve
 /// relative paths (include, database name).
-Deck parse_deck_string(const std::string& text, const std::string& file_name);
+Deck parse_deck_string(const std::string& text, const std::string& file_name,
+                       const std::vector<ParameterSetting>& settings = {});
 
 }  // namespace tribex::inputs

@@ -100,7 +100,10 @@ std::string key_reference(const BlockSchema* block, bool markdown) {
   if (markdown)
     o << "# Deck key reference\n\nGenerated from the schema (inputs/schema.cpp) by `tribex keys --markdown`; do not edit:\n"
          "the CTest `keys_reference_current` fails when this file and the schema differ. Units: numbers take a unit\n"
-         "(`27 nm`, `0.1 J/m^2`); a plain number is SI. The blocks, in schema order:\n\n";
+         "(`27 nm`, `0.1 J/m^2`); a plain number is SI. Parameters: a line `{W = 0.05 J/m^2}` defines W, `{W}` or\n"
+         "`{2*W}` in a later value is replaced by its value (units and arithmetic `+ - * / ^ ( )`), and\n"
+         "`tribex run|check DECK --set W=0.06` replaces a definition's value (inputs/README.md, \"Parameters\").\n"
+         "The generated asperity's size limits: mesh/README.md, \"Asperity generator limits\". The blocks, in schema order:\n\n";
   for (const BlockSchema& b : all_block_schemas())
     if (!b.type.empty()) describe(o, b, markdown);
   return o.str();

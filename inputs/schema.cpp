@@ -210,6 +210,9 @@ std::vector<BlockSchema> build_table() {
                 real("element size", dim::length, positive(), true, "", "element size at the contact"),
                 real("fine half width", dim::length, positive(), false, "4 nm", "uniformly fine region |x|,|y|"),
                 real("fine depth", dim::length, positive(), false, "2 nm", "uniformly fine layers in z"),
+                reals("fine x range", dim::length, 2, Range{}, false, "",
+                      "X0 X1: the substrate's uniformly fine region along x, X0 <= 0 <= X1 from the apex axis "
+                      "(default -+fine half width): a strip as long as a slide, beyond the tip width"),
                 real("grading ratio", dim::none, {1.0, 2.0, false, false}, false, "1.25", "growth per element"),
                 real("coating thickness", dim::length, non_negative(), false, "0", "bonded coating (block coating)"),
                 integer("coating layers", at_least(1), false, "6", "elements through the coating"),
@@ -218,7 +221,8 @@ std::vector<BlockSchema> build_table() {
                 choice("substrate", ValueKind::enumeration, {"generated", "none"}, false, "generated",
                        "none: the tip only (block tip), e.g. above an 'afm surface' in the same model"),
                 reals("apex position", dim::length, 3, Range{}, false, "",
-                      "x y z of the apex (default 0 0 gap); the substrate top is then at z - gap"),
+                      "x y z of the apex (default 0 0 gap): moves the whole generated model (tip, substrate, "
+                      "coating, their sets) rigidly; the substrate top is then at z - gap, centred under the apex"),
                 real("gap above surface", dim::length, non_negative(), false, "",
                      "with substrate = none over an 'afm surface': lower the tip (apex x y from 'apex position', "
                      "its z not used) until its smallest vertical distance to the surface is this")},

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "mesh/asperity_limits.hpp"
 #include "mesh/box.hpp"
 #include "mesh/mesh_error.hpp"
 
@@ -66,6 +67,18 @@ std::vector<double> lateral_axis(double half, double h, double fine, double rati
   return quarter ? graded_axis(0.0, half, h, fine, ratio) : symmetric_axis(half, h, fine, ratio);
 }
 
+// The substrate's x axis with the fine region [X0, X1] (X0 <= 0 <= X1): fine spacing over it, graded
+// outward to +-half; a quarter model keeps x >= 0.
+std::vector<double> fine_range_axis(double half, double h, const std::array<double, 2>& range, double ratio, bool quarter) {
+  const std::vector<double> right = graded_axis(0.0, half, h, range[1], ratio);
+  if (quarter) return right;
+  const std::vector<double> left = graded_axis(0.0, half, h, -range[0], ratio);
+  std::vector<double> axis;
+  for (auto it = left.rbegin(); it != left.rend(); ++it) axis.push_back(-*it);
+  axis.insert(axis.end(), right.begin() + 1, right.end());
+  return axis;
+}
+
 // Quarter model: the x = 0 (y = 0) faces become node sets for the symmetry conditions; their side
 // sets go (they are not boundaries of the physical problem).
 void keep_symmetry_plane(Mesh& m, const std::string& prefix, const char* face, const std::string& to) {
@@ -106,34 +119,23 @@ std::vector<double> graded_axis(double lo, double hi, double h, double fine, dou
 }
 
 Mesh generate_asperity(const AsperitySpec& s) {
-  const std::string src = "asperity mesh: ";
-  auto require = [&](bool ok, const std::string& what) {
-    if (!ok) throw MeshError(src + what);
-  };
-  require(s.radius > 0 && s.element_size > 0 && s.tip_width > 0 && s.tip_height > 0 && s.substrate_width > 0 &&
-              s.substrate_depth > 0,
-          "radius, element size, tip and substrate sizes must be positive");
-  require(s.grading_ratio >= 1.0 && s.grading_ratio <= 2.0, "grading ratio must be in [1, 2]");
-  require(s.gap >= 0.0, "gap must be >= 0");
-  const double corner = s.tip_width / std::sqrt(2.0);
-  require(s.paraboloid || corner < 0.9 * s.radius, "tip width too large for the radius: the column corners (at " +
-                                       std::to_string(corner * 1e9) + " nm from the axis) must stay within 0.9 R; "
-                                       "reduce the tip width");
-  const double sag = tip_bottom_z(s, corner, 0.0) - s.gap;
-  require(sag < 0.5 * s.tip_height, "tip height too small for the curvature of its bottom face; make it at least " +
-                                        std::to_string(2 * sag * 1e9) + " nm");
-  require(s.fine_half_width < 0.5 * std::min(s.tip_width, s.substrate_width),
-          "fine half width must be below half the tip and substrate widths");
-  require(s.coating_thickness >= 0 && (s.coating_thickness == 0 || s.coating_layers >= 1),
-          "coating thickness must be >= 0 with at least one layer");
-  require(s.coating_thickness < s.substrate_depth, "the coating must be thinner than the substrate depth");
-  require(!(s.tip_only && s.quarter), "a tip-only asperity cannot be a quarter model (its symmetry planes need the substrate)");
+  if (const auto violations = asperity_limit_violations(s); !violations.empty()) {
+    std::string message;  // one line per violated limit (the deck set-up puts each at its key's line)
+    for (const auto& v : violations) {
+      if (!message.empty()) message += '\n';
+      message += "asperity mesh: '";
+      message += v.key;
+      message += "': ";
+      message += v.message;
+    }
+    throw MeshError(message);
+  }
 
   const double h = s.element_size, r = s.grading_ratio;
   // Substrate (and coating): z from -depth to 0, fine near the top.
   std::array<std::vector<double>, 3> sub_axes;
-  sub_axes[0] = lateral_axis(0.5 * s.substrate_width, h, s.fine_half_width, r, s.quarter);
-  sub_axes[1] = sub_axes[0];
+  sub_axes[1] = lateral_axis(0.5 * s.substrate_width, h, s.fine_half_width, r, s.quarter);
+  sub_axes[0] = s.fine_x_range ? fine_range_axis(0.5 * s.substrate_width, h, *s.fine_x_range, r, s.quarter) : sub_axes[1];
   std::vector<double> z;
   int coating_k = -1;  // first element layer of the coating
   if (s.coating_thickness > 0.0) {

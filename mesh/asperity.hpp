@@ -12,7 +12,7 @@
 //   +-------------------------+
 //
 // In x and y the spacing is `element_size` within |x|, |y| <= fine_half_width and grows by
-// `grading_ratio` per element beyond; in z it is `element_size` within fine_depth of the contact
+// `grading_ratio` per element beyond (the substrate in x: within fine_x_range when given); in z it is `element_size` within fine_depth of the contact
 // and grows likewise. Node sets of the same names as the side sets, plus `tip_axis_top` (the tip
 // top node on the axis) and `substrate_axis_bottom`.
 //
@@ -24,6 +24,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "mesh/mesh.hpp"
 
@@ -49,9 +50,13 @@ struct AsperitySpec {
   bool paraboloid = false;
   bool place_apex = false;          // translate the mesh so that the apex sits at `apex` (else at (0, 0, gap))
   std::array<double, 3> apex{};     // m; the substrate top, when there is one, is then at apex z - gap
+  // The substrate's uniformly fine region along x, X0 <= 0 <= X1 from the apex axis (default: +-fine_half_width;
+  // a quarter model uses X1 only): a strip as long as a slide, wider than the tip column allows.
+  std::optional<std::array<double, 2>> fine_x_range;
 };
 
-/// Throws MeshError for inconsistent sizes (naming the parameter and the fix).
+/// Throws MeshError for inconsistent sizes: every violated limit, one line each with the nearest
+/// valid value (asperity_limits.hpp).
 Mesh generate_asperity(const AsperitySpec& spec);
 
 /// Node coordinates on [lo, hi] with spacing h in [lo, lo + fine] growing by `ratio` per element

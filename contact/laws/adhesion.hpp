@@ -26,7 +26,11 @@ struct Adhesion {
   // The default cut-off h_c = 20 z0 keeps 99.03 % of W (docs/theory.md 6.3; 5 z0 keeps 86.1 %, 10 z0 96.3 %).
   static constexpr double default_cutoff_in_z0 = 20.0;
   static constexpr double default_gap_tolerance_in_z0 = 0.05;
-  static constexpr KeyDecl work_key{"work of adhesion", "J/m^2", 0.0, true, true, "W of the Lennard-Jones adhesion law"};
+  // W >= 0: with W = 0 the traction sigma_a (docs/theory.md 6.1, proportional to W) vanishes and the
+  // penalty contact alone remains, repulsive only (the W = 0 member of a sweep; tests/params: the same
+  // history as `model = frictionless`, bit for bit).
+  static constexpr KeyDecl work_key{"work of adhesion", "J/m^2", 0.0, false, true,
+                                    "W of the Lennard-Jones adhesion law (0: no attraction, penalty contact only)"};
   static constexpr KeyDecl z0_key{"equilibrium separation", "m", 0.0, true, true, "z0 of the Lennard-Jones adhesion law"};
   static constexpr KeyDecl cutoff_key{"adhesion cutoff", "m", 0.0, true, false,
                                      "cut-off separation h_c, measured like h = gap + z0, > z0 (default 20 z0: keeps 99 % of W)"};
@@ -53,12 +57,16 @@ struct Adhesion {
     return a;
   }
   std::string describe() const {
+    if (!(lj.work > 0.0))
+      return format_line("adhesion W = 0: no attraction, penalty contact only (z0 = %.4g m, cutoff h_c = %.4g m unused)",
+                         lj.z0, lj.cutoff);
     return format_line("adhesion W = %.4g J/m^2, z0 = %.4g m, cutoff h_c = %.4g m (%.3g z0%s), captured work %.4g "
                        "J/m^2 (%.2f %% of W), in contact when gap <= %.4g m",
                        lj.work, lj.z0, lj.cutoff, lj.cutoff / lj.z0, default_cutoff ? ", the default" : "",
                        captured_work(lj), 100.0 * captured_work(lj) / lj.work, gap_tolerance);
   }
-  double reach() const { return lj.capture_gap(); }
+  // W = 0 acts only through the penalty: no reach beyond it, so the search is frictionless contact's.
+  double reach() const { return lj.work > 0.0 ? lj.capture_gap() : 0.0; }
   const Adhesion* adhesion_part() const { return this; }
 
   /// The adhesion at a point: potential energy, in-contact bookkeeping for 0 <= g <= g_j (area

@@ -267,6 +267,15 @@ std::span<const Field<RunSummary>> summary_fields() {
              }
              return out + (s.rank_counts.empty() ? "]" : "\n  ]");
            }),
+      text("parameters",
+           "the deck's parameters {NAME = VALUE} in definition order, --set values applied, SI ({} without; "
+           "units: units.parameters; inputs/README.md, \"Parameters\")",
+           [](const R& s) {
+             std::string out = "{";
+             for (const inputs::DeckParameter& p : s.parameters)
+               out += (out.size() > 1 ? ", " : "") + json_string(p.name) + ": " + number(p.value);
+             return out + "}";
+           }),
   };
   return table;
 }

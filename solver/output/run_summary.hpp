@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "inputs/deck.hpp"
 #include "solver/energy.hpp"
 #include "solver/guards/run_warning.hpp"
 #include "solver/setup/mass_scaling.hpp"
@@ -39,6 +40,7 @@ struct RunSummary {
   std::vector<RunWarning> warnings;  // set-up and run guards (solver/guards/README.md), in the order raised
   MassScalingReport mass_scaling;    // `begin mass scaling` (inactive: summary.json null)
   std::vector<parallel::RankCounts> rank_counts;  // every rank's counts, in rank order (rank 0; others: empty)
+  std::vector<inputs::DeckParameter> parameters;  // the deck's {NAME = ...} with --set applied (SI)
 };
 
 }  // namespace tribex::solver

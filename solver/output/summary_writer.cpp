@@ -50,8 +50,13 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
   std::string text = "{\n";
   for (const Field<RunSummary>& k : summary_fields())
     text += "  \"" + std::string(k.name) + "\": " + (k.json ? k.json(s) : number(k.get(s))) + ",\n";
+  std::string parameter_units;  // "-" for a dimensionless parameter
+  for (const inputs::DeckParameter& p : s.parameters)
+    parameter_units += (parameter_units.empty() ? "" : ", ") + json_string(p.name) + ": " +
+                       json_string(p.unit.empty() ? "-" : p.unit);
   text += "  \"units\": {" + units(summary_fields()) + ", \"energies\": {" + units(energy_fields()) +
-          "}, \"warnings\": {" + units(warning_fields()) + "}, \"rank_counts\": {" + units(rank_count_fields()) + "}}\n}\n";
+          "}, \"warnings\": {" + units(warning_fields()) + "}, \"rank_counts\": {" + units(rank_count_fields()) +
+          "}, \"parameters\": {" + parameter_units + "}}\n}\n";
   // Written over the reserved blanks (reserve_summary_json) without truncating first, so that a full
   // disk needs no new block, then cut to its length; whole or not at all: a full disk keeps the
   // earlier summary.json (if any) and says so.

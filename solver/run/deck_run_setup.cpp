@@ -24,11 +24,19 @@ namespace tribex::solver {
 void DeckRun::preflight() {
   fault_signal_point("setup");
   summary_.identity = identify_run(deck_.path, ranks_);
+  summary_.parameters = deck_.parameters;
   // The run id: a resumed run keeps the one of the run that wrote its restart file.
   if (root_ && !options_.restart_path.empty()) restart_run_id_ = h5_run_id(options_.restart_path);
   if (root_) summary_.identity.run_id = restart_run_id_.empty() ? new_run_id() : restart_run_id_;
   if (ranks_ > 1) parallel::broadcast(summary_.identity.run_id, 0);
   log_.say(identity_line(summary_.identity));
+  if (!deck_.parameters.empty()) {  // inputs/README.md "Parameters"; summary.json "parameters"
+    std::string line = "parameters:";
+    for (const inputs::DeckParameter& p : deck_.parameters)
+      line += format(" %s = %.10g%s%s%s", p.name.c_str(), p.value, p.unit.empty() ? "" : " ", p.unit.c_str(),
+                     p.set_on_command_line ? " (--set)" : "") + (&p == &deck_.parameters.back() ? "" : ",");
+    log_.say(line);
+  }
   // Bad input is found here, before any file is written: one rank builds the whole model; in a
   // parallel run every rank builds its part (the same checks, an error stops every rank).
   if (ranks_ == 1) {

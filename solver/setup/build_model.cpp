@@ -9,6 +9,7 @@
 
 #include "inputs/did_you_mean.hpp"
 #include "mesh/asperity.hpp"
+#include "mesh/asperity_limits.hpp"
 #include "mesh/box.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/gmsh_io.hpp"
@@ -154,6 +155,22 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
       if (a.apex) {
         g.place_apex = true;
         g.apex = *a.apex;
+      }
+      g.fine_x_range = a.fine_x_range;
+      // Every violated size limit at once, each at its key's line (the block's when the key is a default).
+      if (const auto violations = mesh::asperity_limit_violations(g); !violations.empty()) {
+        std::string message;
+        for (const auto& v : violations) {
+          const auto it = a.key_where.find(v.key);
+          const bool given = it != a.key_where.end();
+          if (!message.empty()) message += '\n';
+          message += (given ? it->second : a.where).str();
+          message += ": error: asperity mesh: '";
+          message += v.key;
+          message += given ? "': " : "' (its default): ";
+          message += v.message;
+        }
+        throw SetupError(message);
       }
       try {
         const int first_tip_node = m.node_count();

@@ -35,7 +35,7 @@ void set_law(const inputs::InteractionSpec& it, contact::InteractionSettings& s,
   log(contact::describe(s.law));
   if (const contact::Adhesion* adhesion = contact::adhesion_of(s.law)) {
     const auto& lj = adhesion->lj;
-    const double kept = contact::captured_work(lj) / lj.work;
+    const double kept = lj.work > 0.0 ? contact::captured_work(lj) / lj.work : 1.0;  // W = 0: nothing to keep
     if (findings && kept < kept_work_warning) {
       RunWarning w;
       w.kind = WarningKind::adhesion_cutoff;

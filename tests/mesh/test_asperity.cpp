@@ -2,7 +2,8 @@
 // generate_asperity: the quarter model (symmetry = quarter) against the full one, the symmetry
 // node sets, the coating block (layers, thickness, bonded to the substrate), and a fine depth
 // smaller than the coating (no zero-thickness layer below it); the tip alone placed at an apex position
-// (substrate = none, apex position: the tip over an AFM surface); the paraboloid tip profile.
+// (substrate = none, apex position: the tip over an AFM surface); the paraboloid tip profile; every
+// violated limit at once with consistent nearest valid values; a fine strip along x longer than the tip.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <set>
 
 #include "mesh/asperity.hpp"
+#include "mesh/asperity_limits.hpp"
 #include "mesh/mesh_error.hpp"
 
 namespace tribex::mesh {
@@ -193,6 +195,116 @@ TEST(Asperity, TipOnlyQuarterModelIsRefused) {
   AsperitySpec s = coated(true);
   s.tip_only = true;
   EXPECT_THROW(generate_asperity(s), MeshError);
+}
+
+// R = 15 nm with the tip width, tip height and fine half width the user of issue 56 tried in turn.
+AsperitySpec three_limits_violated() {
+  AsperitySpec s;
+  s.radius = 15e-9;
+  s.tip_width = 30e-9;
+  s.tip_height = 3e-9;
+  s.substrate_width = 60e-9;
+  s.substrate_depth = 30e-9;
+  s.element_size = 1e-9;
+  s.fine_half_width = 12e-9;
+  return s;
+}
+
+// The nearest valid value a violation names, m.
+double nearest(const AsperityLimitViolation& v) {
+  const auto at = v.message.find("nearest valid: ");
+  EXPECT_NE(at, std::string::npos) << v.message;
+  return std::stod(v.message.substr(at + 15)) * 1e-9;
+}
+
+TEST(AsperityLimits, EveryViolatedLimitOnceWithTheNearestValidValue) {
+  AsperitySpec s = three_limits_violated();
+  const auto v = asperity_limit_violations(s);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_EQ(v[0].key, "tip width");
+  EXPECT_EQ(v[1].key, "tip height");
+  EXPECT_EQ(v[2].key, "fine half width");
+  // tip width < 0.9 sqrt(2) R = 19.09 nm -> 19 nm; tip height > 2 (R - sqrt(R^2 - w^2/2)) = 16.66 nm for w = 19 nm
+  // -> 16.7 nm; fine half width < w/2 = 9.5 nm -> 9.49 nm.
+  EXPECT_DOUBLE_EQ(nearest(v[0]), 19e-9);
+  EXPECT_NEAR(2 * asperity_corner_sag(s, 19e-9), 2 * (15e-9 - std::sqrt(225e-18 - 0.5 * 361e-18)), 1e-14 * 16.66e-9);
+  EXPECT_DOUBLE_EQ(nearest(v[1]), 16.7e-9);
+  EXPECT_DOUBLE_EQ(nearest(v[2]), 9.49e-9);
+  try {
+    generate_asperity(s);
+    FAIL() << "meshed";
+  } catch (const MeshError& e) {  // one line per violation
+    const std::string what = e.what();
+    EXPECT_EQ(std::count(what.begin(), what.end(), '\n'), 2) << what;
+  }
+  // The suggestions taken together mesh.
+  s.tip_width = nearest(v[0]);
+  s.tip_height = nearest(v[1]);
+  s.fine_half_width = nearest(v[2]);
+  EXPECT_TRUE(asperity_limit_violations(s).empty());
+  EXPECT_NO_THROW(generate_asperity(s));
+}
+
+TEST(AsperityLimits, FineXRangeOutsideTheSubstrateAndOnATipOnlyModel) {
+  AsperitySpec s = three_limits_violated();
+  s.tip_width = 18e-9;
+  s.tip_height = 20e-9;
+  s.fine_half_width = 4e-9;
+  s.fine_x_range = {{2e-9, 31e-9}};  // X0 > 0, X1 beyond substrate width / 2 = 30 nm
+  const auto v = asperity_limit_violations(s);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_EQ(v[0].key, "fine x range");
+  EXPECT_NE(v[0].message.find("nearest valid: 0 nm"), std::string::npos) << v[0].message;
+  EXPECT_NE(v[1].message.find("nearest valid: 29.9 nm"), std::string::npos) << v[1].message;
+  s.fine_x_range = {{-4e-9, 20e-9}};
+  s.tip_only = true;
+  ASSERT_EQ(asperity_limit_violations(s).size(), 1u);
+}
+
+// A slide of 16 nm on R = 15 nm: the substrate's fine strip -4 nm <= x <= 20 nm, far beyond the tip
+// column (18 nm wide) that caps the fine half width near 9 nm; every element in it is as asked.
+TEST(AsperityLimits, FineXRangeLongerThanTheTipMeshesWithTheAskedElementSize) {
+  AsperitySpec s = three_limits_violated();
+  s.tip_width = 18e-9;
+  s.tip_height = 20e-9;
+  s.fine_half_width = 4e-9;
+  s.element_size = 0.5e-9;
+  s.fine_x_range = {{-4e-9, 20e-9}};
+  const Mesh m = generate_asperity(s);
+  std::set<double> xs, ys;
+  for (int n : m.node_sets.at("substrate_top")) {
+    xs.insert(m.coordinates[3 * n]);
+    ys.insert(m.coordinates[3 * n + 1]);
+  }
+  const std::vector<double> x(xs.begin(), xs.end()), y(ys.begin(), ys.end());
+  int fine = 0;
+  double largest_outside = 0.0;
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    const double h = x[i] - x[i - 1];
+    if (x[i - 1] >= -4e-9 - 1e-15 && x[i] <= 20e-9 + 1e-15) {
+      EXPECT_NEAR(h, 0.5e-9, 1e-15) << "between x = " << x[i - 1] << " and " << x[i];
+      ++fine;
+    } else {
+      EXPECT_GT(h, 0.5e-9 * (1 + 1e-9)) << "outside the strip at x = " << x[i];  // graded beyond it
+      largest_outside = std::max(largest_outside, h);
+    }
+  }
+  EXPECT_EQ(fine, 48);  // 24 nm / 0.5 nm
+  EXPECT_DOUBLE_EQ(x.front(), -30e-9);
+  EXPECT_DOUBLE_EQ(x.back(), 30e-9);
+  // y keeps the fine half width: fine for |y| <= 4 nm only.
+  int fine_y = 0;
+  for (std::size_t i = 1; i < y.size(); ++i)
+    if (std::fabs(y[i] - y[i - 1] - 0.5e-9) < 1e-15) ++fine_y;
+  EXPECT_EQ(fine_y, 16);
+  // The tip column keeps its own fine square: |x| <= 4 nm at 0.5 nm.
+  std::set<double> tip_x;
+  for (int n : m.node_sets.at("tip_top")) tip_x.insert(m.coordinates[3 * n]);
+  int tip_fine = 0;
+  for (auto it = std::next(tip_x.begin()); it != tip_x.end(); ++it)
+    if (std::fabs(*it - *std::prev(it) - 0.5e-9) < 1e-15) ++tip_fine;
+  EXPECT_EQ(tip_fine, 16);
+  EXPECT_GT(largest_outside, 0.5e-9);
 }
 
 }  // namespace

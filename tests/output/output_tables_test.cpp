@@ -172,6 +172,7 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
   c.contact_pairs = 10;
   c.peak_rss_bytes = 1 << 20;
   s.rank_counts = {c};
+  s.parameters = {{"W", 0.06, "J/m^2", true, {}}, {"n", 3, "", false, {}}};  // deck parameters (--set W=0.06)
   solver::write_summary_json((dir / "summary.json").string(), s);
   const std::string text = read_file(dir / "summary.json");
 
@@ -186,7 +187,7 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
                                             "total_loop_time_s", "contact_time_s", "contact_balance", "ranks",
                                             "communication_time_s", "initial_stable_time_step", "controlling_element",
                                             "energy_error", "energy_unit", "warnings", "energies", "mass_scaling",
-                                            "rank_counts", "units"}));
+                                            "rank_counts", "parameters", "units"}));
   for (const char* expected :
        {"\"status\": \"numerical failure: element 8 \\\"inverted\\\"\",\n", "\"exit_code\": 3,\n", "\"steps\": 1234,\n",
         "\"final_time\": 0.125,\n", "\"deck_sha256\": null,\n", "\"total_wall_time_s\": null,\n",
@@ -198,7 +199,8 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
         "\"rank_counts\": [\n    {\"rank\": 1, \"elements\": 20, \"nodes\": 0, ",
         "\"halo_bytes_sent_per_step\": 24, \"halo_bytes_received_per_step\": 0, ",
         "\"contact_pairs_per_step\": 2.5, \"contact_evaluations\": 4, ", "\"peak_rss_bytes\": 1048576}\n  ],\n",
-        "\"rank_counts\": {\"rank\": \"-\", \"elements\": \"count\", ", "\"peak_rss_bytes\": \"B\"}}\n}\n"})
+        "\"rank_counts\": {\"rank\": \"-\", \"elements\": \"count\", ", "\"peak_rss_bytes\": \"B\"}, \"parameters\": {\"W\": \"J/m^2\", \"n\": \"-\"}}\n}\n",
+        "\"parameters\": {\"W\": 0.059999999999999998, \"n\": 3},\n"})
     EXPECT_NE(text.find(expected), std::string::npos) << "summary.json lacks " << expected << "\n" << text;
   EXPECT_EQ(text.substr(text.size() - 5), "}}\n}\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json.tmp"));

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "inputs/diagnostics.hpp"
+#include "inputs/parameters.hpp"
 #include "solver/output/history_columns.hpp"
 #include "solver/output/output_tables.hpp"
 #include "solver/run/run.hpp"
@@ -15,7 +16,7 @@ namespace {
 
 const char* run_usage =
     "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE [--restart-allow-changed]] [--stop-at-step N]\n"
-    "           [--heartbeat SECONDS]\n"
+    "           [--heartbeat SECONDS] [--set NAME=VALUE ...]\n"
     "tribex run --list-columns | --list-summary-keys\n"
     "  Runs an input deck. Outputs go to OUTDIR (default ./<deck name>_output): history.csv,\n"
     "  results.h5 + results.xdmf (open the .xdmf in ParaView), summary.json, log.txt.\n"
@@ -28,6 +29,8 @@ const char* run_usage =
     "  --heartbeat SECONDS  when stdout is not a terminal (batch job, pipe, file): a progress line\n"
     "            (step, time, percent, ETA, dt, energy error) to stdout and log.txt this often\n"
     "            (wall time, default 60; 0: none; with --quiet to log.txt only)\n"
+    "  --set NAME=VALUE replace the value of the deck's parameter {NAME = ...} (repeatable; VALUE an\n"
+    "            expression with units, a plain number is SI: --set W=0.06, --set \"R=20 nm\"; inputs/README.md)\n"
     "  --list-columns   print every column history.csv can have, with its unit and definition\n"
     "            (history_columns.csv beside each history.csv lists a run's own), and exit\n"
     "  --list-summary-keys   print every key of summary.json (energies.NAME, warnings[].NAME,\n"
@@ -35,9 +38,10 @@ const char* run_usage =
     "  Exit codes: 0 ok, 2 bad input, 3 numerical failure, 130 interrupted (outputs valid).\n";
 
 const char* check_usage =
-    "tribex check DECK\n"
+    "tribex check DECK [--set NAME=VALUE ...]\n"
     "  Validates a deck and its mesh without running: prints the blocks, element and node counts,\n"
-    "  materials, the stable time step and the element that controls it. Writes nothing.\n";
+    "  materials, the deck's parameters, the stable time step and the element that controls it.\n"
+    "  Writes nothing. --set as for tribex run (a deck check accepts with them, run sets up).\n";
 
 // A second positional argument is refused, not ignored (one deck per run or check).
 void one_deck(tools::Args& args, const char* command) {
@@ -52,6 +56,18 @@ void print_fields(const std::string& prefix, std::span<const solver::Field<T>> t
   for (const auto& f : table)
     std::printf("%-36s %-7s %s\n", (prefix + std::string(f.name)).c_str(), std::string(f.unit).c_str(),
                 std::string(f.definition).c_str());
+}
+
+// Every `--set NAME=VALUE`, in order.
+std::vector<inputs::ParameterSetting> parameter_settings(tools::Args& args, const char* command) {
+  std::vector<inputs::ParameterSetting> out;
+  for (const std::string& text : args.texts("--set")) {
+    std::string error;
+    const auto s = inputs::parse_parameter_setting(text, &error);
+    if (!s) throw tools::BadInput(std::string(command) + ": " + error);
+    out.push_back(*s);
+  }
+  return out;
 }
 
 bool args_has_stop(const std::vector<std::string>& argv) {
@@ -88,13 +104,14 @@ int run_command(const std::vector<std::string>& argv) {
   const bool allow_changed = args.flag("--restart-allow-changed");
   const long stop_at = args.integer("--stop-at-step", -1);
   const double heartbeat = args.real("--heartbeat", 60.0);
+  const auto settings = parameter_settings(args, "tribex run");
   args.finish();
   one_deck(args, "tribex run");
   if (stop_at < 0 && args_has_stop(argv))
     throw tools::BadInput("tribex run: option --stop-at-step expects a step number >= 0, got " + std::to_string(stop_at));
   if (!(heartbeat >= 0.0))
     throw tools::BadInput("tribex run: option --heartbeat expects a number of seconds >= 0 (0 turns the heartbeat off)");
-  const inputs::Deck deck = inputs::parse_deck_file(deck_path);
+  const inputs::Deck deck = inputs::parse_deck_file(deck_path, settings);
   solver::RunOptions options;
   options.quiet = quiet;
   if (restart) options.restart_path = *restart;
@@ -109,9 +126,10 @@ int check_command(const std::vector<std::string>& argv) {
   tools::Args args(argv, "tribex check", check_usage);
   if (args.answered_help()) return tools::exit_ok;
   const std::string deck_path = args.positional(0, "DECK");
+  const auto settings = parameter_settings(args, "tribex check");
   args.finish();
   one_deck(args, "tribex check");
-  const inputs::Deck deck = inputs::parse_deck_file(deck_path);
+  const inputs::Deck deck = inputs::parse_deck_file(deck_path, settings);
   std::printf("deck %s: %zu material(s), %zu section(s), %zu function(s)\n", deck_path.c_str(),
               deck.materials.size(), deck.sections.size(), deck.functions.size());
   for (const auto& m : deck.materials)

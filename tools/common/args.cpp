@@ -27,6 +27,7 @@ Args::Args(std::vector<std::string> argv, std::string command, std::string usage
       } else {
         options_[a] = std::nullopt;
       }
+      in_order_.emplace_back(eq != std::string::npos ? a.substr(0, eq) : a, options_[eq != std::string::npos ? a.substr(0, eq) : a]);
     } else if (a == "-o") {  // a trailing -o with no folder is an error of take(), not a positional
       options_["-o"] = i + 1 < argv.size() ? std::optional<std::string>(argv[++i]) : std::nullopt;
     } else {
@@ -52,6 +53,17 @@ std::optional<std::string> Args::take(const std::string& name, bool is_flag) {
 bool Args::flag(const std::string& name) { return take(name, true).has_value(); }
 
 std::optional<std::string> Args::text(const std::string& name) { return take(name, false); }
+
+std::vector<std::string> Args::texts(const std::string& name) {
+  std::vector<std::string> out;
+  if (!take(name, false)) return out;  // also: a bare `--x` with no value is refused
+  for (const auto& [option, value] : in_order_) {
+    if (option != name) continue;
+    if (!value) throw BadInput(command_ + ": option " + name + " needs a value (see --help)");
+    out.push_back(*value);
+  }
+  return out;
+}
 
 std::string Args::text(const std::string& name, const std::string& fallback) {
   auto v = take(name, false);

@@ -34,6 +34,8 @@ class Args {
 
   bool flag(const std::string& name);
   std::optional<std::string> text(const std::string& name);
+  /// Every value of an option that may be repeated (`--set A=1 --set B=2`), in command-line order.
+  std::vector<std::string> texts(const std::string& name);
   std::string text(const std::string& name, const std::string& fallback);
   double real(const std::string& name, double fallback);
   std::optional<double> real(const std::string& name);
@@ -58,7 +60,8 @@ class Args {
   std::string usage_;
   bool help_ = false;
   std::vector<std::string> positionals_;
-  std::map<std::string, std::optional<std::string>> options_;  // value empty for bare `--x`
+  std::map<std::string, std::optional<std::string>> options_;  // value empty for bare `--x` (the last when repeated)
+  std::vector<std::pair<std::string, std::optional<std::string>>> in_order_;  // every option as given
   std::set<std::string> known_;
   std::set<std::string> flags_;
 };
