@@ -7,6 +7,7 @@
 
 #include "inputs/declared_keys.hpp"
 #include "inputs/lexer.hpp"
+#include "inputs/result_fields.hpp"
 
 namespace tribex::inputs {
 namespace {
@@ -411,13 +412,12 @@ std::vector<BlockSchema> build_table() {
   {
     BlockSchema results{"results output", NameRule::required, {}, {}, true, output_schedule(), {}, false,
                         "results.h5 + results.xdmf and/or results.exo"};
-    results.keys.push_back(choice("nodal variables", ValueKind::enumerations,
-                                  {"displacement", "velocity", "force", "acceleration", "contact_traction",
-                                   "contact_status"},
-                                  false, "", "nodal fields"));
-    results.keys.push_back(
-        choice("element variables", ValueKind::enumerations, {"stress", "equivalent_plastic_strain"}, false, "",
-               "element fields: Cauchy stress (Pa); equivalent plastic strain (J2 plasticity, element mean)"));
+    // The allowed fields are the rows of the result-field table (result_fields.hpp).
+    results.keys.push_back(choice("nodal variables", ValueKind::enumerations, result_field_names(FieldKind::nodal),
+                                  false, "", "nodal fields (`tribex run --list-fields`: unit and definition)"));
+    results.keys.push_back(choice("element variables", ValueKind::enumerations,
+                                  result_field_names(FieldKind::element), false, "",
+                                  "element fields (`tribex run --list-fields`: unit and definition)"));
     results.keys.push_back(choice("format", ValueKind::enumeration, {"xdmf", "exodus", "both"}, false, "xdmf",
                                   "xdmf: results.h5 + results.xdmf; exodus: results.exo (Exodus II, with the history "
                                   "columns as global variables); both"));
