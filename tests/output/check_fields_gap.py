@@ -1,0 +1,54 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""The gap and contact_pressure result fields on two blocks held 1 nm apart (fields_gap.i).
+
+Runs `TRIBEX run DECK -o OUT`, then checks results.h5 (exit 1 on failure, one line per check):
+  * `gap` equals the set separation, 1 nm, on the 16 slave nodes (upper_zmin, z = 6 nm) within
+    1e-12 nm, and is NaN on every other node (the master's included: one pass);
+  * `contact_pressure` and `contact_status` are 0 everywhere (no node touches), `von_mises` 0
+    (nothing loaded);
+  * the units: `gap` in the file's length unit (the deck's `length unit = nm`), pressure in Pa.
+
+usage: check_fields_gap.py TRIBEX DECK OUT
+"""
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+
+def main():
+    tribex, deck, out = sys.argv[1:4]
+    subprocess.run([tribex, "run", deck, "-o", out, "--quiet"], check=True)
+    problems = []
+    with h5py.File(f"{out}/results.h5", "r") as h:
+        step = h["steps"][sorted(h["steps"])[-1]]
+        z = h["mesh/coordinates"][:, 2]
+        gap, pressure = step["nodal/gap"], step["nodal/contact_pressure"]
+        g, p = gap[:], pressure[:]
+        slave = np.abs(z - 6.0) < 1e-9
+        err = np.abs(g[slave] - 1.0).max()
+        print(f"gap on the {slave.sum()} slave nodes: {g[slave].min():.15f} .. {g[slave].max():.15f} nm, "
+              f"largest |gap - 1 nm| {err:.1e} nm (tolerance 1e-12)")
+        if slave.sum() != 16 or not err < 1e-12:
+            problems.append("gap differs from the 1 nm separation")
+        if not np.all(np.isnan(g[~slave])):
+            problems.append(f"{np.isfinite(g[~slave]).sum()} nodes off the slave surface have a gap (expected NaN)")
+        for name, values in (("contact_pressure", p), ("contact_status", step["nodal/contact_status"][:]),
+                             ("von_mises", step["element/von_mises"][:])):
+            print(f"{name}: largest |value| {np.abs(values).max():.1e} (expected 0)")
+            if np.abs(values).max() != 0.0:
+                problems.append(f"{name} is not 0")
+        units = (gap.attrs["units"].decode(), pressure.attrs["units"].decode(), h.attrs["length_unit"].decode())
+        print(f"units: gap {units[0]}, contact_pressure {units[1]}, file length unit {units[2]}")
+        if units != ("nm", "Pa", "nm"):
+            problems.append(f"units {units}, expected ('nm', 'Pa', 'nm')")
+    for p in problems:
+        print("FAIL:", p)
+    print("PASS" if not problems else "FAIL")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
