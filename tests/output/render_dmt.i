@@ -101,7 +101,7 @@ begin sierra render_dmt
       end history output hist
       begin results output fields
         time increment = 5 ps
-        nodal variables = displacement contact_traction contact_status
+        nodal variables = displacement contact_traction contact_status contact_pressure
         element variables = stress
       end results output fields
     end presto region main
