@@ -7,7 +7,10 @@ Runs `TRIBEX run DECK -o OUT`, then checks results.h5 (exit 1 on failure, one li
     1e-12 nm, and is NaN on every other node (the master's included: one pass);
   * `contact_pressure` and `contact_status` are 0 everywhere (no node touches), `von_mises` 0
     (nothing loaded);
-  * the units: `gap` in the file's length unit (the deck's `length unit = nm`), pressure in Pa.
+  * the units: `gap` in the file's length unit (the deck's `length unit = nm`), pressure in Pa;
+  * results.exo (issue 56 scope 4): its first info record "tribex length unit: nm", the coordinates
+    in nm (the slave face at z = 6), the variables `gap` (= 1 there, NaN elsewhere),
+    `contact_pressure` and `von_mises` by those names.
 
 usage: check_fields_gap.py TRIBEX DECK OUT
 """
@@ -15,6 +18,7 @@ import subprocess
 import sys
 
 import h5py
+import netCDF4
 import numpy as np
 
 
@@ -44,6 +48,20 @@ def main():
         print(f"units: gap {units[0]}, contact_pressure {units[1]}, file length unit {units[2]}")
         if units != ("nm", "Pa", "nm"):
             problems.append(f"units {units}, expected ('nm', 'Pa', 'nm')")
+    with netCDF4.Dataset(f"{out}/results.exo") as exo:
+        text = lambda var: ["".join(c.decode() for c in row if c not in (b"", b"\x00")).strip()  # noqa: E731
+                            for row in exo.variables[var][:].data]
+        info, nodal, element = text("info_records"), text("name_nod_var"), text("name_elem_var")
+        z = exo.variables["coordz"][:].data
+        g = exo.variables[f"vals_nod_var{nodal.index('gap') + 1}"][-1, :].data if "gap" in nodal else None
+        top = np.abs(z - 6.0) < 1e-9
+        print(f"results.exo: info {info[:1]}, nodal {nodal}, element {element}, slave nodes at z = 6 nm: {top.sum()}")
+        if not info or info[0] != "tribex length unit: nm" or top.sum() != 16:
+            problems.append("results.exo is not in nm or does not say so first in its info records")
+        if g is None or "contact_pressure" not in nodal or "von_mises" not in element:
+            problems.append("results.exo lacks gap, contact_pressure or von_mises")
+        elif not (np.abs(g[top] - 1.0).max() < 1e-12 and np.all(np.isnan(g[~top]))):
+            problems.append("results.exo's gap is not 1 nm on the slave nodes and NaN elsewhere")
     for p in problems:
         print("FAIL:", p)
     print("PASS" if not problems else "FAIL")
