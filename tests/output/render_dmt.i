@@ -102,7 +102,8 @@ begin sierra render_dmt
       begin results output fields
         time increment = 5 ps
         nodal variables = displacement contact_traction contact_status contact_pressure
-        element variables = stress
+        element variables = stress von_mises
+        format = both
       end results output fields
     end presto region main
   end presto procedure indent
