@@ -125,7 +125,87 @@ def slave_block(h5_path, step):
     return (best[0], best[2]) if best else (None, True)
 
 
-def main():
+def cut_for_view(source, view_kind, centre, h5_path, k):
+    """(the filtered source, seen from below?): contact, the half body y >= y_c (its cut face seen from
+    -y, x to the right); top, the block holding the slave nodes in contact (from below when it is the
+    upper one); whole, the source as it is."""
+    if view_kind == "contact":
+        clip = Clip(Input=source)
+        clip.ClipType = "Plane"
+        clip.ClipType.Origin = list(centre)
+        clip.ClipType.Normal = [0.0, 1.0, 0.0]
+        clip.Invert = 0
+        return clip, False
+    if view_kind == "top":
+        block, below = slave_block(h5_path, k)
+        if block is not None:
+            only = Threshold(Input=source)  # the slave block alone: its contact face unhidden
+            only.Scalars = ["CELLS", "block_id"]
+            only.LowerThreshold = only.UpperThreshold = block
+            source = only
+        return source, not below
+    return source, False
+
+
+def frame(view, view_kind, centre, radius, extent, from_below):
+    """The camera. Contact and top views: framed on the contact region (half height 3 contact radii,
+    at least 8 % of the model); right-handed screens: seen from -y with z up, from +z with y up, from
+    -z with y down, so x points right in each. Whole: an oblique view from the front-right, z up."""
+    view.CameraViewUp = [0, 0, 1]
+    if view_kind in ("contact", "top"):
+        view.CameraParallelProjection = 1
+        view.CameraFocalPoint = list(centre)
+        if view_kind == "contact":
+            view.CameraPosition = [centre[0], centre[1] - 4.0 * extent, centre[2]]
+        else:
+            view.CameraPosition = [centre[0], centre[1], centre[2] + (-4.0 if from_below else 4.0) * extent]
+            view.CameraViewUp = [0, -1, 0] if from_below else [0, 1, 0]
+        view.CameraParallelScale = builtins.max(3.0 * radius, 0.08 * extent)
+    else:
+        view.CameraPosition = [1, -1.6, 1.2]
+        view.ResetCamera()
+
+
+def colour(display, view, source, array, component_arg, field, field_unit, where):
+    """Colours `display` by `array` (association, name) with Viridis and a titled colour bar (unit,
+    range); returns (bar, lo, hi)."""
+    association, colour_name = array
+    array_info = (source.PointData if association == "POINTS" else source.CellData).GetArray(colour_name)
+    if array_info is None:
+        sys.exit(f"error: {where}: field '{colour_name}' not found")
+    if array_info.GetNumberOfComponents() == 1:
+        ColorBy(display, (association, colour_name))
+        component = None
+    elif component_arg == "Magnitude":
+        ColorBy(display, (association, colour_name, "Magnitude"))
+        component = -1
+    else:
+        component = int(component_arg)
+        ColorBy(display, (association, colour_name, str(component)))
+    lo, hi = array_info.GetRange(-1 if component is None else component)
+    lut = GetColorTransferFunction(colour_name)
+    lut.ApplyPreset("Viridis (matplotlib)", True)
+    if component is not None and component >= 0:
+        lut.VectorMode, lut.VectorComponent = "Component", component
+    display.RescaleTransferFunctionToDataRange(False, True)
+    if component == -1 or component is None:
+        lo, hi = lut.RGBPoints[0], lut.RGBPoints[-4]
+    display.SetScalarBarVisibility(view, True)
+    bar = GetScalarBar(lut, view)
+    title = "von Mises stress" if field == "von_mises" else field.replace("_", " ")
+    what = "" if component is None else (" magnitude" if component == -1 else f" component {component}")
+    bar.Title = title + what + (f" [{field_unit}]" if field_unit and field_unit != "1" else "")
+    bar.ComponentTitle = ""  # else ParaView appends "Magnitude" or the component index
+    bar.RangeLabelFormat = "%-#.3g"
+    bar.LabelFormat = "%-#.3g"
+    bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+    bar.TitleFontSize, bar.LabelFontSize = 18, 16
+    bar.ScalarBarLength = 0.4
+    bar.WindowLocation = "Upper Right Corner"  # in the contact view the gap beside the tip stays white there
+    return bar, lo, hi
+
+
+def parse_args():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("xdmf", help="results.xdmf written by tribex (any path; made absolute)")
     p.add_argument("field", nargs="?", help="field to colour by (default von_mises, or displacement)")
@@ -139,7 +219,11 @@ def main():
     p.add_argument("--warp", type=float, default=1.0, help="displacement scale of the deformed shape (0: undeformed)")
     p.add_argument("--edges", action="store_true", help="draw the element edges")
     p.add_argument("--size", default="1024x768", help="image size WxH in pixels")
-    a = p.parse_args()
+    return p.parse_args()
+
+
+def main():
+    a = parse_args()
 
     path = os.path.abspath(a.xdmf)  # Xdmf readers resolve the .h5 wrongly from a bare name
     if not os.path.isfile(path):
@@ -220,23 +304,7 @@ def main():
     if view_kind in ("contact", "top") and centre is None:
         sys.exit(f"error: --view {view_kind}: step {k} has no node in contact")
 
-    if view_kind == "contact":
-        # The half body y >= y_c, seen from -y: its cut face shows the field inside, x to the right.
-        clip = Clip(Input=source)
-        clip.ClipType = "Plane"
-        clip.ClipType.Origin = list(centre)
-        clip.ClipType.Normal = [0.0, 1.0, 0.0]
-        clip.Invert = 0
-        source = clip
-    from_below = False
-    if view_kind == "top":
-        block, below = slave_block(h5_path, k)
-        from_below = not below
-        if block is not None:
-            only = Threshold(Input=source)  # the slave block alone: its contact face unhidden
-            only.Scalars = ["CELLS", "block_id"]
-            only.LowerThreshold = only.UpperThreshold = block
-            source = only
+    source, from_below = cut_for_view(source, view_kind, centre, h5_path, k)
 
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [width, height]
@@ -250,56 +318,11 @@ def main():
     display = Show(source, view)
     display.SetRepresentationType("Surface With Edges" if a.edges else "Surface")
     source.UpdatePipeline(t)
-    array_info = (source.PointData if association == "POINTS" else source.CellData).GetArray(colour_name)
-    if array_info is None:
-        sys.exit(f"error: {path}: field '{colour_name}' not found at step {k}")
-    if array_info.GetNumberOfComponents() == 1:
-        ColorBy(display, (association, colour_name))
-        component = None
-    elif a.component == "Magnitude":
-        ColorBy(display, (association, colour_name, "Magnitude"))
-        component = -1
-    else:
-        component = int(a.component)
-        ColorBy(display, (association, colour_name, str(component)))
-    lo, hi = array_info.GetRange(-1 if component is None else component)
-    lut = GetColorTransferFunction(colour_name)
-    lut.ApplyPreset("Viridis (matplotlib)", True)
-    if component is not None and component >= 0:
-        lut.VectorMode, lut.VectorComponent = "Component", component
-    display.RescaleTransferFunctionToDataRange(False, True)
-    if component == -1 or component is None:
-        lo, hi = lut.RGBPoints[0], lut.RGBPoints[-4]
-    display.SetScalarBarVisibility(view, True)
-    bar = GetScalarBar(lut, view)
-    title = "von Mises stress" if field == "von_mises" else field.replace("_", " ")
-    what = "" if component is None else (" magnitude" if component == -1 else f" component {component}")
-    bar.Title = title + what + (f" [{field_unit}]" if field_unit and field_unit != "1" else "")
-    bar.ComponentTitle = ""  # else ParaView appends "Magnitude" or the component index
-    bar.RangeLabelFormat = "%-#.3g"
-    bar.LabelFormat = "%-#.3g"
-    bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
-    bar.TitleFontSize, bar.LabelFontSize = 18, 16
-    bar.ScalarBarLength = 0.4
-    bar.WindowLocation = "Upper Right Corner"  # in the contact view the gap beside the tip stays white there
+    bar, lo, hi = colour(display, view, source, (association, colour_name), a.component, field, field_unit,
+                         f"{path} at step {k}")
 
     Render(view)  # the first render resets the camera: frame the picture after it
-    view.CameraViewUp = [0, 0, 1]
-    if view_kind in ("contact", "top"):
-        # Framed on the contact region: half height 3 contact radii, at least 8 % of the model.
-        # Right-handed screens: seen from -y with z up, from +z with y up, from -z with y down: x right.
-        half = builtins.max(3.0 * radius, 0.08 * extent)
-        view.CameraParallelProjection = 1
-        view.CameraFocalPoint = list(centre)
-        if view_kind == "contact":
-            view.CameraPosition = [centre[0], centre[1] - 4.0 * extent, centre[2]]
-        else:
-            view.CameraPosition = [centre[0], centre[1], centre[2] + (-4.0 if from_below else 4.0) * extent]
-            view.CameraViewUp = [0, -1, 0] if from_below else [0, 1, 0]
-        view.CameraParallelScale = half
-    else:
-        view.CameraPosition = [1, -1.6, 1.2]  # an oblique view from the front-right, z up
-        view.ResetCamera()
+    frame(view, view_kind, centre, radius, extent, from_below)
     Render(view)
     SaveScreenshot(a.png, view, ImageResolution=[width, height], TransparentBackground=0)
     info = source.GetDataInformation()
