@@ -11,6 +11,7 @@
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/panel_plot.hpp"
 
 #ifndef TRIBEX_PLOT_HISTORY_SCRIPT
 #define TRIBEX_PLOT_HISTORY_SCRIPT "tools/plot/plot_history.py"
@@ -27,12 +28,6 @@ const char* plot_usage =
     "  OUT/history.png. --columns: those history.csv columns on one axis instead.\n"
     "  Needs /usr/bin/python3 with matplotlib (python3-matplotlib). Same as\n"
     "  /usr/bin/python3 tools/plot/plot_history.py OUT [PNG] [--columns ...].\n";
-
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 }  // namespace
 
@@ -66,7 +61,7 @@ int plot_command(const std::vector<std::string>& argv) {
   std::string cmd = "/usr/bin/python3";
   for (const auto& part : parts) {
     cmd += ' ';
-    cmd += shell_quoted(part);
+    cmd += tools::shell_quote(part);
   }
   const int rc = std::system(cmd.c_str());
   if (rc == -1 || !WIFEXITED(rc)) return 1;
