@@ -424,8 +424,9 @@ std::vector<BlockSchema> build_table() {
     // ParaView renders noise at SI coordinates of ~1e-8 m (issue 27): the geometry and the length
     // fields are written in a unit that keeps the numbers near 1; every other field stays SI.
     results.keys.push_back(choice("length unit", ValueKind::enumeration, {"auto", "nm", "um", "m"}, false, "auto",
-                                  "unit of the written coordinates and displacement (other fields SI); auto: nm for a "
-                                  "model under 1 um across, um under 1 mm, else m"));
+                                  "unit of the written coordinates and length fields (displacement, gap) in results.h5 "
+                                  "and results.exo (other fields SI); auto: nm for a model under 1 um across, um under "
+                                  "1 mm, else m"));
     t.push_back(results);
   }
   {
