@@ -44,6 +44,7 @@ void ContactManager::normal_pressure(const double* x, std::vector<double>& out) 
   }
 }
 
+// g = (x_s - x_m) . n_m of each slave pass (docs/theory.md eq. 12.3), the smallest per node.
 void ContactManager::node_gaps(std::vector<double>& out) const {
   out.assign(status_.size(), std::numeric_limits<double>::quiet_NaN());
   for (const auto& p : passes_) {
