@@ -141,6 +141,17 @@ class ContactManager {
 
   const std::vector<double>& traction() const { return traction_; }
   const std::vector<double>& status() const { return status_; }
+  /// Result fields (contact/contact_fields.cpp, docs/theory.md 12.1), at the positions `x` [node][3]
+  /// of the last compute_forces. normal_pressure: out [node] = -t . n / phi, t the traction, n the unit
+  /// outward normal of the node's slave surfaces (area-weighted over its slave faces whose four nodes
+  /// are present) and phi the partition factor of its slave passes (1/2 symmetric, else 1; the smaller
+  /// where it is a slave node of both kinds), compressive positive; 0 on nodes of no slave surface.
+  /// In a distributed run a ghost row may lag by the motion since the last search (its normal
+  /// only). node_gaps: out [node] the
+  /// smallest gap of the node over the passes where it is a slave node (NaN: none, or no master face
+  /// within the search margin).
+  void normal_pressure(const double* x, std::vector<double>& out) const;
+  void node_gaps(std::vector<double>& out) const;
   const std::vector<int>& surface_nodes() const { return all_nodes_; }
   const std::vector<ContactSurface>& surfaces() const { return surfaces_; }
   long total_searches() const { return total_searches_; }

@@ -292,11 +292,11 @@ struct ContactSpec {
 struct ResultsOutputSpec {
   std::optional<double> time_increment;  // s; exactly one of the two increments is set
   std::optional<int> step_increment;
-  std::vector<std::string> nodal_variables;    // displacement velocity force (+ later ones)
-  std::vector<std::string> element_variables;  // stress
+  std::vector<std::string> nodal_variables;    // rows of inputs/result_fields.hpp (nodal), deck order
+  std::vector<std::string> element_variables;  // rows of inputs/result_fields.hpp (element), deck order
   bool xdmf = true;     // `format`: xdmf (default) or both -> results.h5 + results.xdmf
   bool exodus = false;  //           exodus or both -> results.exo
-  std::string length_unit = "auto";            // auto nm um m: coordinates and displacement in results.h5
+  std::string length_unit = "auto";            // auto nm um m: coordinates and length fields in results.h5/.exo
   SourceLocation where;
 };
 

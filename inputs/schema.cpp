@@ -7,6 +7,7 @@
 
 #include "inputs/declared_keys.hpp"
 #include "inputs/lexer.hpp"
+#include "inputs/result_fields.hpp"
 
 namespace tribex::inputs {
 namespace {
@@ -416,21 +417,21 @@ std::vector<BlockSchema> build_table() {
   {
     BlockSchema results{"results output", NameRule::required, {}, {}, true, output_schedule(), {}, false,
                         "results.h5 + results.xdmf and/or results.exo"};
-    results.keys.push_back(choice("nodal variables", ValueKind::enumerations,
-                                  {"displacement", "velocity", "force", "acceleration", "contact_traction",
-                                   "contact_status"},
-                                  false, "", "nodal fields"));
-    results.keys.push_back(
-        choice("element variables", ValueKind::enumerations, {"stress", "equivalent_plastic_strain"}, false, "",
-               "element fields: Cauchy stress (Pa); equivalent plastic strain (J2 plasticity, element mean)"));
+    // The allowed fields are the rows of the result-field table (result_fields.hpp).
+    results.keys.push_back(choice("nodal variables", ValueKind::enumerations, result_field_names(FieldKind::nodal),
+                                  false, "", "nodal fields (`tribex run --list-fields`: unit and definition)"));
+    results.keys.push_back(choice("element variables", ValueKind::enumerations,
+                                  result_field_names(FieldKind::element), false, "",
+                                  "element fields (`tribex run --list-fields`: unit and definition)"));
     results.keys.push_back(choice("format", ValueKind::enumeration, {"xdmf", "exodus", "both"}, false, "xdmf",
                                   "xdmf: results.h5 + results.xdmf; exodus: results.exo (Exodus II, with the history "
                                   "columns as global variables); both"));
     // ParaView renders noise at SI coordinates of ~1e-8 m (issue 27): the geometry and the length
     // fields are written in a unit that keeps the numbers near 1; every other field stays SI.
     results.keys.push_back(choice("length unit", ValueKind::enumeration, {"auto", "nm", "um", "m"}, false, "auto",
-                                  "unit of the written coordinates and displacement (other fields SI); auto: nm for a "
-                                  "model under 1 um across, um under 1 mm, else m"));
+                                  "unit of the written coordinates and length fields (displacement, gap) in results.h5 "
+                                  "and results.exo (other fields SI); auto: nm for a model under 1 um across, um under "
+                                  "1 mm, else m"));
     t.push_back(results);
   }
   {

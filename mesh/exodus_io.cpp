@@ -105,6 +105,29 @@ std::pair<std::vector<int>, std::vector<int>> set_entries(int exo, ex_entity_typ
 
 }  // namespace
 
+ExodusLengthUnit exodus::length_unit_of(int exo, const std::string& path) {
+  ExodusLengthUnit unit;
+  const int count = static_cast<int>(ex_inquire_int(exo, EX_INQ_INFO));
+  if (count <= 0) return unit;
+  std::vector<std::vector<char>> lines(static_cast<std::size_t>(count), std::vector<char>(MAX_LINE_LENGTH + 1, '\0'));
+  std::vector<char*> p;
+  for (auto& l : lines) p.push_back(l.data());
+  if (ex_get_info(exo, p.data()) < 0) return unit;  // unreadable notes: no unit named
+  const std::string key = exodus_length_unit_record;
+  for (const auto& l : lines) {
+    const std::string line(l.data());
+    if (line.rfind(key, 0) != 0) continue;
+    unit.name = line.substr(key.size());
+    unit.name.erase(unit.name.find_last_not_of(' ') + 1);
+    if (unit.name == "m") unit.per_metre = 1.0;
+    else if (unit.name == "um") unit.per_metre = 1e6;
+    else if (unit.name == "nm") unit.per_metre = 1e9;
+    else
+      fail(path, "its info record '" + line + "' names a length unit other than m, um or nm; write the file in one of them");
+  }
+  return unit;
+}
+
 bool is_exodus_path(const std::string& path) {
   const std::string ext = lower(std::filesystem::path(path).extension().string());
   return ext == ".exo" || ext == ".e" || ext == ".g" || ext == ".gen";
@@ -170,13 +193,14 @@ Mesh read_exodus(const std::string& path) {
 
   Mesh m;
   {
+    const double per_metre = exodus::length_unit_of(exo, path).per_metre;
     std::vector<double> x(static_cast<std::size_t>(nodes)), y(x.size()), z(x.size());
     if (ex_get_coord(exo, x.data(), y.data(), z.data()) < 0) fail(path, "cannot read the coordinates" + reason());
     m.coordinates.resize(3 * x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {
-      m.coordinates[3 * i] = x[i];
-      m.coordinates[3 * i + 1] = y[i];
-      m.coordinates[3 * i + 2] = z[i];
+      m.coordinates[3 * i] = per_metre == 1.0 ? x[i] : x[i] / per_metre;
+      m.coordinates[3 * i + 1] = per_metre == 1.0 ? y[i] : y[i] / per_metre;
+      m.coordinates[3 * i + 2] = per_metre == 1.0 ? z[i] : z[i] / per_metre;
     }
   }
 
@@ -282,7 +306,8 @@ Mesh read_exodus(const std::string& path) {
   return m;
 }
 
-int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format) {
+int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format,
+                             const ExodusLengthUnit& unit, const std::vector<std::string>& notes) {
   validate(mesh, "mesh for " + path);
   quiet_exodus();
   int comp_ws = sizeof(double), io_ws = sizeof(double);
@@ -313,14 +338,23 @@ int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const st
         "the header");
   {
     std::vector<double> x(static_cast<std::size_t>(n)), y(x.size()), z(x.size());
+    const double s = unit.per_metre;  // 1: the values as they are
     for (std::size_t i = 0; i < x.size(); ++i) {
-      x[i] = mesh.coordinates[3 * i];
-      y[i] = mesh.coordinates[3 * i + 1];
-      z[i] = mesh.coordinates[3 * i + 2];
+      x[i] = s == 1.0 ? mesh.coordinates[3 * i] : mesh.coordinates[3 * i] * s;
+      y[i] = s == 1.0 ? mesh.coordinates[3 * i + 1] : mesh.coordinates[3 * i + 1] * s;
+      z[i] = s == 1.0 ? mesh.coordinates[3 * i + 2] : mesh.coordinates[3 * i + 2] * s;
     }
     check(ex_put_coord(exo, x.data(), y.data(), z.data()), "the coordinates");
     const char* axes[3] = {"x", "y", "z"};
     check(ex_put_coord_names(exo, const_cast<char**>(axes)), "the coordinate names");
+  }
+  if (!notes.empty() || unit.name != "m" || unit.per_metre != 1.0) {
+    // Info records: the unit first (the one read_exodus looks for), then the caller's lines.
+    std::vector<std::string> lines{exodus_length_unit_record + unit.name};
+    for (const auto& note : notes) lines.push_back(note.substr(0, MAX_LINE_LENGTH));
+    std::vector<char*> p;
+    for (auto& l : lines) p.push_back(l.data());
+    check(ex_put_info(exo, static_cast<int>(lines.size()), p.data()), "the info records");
   }
   std::vector<std::string> names;
   std::vector<int> one_based;

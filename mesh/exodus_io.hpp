@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -20,9 +21,19 @@ enum class ExodusFormat { offset64, netcdf4 };
 /// True for the names tribex treats as Exodus II: .exo .e .g .gen (case-insensitive).
 bool is_exodus_path(const std::string& path);
 
+/// The length unit of an Exodus file's coordinates. tribex's results.exo names it in an info record
+/// "tribex length unit: U" (U = m, um or nm; solver/output/README.md "Exodus II output"); a file
+/// without that record is in metres.
+struct ExodusLengthUnit {
+  std::string name = "m";
+  double per_metre = 1.0;  // value in this unit = value in metres x per_metre
+};
+inline constexpr const char* exodus_length_unit_record = "tribex length unit: ";
+
 /// Throws MeshError (one line: file name, what is wrong, the fix) for a missing or unreadable file,
 /// a file that is not Exodus II, a 2-D mesh, a block that is not HEX8, indices out of range, or an
-/// invalid mesh (validate). Nodes no hex uses are dropped (node sets keep the others).
+/// invalid mesh (validate). Nodes no hex uses are dropped (node sets keep the others). Coordinates
+/// come back in metres: a file whose info records name another length unit is divided by it.
 Mesh read_exodus(const std::string& path);
 
 /// Validates the mesh, writes it to `.NAME.partial` beside `path` and renames it (a failed write
@@ -34,8 +45,15 @@ namespace exodus {
 
 /// For the results writer (solver/output/exodus_writer.cpp): creates `path` (clobbering it), writes
 /// the mesh as write_exodus does and returns the open Exodus id (the caller closes it with
-/// ex_close). `title` is the database title (at most 80 characters kept). Throws MeshError.
-int create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format);
+/// ex_close). `title` is the database title (at most 80 characters kept). The coordinates are
+/// written in `unit` (metres x per_metre), named in the info records with `notes` (one line each,
+/// at most 80 characters kept). Throws MeshError.
+int create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format,
+                     const ExodusLengthUnit& unit = {}, const std::vector<std::string>& notes = {});
+
+/// The length unit the open file `exo` names in its info records (metres when none does); MeshError
+/// naming `path` for a unit other than m, um, nm.
+ExodusLengthUnit length_unit_of(int exo, const std::string& path);
 
 /// The Exodus library's last error text, for messages ("" when it has none).
 std::string last_error();

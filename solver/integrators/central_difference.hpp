@@ -74,6 +74,8 @@ class CentralDifference {
   const std::vector<double>& reaction() const { return reaction_; }  // R^n at constrained dofs, else 0
   const Energies& energies() const { return energies_; }
   const contact::ContactTotals& contact_totals() const { return contact_totals_; }  // at time n
+  /// [surface node][3] positions in the contact's numbering at the last force pass (time n), m.
+  const std::vector<double>& contact_positions() const { return x_; }
   const double* momentum() const { return momentum_; }  // sum m v^n, kg m/s
   double contact_seconds() const { return contact_seconds_; }  // wall time spent in contact so far
   const StableStep& stable_step() const { return stable_; }

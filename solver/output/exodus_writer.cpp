@@ -22,6 +22,7 @@ namespace {
 struct FieldSpec {
   std::string name;
   int components = 0;
+  double scale = 1.0;  // file value = value x scale: the length unit's per_metre for a field in "m", else 1
   friend bool operator==(const FieldSpec&, const FieldSpec&) = default;
 };
 
@@ -63,6 +64,7 @@ struct ExodusWriter::Impl {
   int nodes = 0, elements = 0;
   std::vector<ExoBlock> blocks;  // in element order, Exodus ids 1..B
   std::vector<std::string> global_names;
+  mesh::ExodusLengthUnit unit;  // of the coordinates and the length fields (a resumed file: its own)
   int exo = -1;  // rank 0
   int steps = 0;
   double last_time = -INFINITY;
@@ -86,7 +88,11 @@ struct ExodusWriter::Impl {
 
   void create(const mesh::Mesh& mesh) {
     try {
-      exo = mesh::exodus::create_with_mesh(mesh, path, "tribex results", mesh::ExodusFormat::offset64);
+      // The unit is the first info record (read back by mesh::read_exodus); the notes say what it covers.
+      const std::vector<std::string> notes = {
+          "coordinates and length fields (unit m: displacement, gap) in " + unit.name,
+          "every other field SI; the global variables (history.csv columns) SI"};
+      exo = mesh::exodus::create_with_mesh(mesh, path, "tribex results", mesh::ExodusFormat::offset64, unit, notes);
     } catch (const mesh::MeshError& e) {
       throw SetupError(std::string("cannot create results file: ") + e.what() +
                        "; choose another output directory or fix its permissions");
@@ -177,6 +183,7 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
   if (stored > 0 && ex_get_all_times(old.id, times.data()) < 0) throw SetupError(refuse + "cannot read its times" + fix);
   int kept = 0;  // the steps before the restart time (the step at it is written again)
   while (kept < stored && times[kept] < resume_time && (kept == 0 || times[kept] > times[kept - 1])) ++kept;
+  unit = mesh::exodus::length_unit_of(old.id, path);  // the file's own: its steps are copied as they are
   const auto global = read_variable_names(old.id, EX_GLOBAL);
   const auto nodal = read_variable_names(old.id, EX_NODAL);
   const auto element = read_variable_names(old.id, EX_ELEM_BLOCK);
@@ -247,13 +254,14 @@ std::vector<std::string> ExodusWriter::component_names(const std::string& name, 
 }
 
 ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& mesh, std::vector<std::string> global_names,
-                           const ResultsSlab* slab, std::optional<double> resume_time)
+                           const ResultsSlab* slab, std::optional<double> resume_time, const std::string& length_unit)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.directory = directory;
   m.path = (std::filesystem::path(directory) / "results.exo").string();
   // A parallel run: `mesh` is the whole mesh on rank 0 only; the others take its outline.
-  const output::MeshOutline outline = output::outline_of(mesh, "m", slab != nullptr);
+  const output::MeshOutline outline = output::outline_of(mesh, length_unit, slab != nullptr);
+  m.unit = {outline.unit.name, outline.unit.per_metre};
   m.nodes = static_cast<int>(outline.nodes);
   m.elements = static_cast<int>(outline.elements);
   m.global_names = std::move(global_names);
@@ -327,7 +335,8 @@ void ExodusWriter::Impl::write(double time, std::span<const FieldView> nodal, st
     const int c = nodal_fields[f].components;
     const double* v = parallel ? gathered : nodal[f].values.data();
     for (int j = 0; j < c; ++j) {
-      for (int i = 0; i < nodes; ++i) component[i] = v[static_cast<std::size_t>(c) * i + j];
+      const double s = nodal_fields[f].scale;
+      for (int i = 0; i < nodes; ++i) component[i] = s == 1.0 ? v[static_cast<std::size_t>(c) * i + j] : v[static_cast<std::size_t>(c) * i + j] * s;
       ++var;
       check(ex_put_var(exo, k, EX_NODAL, var, 1, nodes, component.data()), "nodal variable '" + file_nodal[var - 1] + "'");
     }
@@ -338,7 +347,8 @@ void ExodusWriter::Impl::write(double time, std::span<const FieldView> nodal, st
     const int c = element_fields[f].components;
     const double* v = parallel ? gathered : element[f].values.data();
     for (int j = 0; j < c; ++j) {
-      for (int i = 0; i < elements; ++i) component[i] = v[static_cast<std::size_t>(c) * i + j];
+      const double s = element_fields[f].scale;
+      for (int i = 0; i < elements; ++i) component[i] = s == 1.0 ? v[static_cast<std::size_t>(c) * i + j] : v[static_cast<std::size_t>(c) * i + j] * s;
       ++var;
       for (const auto& b : blocks)
         check(ex_put_var(exo, k, EX_ELEM_BLOCK, var, b.id, b.count, component.data() + b.first),
@@ -369,7 +379,7 @@ void ExodusWriter::write_step(double time, std::span<const FieldView> nodal, std
           f.values.size() != static_cast<std::size_t>(f.components) * static_cast<std::size_t>(is_nodal ? node_rows : element_rows))
         throw std::invalid_argument("ExodusWriter: field '" + f.name + "' has " + std::to_string(f.values.size()) +
                                     " values, not components x rows");
-      (is_nodal ? ns : es).push_back({f.name, f.components});
+      (is_nodal ? ns : es).push_back({f.name, f.components, f.unit == "m" ? m.unit.per_metre : 1.0});
     }
   }
   if (!m.fields_fixed) {

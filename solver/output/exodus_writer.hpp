@@ -14,7 +14,7 @@
 
 namespace tribex::solver {
 
-/// Writes DIR/results.exo: the mesh (coordinates in m, named HEX8 blocks, node sets, side sets)
+/// Writes DIR/results.exo: the mesh (coordinates in the length unit, named HEX8 blocks, node sets, side sets)
 /// once, then per step the time, the nodal and element fields (vectors as NAME_x/_y/_z, symmetric
 /// tensors as NAME_xx/_yy/_zz/_xy/_yz/_zx, the names ParaView's Exodus reader recombines) and the
 /// global variables. 64-bit-offset netCDF (no HDF5 inside). ex_update after every step, so a
@@ -29,9 +29,12 @@ class ExodusWriter {
   /// it cannot. resume_time (a restarted run, s): an existing DIR/results.exo of this mesh is
   /// rewritten with its steps before that time (SetupError if it is another mesh's file).
   /// Collective in a parallel run, but only rank 0 touches files and can throw; the caller
-  /// agrees on errors afterwards.
+  /// agrees on errors afterwards. length_unit: m, um, nm or auto (as results.h5's, output/length_unit.hpp):
+  /// the coordinates and every field given in "m" are written in it, named in the info records; a
+  /// resumed file keeps its own.
   ExodusWriter(const std::string& directory, const mesh::Mesh& mesh, std::vector<std::string> global_names,
-               const ResultsSlab* slab = nullptr, std::optional<double> resume_time = std::nullopt);
+               const ResultsSlab* slab = nullptr, std::optional<double> resume_time = std::nullopt,
+               const std::string& length_unit = "m");
   ~ExodusWriter();  // closes; the file stays valid
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;

@@ -104,9 +104,11 @@ std::string XdmfDocument::block_grid(std::size_t b, int step, double time,
   }
   for (const auto& a : attributes) {
     const bool node = a.center == Center::node;
-    const std::string name = a.unit.empty() || a.unit == "1" ? a.name : a.name + " [" + a.unit + "]";
-    g += in + "<Attribute Name=\"" + xml_escaped(name) + "\" AttributeType=\"" + attribute_type(a.components) +
-         "\" Center=\"" + (node ? "Node" : "Cell") + "\">" +
+    // The bare name (ParaView's Calculator and Python take it unquoted); the unit as an Information
+    // child, like the dataset's `units` attribute (README.md "Units").
+    const std::string unit = a.unit.empty() ? "" : "<Information Name=\"units\" Value=\"" + xml_escaped(a.unit) + "\"/>";
+    g += in + "<Attribute Name=\"" + xml_escaped(a.name) + "\" AttributeType=\"" + attribute_type(a.components) +
+         "\" Center=\"" + (node ? "Node" : "Cell") + "\">" + unit +
          h5_item(a.h5_dataset, node ? nodes_ : elements_, a.components, false, node ? nullptr : &blocks_[b]) +
          "</Attribute>\n";
   }

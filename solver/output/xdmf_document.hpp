@@ -23,7 +23,7 @@ struct XdmfAttribute {
   Center center = Center::node;
   int components = 1;
   std::string h5_dataset;  // absolute path inside the HDF5 file
-  std::string unit;        // shown in ParaView as "name [unit]"; empty or "1": the bare name
+  std::string unit;        // the values' unit, an <Information Name="units"> of the attribute (empty: none)
 };
 
 /// A grid: the elements [first, first + count) of the mesh, all of one block.

@@ -22,6 +22,7 @@
 #include "solver/model.hpp"
 #include "solver/run/out_of_memory.hpp"
 #include "solver/output/exodus_writer.hpp"
+#include "solver/output/field_source.hpp"
 #include "solver/output/history_writer.hpp"
 #include "solver/output/output_folder.hpp"
 #include "solver/output/results_writer.hpp"
@@ -177,8 +178,8 @@ class DeckRun {
   Clock::time_point stop_seen_;     // when it did (the stop's time is logged at the close)
   std::vector<double> row_;
   std::vector<double> globals_;  // results.exo: step, then row_
-  std::vector<double> element_stress_, element_plastic_strain_;
-  std::vector<std::vector<double>> packed_;  // parallel: this rank's rows of each field (output steps only)
+  std::optional<FieldSource> field_source_;           // the result fields' getters read here (write_fields)
+  std::vector<FieldView> nodal_views_, element_views_;  // one output's fields
   std::vector<int> surface_index_;  // [local node] its node in the contact's numbering, -1: none (contact fields)
   bool terminal_ = false, heartbeat_ = false;
   Clock::time_point last_progress_, last_heartbeat_;

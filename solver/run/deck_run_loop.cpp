@@ -84,57 +84,14 @@ void DeckRun::write_history_row(double t, long n) {
 }
 
 void DeckRun::write_fields(double t, long n) {
-  // Parallel runs write the rows this rank owns: nodal fields packed from local numbering, the
-  // contact fields from the contact's (zero on nodes of no contact surface, also on one rank); the
-  // rank's elements are its rows already.
-  const Model& model = *model_;
-  const auto& domain = model.domain;
-  std::vector<FieldView> nodal, element;
-  std::size_t g = 0;
-  const auto owned_rows = [&](const std::vector<double>& values, int components) {
-    if (domain.serial()) return std::span<const double>(values);
-    if (packed_.size() <= g) packed_.emplace_back();
-    auto& buffer = packed_[g++];
-    buffer.clear();
-    for (int l : domain.owned_local_nodes())
-      buffer.insert(buffer.end(), values.begin() + components * l, values.begin() + components * (l + 1));
-    return std::span<const double>(buffer);
-  };
-  const auto contact_rows = [&](const std::vector<double>& values, int components) {
-    if (packed_.size() <= g) packed_.emplace_back();
-    auto& buffer = packed_[g++];
-    buffer.assign(static_cast<std::size_t>(components) * domain.owned_local_nodes().size(), 0.0);
-    std::size_t row = 0;
-    for (int l : domain.owned_local_nodes()) {
-      if (const int k = surface_index_[static_cast<std::size_t>(l)]; k >= 0)
-        std::copy(values.begin() + components * k, values.begin() + components * (k + 1), buffer.begin() + components * row);
-      ++row;
-    }
-    return std::span<const double>(buffer);
-  };
-  for (const auto& name : region_.results->nodal_variables) {
-    const std::vector<double>* v = nullptr;
-    if (name == "displacement") v = &integrator_->displacement();
-    if (name == "velocity") v = &integrator_->velocity();
-    if (name == "acceleration") v = &integrator_->acceleration();
-    if (name == "force") v = &integrator_->force();
-    // SI units (the writer puts lengths, unit "m", into the file's length unit).
-    const char* unit = name == "displacement" ? "m" : name == "velocity" ? "m/s" : name == "acceleration" ? "m/s^2" : "N";
-    if (v) nodal.push_back({name, 3, owned_rows(*v, 3), unit});
-    if (model.contact && name == "contact_traction")
-      nodal.push_back({name, 3, contact_rows(model.contact->traction(), 3), "Pa"});
-    if (model.contact && name == "contact_status") nodal.push_back({name, 1, contact_rows(model.contact->status(), 1), "1"});
-  }
-  for (const auto& name : region_.results->element_variables) {
-    if (name == "stress") {
-      for (const auto& b : model.blocks)
-        std::copy(b.stress.begin(), b.stress.end(), element_stress_.begin() + 6 * b.first_element);
-      element.push_back({"stress", 6, element_stress_, "Pa"});
-    } else if (name == "equivalent_plastic_strain") {
-      for (const auto& b : model.blocks) equivalent_plastic_strain(b, element_plastic_strain_.data() + b.first_element);
-      element.push_back({name, 1, element_plastic_strain_, "1"});
-    }
-  }
+  // The deck's fields from the table (inputs/result_fields.hpp), this rank's rows of each.
+  field_source_->start_output();
+  nodal_views_.clear();
+  element_views_.clear();
+  collect_fields(region_.results->nodal_variables, inputs::FieldKind::nodal, *field_source_, nodal_views_);
+  collect_fields(region_.results->element_variables, inputs::FieldKind::element, *field_source_, element_views_);
+  const auto& nodal = nodal_views_;
+  const auto& element = element_views_;
   if (results_) results_->write_step(t, nodal, element);
   if (exodus_) {
     fill_history_row(t);  // every rank: the node-set columns are sums over the ranks
@@ -183,8 +140,7 @@ void DeckRun::loop() {
   });
   row_.reserve(history_columns_.size());
   globals_.reserve(history_columns_.size());
-  element_stress_.assign(6 * static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
-  element_plastic_strain_.assign(static_cast<std::size_t>(model_->mesh.element_count()), 0.0);
+  field_source_.emplace(*model_, *integrator_, surface_index_);
   terminal_ = root_ && !options_.quiet && isatty(STDERR_FILENO);
   // Batch jobs and pipes get a heartbeat line instead of the terminal's carriage-return progress.
   // Parallel runs always do: Open MPI gives the ranks a pseudo-terminal for stdout whatever mpiexec's

@@ -404,7 +404,7 @@ void DeckRun::open_results() {
       std::vector<std::string> globals;  // the history columns, `step` first
       for (const auto& c : history_columns_) globals.push_back(c.name);
       exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, std::move(globals), ranks_ > 1 ? &slab_ : nullptr,
-                                               resume_time);
+                                               resume_time, region_.results->length_unit);
     }
   } catch (...) {
     error = std::current_exception();

@@ -5,20 +5,24 @@
 
   check_exodus.py fields TRIBEX DECK OUT [--ranks N]
       runs DECK (format = both) on N ranks, then reads results.exo with netCDF4 and results.h5 with
-      h5py: same coordinates (to 1e-12 after results.h5's length unit is turned into m) and connectivity (exactly), block names equal to results.h5's, the
+      h5py: the length unit named in results.exo's info records ("tribex length unit: nm") equal to
+      results.h5's `length_unit`; same coordinates (both in that unit, to 1e-12) and connectivity (exactly), block names equal to results.h5's, the
       node and side sets of the generated boxes present and on the right faces; every Exodus time
       equal to results.h5's and every nodal and element variable equal to its results.h5 component
-      within 1e-12 of the field's largest value; every global variable equal to history.csv's column
+      (the length fields in the same unit in both) within 1e-12 of the field's largest value; every global variable equal to history.csv's column
       at that step within 1e-12 relative. Prints the largest differences.
   check_exodus.py restart TRIBEX DECK OUT --stop STEP [--ranks N]
       uninterrupted run, then a run stopped after STEP and resumed into the same folder: the resumed
       results.exo (rewritten with the steps before the restart time, then continued) holds the same
       times and bitwise the same values as the uninterrupted one.
   check_exodus.py mesh TRIBEX DECK OUT
-      runs DECK (generated boxes), then the same deck on its results.exo as `database name = mesh.g`,
-      on a netCDF-4 copy of it (mesh4.g) and on `tribex mesh convert mesh.g mesh.msh`: history.csv
-      byte-identical in all four. A deck with `begin surface layer block`s reads the unsplit mesh (the
-      results.exo of the deck without them) and splits it at set-up, as it split the generated mesh.
+      runs DECK (generated boxes) with `length unit = m`, then the same deck on its results.exo as
+      `database name = mesh.g`, on a netCDF-4 copy of it (mesh4.g) and on `tribex mesh convert mesh.g
+      mesh.msh`: history.csv byte-identical in all four. A deck with `begin surface layer block`s reads
+      the unsplit mesh (the results.exo of the deck without them) and splits it at set-up, as it split
+      the generated mesh. Then the results.exo the deck writes in its own length unit (nm here): read
+      back as a mesh (`tribex mesh convert` to an Exodus file in m) it gives the generated coordinates
+      within 2e-16 relative (x 1e9 then / 1e9: round-off, not bitwise).
 """
 import argparse
 import csv
@@ -33,7 +37,7 @@ import netCDF4
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
-from results_h5 import si  # noqa: E402  results.h5 lengths are in its length unit, results.exo in SI
+# results.h5 and results.exo hold the coordinates and length fields in the same length unit.
 
 TOL = 1e-12
 
@@ -71,10 +75,10 @@ VEC = {"x": 0, "y": 1, "z": 2}
 def h5_component(group, exo_name):
     """The results.h5 column an Exodus variable name stands for, or None."""
     if exo_name in group:
-        return si(group[exo_name])
+        return group[exo_name][()]
     base, _, suffix = exo_name.rpartition("_")
     if base in group:
-        data = si(group[base])
+        data = group[base][()]
         index = SYM.get(suffix) if data.shape[1] == 9 else VEC.get(suffix)
         return None if index is None else data[:, index]
     return None
@@ -92,8 +96,15 @@ def fields(a):
 
     # Mesh: coordinates, connectivity (blocks in element order), names, sets.
     xyz = np.stack([exo.variables[c][:].data for c in ("coordx", "coordy", "coordz")], axis=1)
-    # (results.h5 holds them in its length unit: equal after the conversion to m to round-off)
-    ref_xyz = si(h5["/mesh/coordinates"])
+    # Both files in the length unit the results output chose, named in each.
+    info = ["".join(c.decode() for c in row if c not in (b"", b"\x00")).strip() for row in exo.variables["info_records"][:].data]
+    exo_unit = next((line.split(": ", 1)[1] for line in info if line.startswith("tribex length unit: ")), None)
+    h5_unit = h5.attrs["length_unit"]
+    h5_unit = h5_unit.decode() if isinstance(h5_unit, bytes) else str(h5_unit)
+    if exo_unit != h5_unit:
+        sys.exit(f"FAIL: results.exo's info records name length unit {exo_unit!r} ({info}), results.h5 {h5_unit!r}")
+    print(f"length unit {exo_unit} in both files; results.exo info records: {info}")
+    ref_xyz = h5["/mesh/coordinates"][()]
     coordinate_error = np.max(np.abs(xyz - ref_xyz)) / np.max(np.abs(ref_xyz))
     if coordinate_error > TOL:
         sys.exit(f"FAIL: coordinates differ by {coordinate_error:.3g} of the largest")
@@ -217,8 +228,15 @@ def to_netcdf4(source, target):
 def mesh(a):
     gen = os.path.join(a.out, "generated")
     shutil.rmtree(a.out, ignore_errors=True)
+    os.makedirs(a.out)
+    native = open(a.deck).read()
+    # The bitwise checks read a file in metres: the deck's results in m.
+    text = re.sub(r"(begin results output \w+)", r"\1\n        length unit = m", native, count=1)
+    in_metres = os.path.join(a.out, "in_metres.i")
+    with open(in_metres, "w") as f:
+        f.write(text)
+    a = argparse.Namespace(**{**vars(a), "deck": in_metres})
     run(a.tribex, a.deck, gen)
-    text = open(a.deck).read()
     # Mixed blocks: the mesh file is the unsplit mesh (a run without the surface layer blocks), which
     # the deck then splits at set-up, as it splits the generated one.
     skins = re.findall(r"begin surface layer block (\w+)", text)
@@ -252,7 +270,33 @@ def mesh(a):
         if open(os.path.join(out, "history.csv"), "rb").read() != reference:
             sys.exit(f"FAIL: the run on {mesh_file} has another history.csv than the run on the generated mesh")
         print(f"run on {mesh_file}: history.csv byte-identical to the generated mesh's")
+    unit_round_trip(a, native)
     print("PASS")
+
+
+def unit_round_trip(a, native):
+    """results.exo in the deck's own length unit, read back as a mesh: the coordinates in m again."""
+    out = os.path.join(a.out, "native")
+    deck = os.path.join(a.out, "native.i")
+    with open(deck, "w") as f:
+        f.write(native)
+    run(a.tribex, deck, out)
+    with netCDF4.Dataset(os.path.join(out, "results.exo")) as exo:
+        info = names(exo, "info_records")
+    converted = os.path.join(a.out, "native_in_m.exo")
+    p = subprocess.run([a.tribex, "mesh", "convert", os.path.join(out, "results.exo"), converted],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"FAIL: tribex mesh convert exited {p.returncode}\n{p.stdout}{p.stderr}")
+    with netCDF4.Dataset(converted) as exo:
+        xyz = np.stack([exo.variables[c][:].data for c in ("coordx", "coordy", "coordz")], axis=1)
+    with h5py.File(os.path.join(a.out, "generated", "results.h5"), "r") as h5:
+        ref = h5["/mesh/coordinates"][()]  # the generated mesh in m (the metre run)
+    error = np.max(np.abs(xyz - ref)) / np.max(np.abs(ref))
+    print(f"results.exo in its own unit ({info[0] if info else 'no info records'}), read back as a mesh in m: "
+          f"coordinates within {error:.2g} of the largest (tolerance 2e-16)")
+    if not (info and info[0].startswith("tribex length unit: ")) or error > 2e-16:
+        sys.exit("FAIL: the length unit is not named first in the info records, or the coordinates differ")
 
 
 def main():

@@ -9,8 +9,9 @@ values repeat the formulas of tests/output/sample_case.hpp: a 3 x 2 x 2 box of u
 u = t (x, 2y, -z) (in the file's length unit, like x); stress (Voigt) = (e+1)(1+t)(1..6) stored as a
 full 3x3 tensor; slip = (t e, -t) m as a 2-component Matrix (x 1e9 in the nm file); temperature
 300 + t x (x in m). The output is one block per element block, named substrate (elements 0-5) and
-asperity (6-11), each with its 6 hexes and the whole node array (36 points); array names carry
-their unit ("displacement [nm]"), block_id stays.
+asperity (6-11), each with its 6 hexes and the whole node array (36 points); array names are the bare
+field names ("displacement", not "displacement [nm]": the unit is the attribute's <Information
+Name="units">), block_id stays.
 Prints one line per check and exits 1 on the first failure.
 """
 import os
@@ -72,19 +73,19 @@ def check(reader_name, reader, unit):
                  f"expected {NODES} / {count}")
         if any(data.GetCellType(c) != 12 for c in range(count)):  # 12 = VTK_HEXAHEDRON
             fail(f"{reader_name}: block {name}: not every cell is a hexahedron")
-        expected_arrays = {f"displacement [{unit}]", "temperature [K]"}
+        expected_arrays = {"displacement", "temperature"}
         if not expected_arrays <= set(data.PointData.keys()):
             fail(f"{reader_name}: block {name}: point arrays {data.PointData.keys()}, expected {expected_arrays}")
         points = data.Points
-        u = data.PointData[f"displacement [{unit}]"]
+        u = data.PointData["displacement"]
         for n in (0, 7, NODES - 1):
             x, y, z = points[n]
             expected = (t * x, 2 * t * y, -t * z)
             got = [float(v) for v in u[n]]
             if not all(close(g, e) for g, e in zip(got, expected)):
                 fail(f"{reader_name}: block {name}: displacement at node {n} = {got}, expected {expected} (t={t})")
-        stress = data.CellData["stress [Pa]"].reshape(count, 9)  # readers return 3x3 per cell
-        slip = data.CellData[f"slip [{unit}]"]
+        stress = data.CellData["stress"].reshape(count, 9)  # readers return 3x3 per cell
+        slip = data.CellData["slip"]
         block = [int(b) for b in data.CellData["block_id"]]
         if block != [BLOCKS.index((name, first, count))] * count:
             fail(f"{reader_name}: block {name}: block_id {block}")
@@ -101,7 +102,7 @@ def check(reader_name, reader, unit):
     early = named_blocks(reader, TIMES[1])
     x1 = float(early[1][1].Points[1][0]) / per_m  # node 1, in m
     if [d.GetNumberOfCells() for _, d in early] != [b[2] for b in BLOCKS] or not close(
-            float(early[1][1].PointData["temperature [K]"][1]), 300 + 0.25 * x1):
+            float(early[1][1].PointData["temperature"][1]), 300 + 0.25 * x1):
         fail(f"{reader_name}: step 1 temperature at node 1 wrong or mesh missing")
     print(f"ok: {reader_name}: blocks {names} ({'/'.join(str(b[2]) for b in BLOCKS)} hexes, {NODES} points each), "
           f"{len(TIMES)} steps, lengths in {unit}, displacement/stress/slip/block_id at t={t} match")
@@ -134,13 +135,13 @@ def check_xdmf3(reader_name, reader, unit):
     if cells != sorted(b[2] for b in BLOCKS):
         fail(f"{reader_name}: pieces with {cells} cells, expected {[b[2] for b in BLOCKS]}")
     for data in pieces:
-        u = data.PointData[f"displacement [{unit}]"]
+        u = data.PointData["displacement"]
         x, y, z = data.Points[7]
         got = [float(v) for v in u[7]]
         if not all(close(g, e) for g, e in zip(got, (t * x, 2 * t * y, -t * z))):
             fail(f"{reader_name}: displacement at node 7 = {got}")
     print(f"ok: {reader_name}: {len(pieces)} unnamed pieces of {'/'.join(map(str, cells))} hexes, displacement "
-          f"[{unit}] matches (cell fields: XDMF Reader only)")
+          f"({unit}) matches (cell fields: XDMF Reader only)")
 
 
 def main():

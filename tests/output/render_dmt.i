@@ -101,8 +101,9 @@ begin sierra render_dmt
       end history output hist
       begin results output fields
         time increment = 5 ps
-        nodal variables = displacement contact_traction contact_status
-        element variables = stress
+        nodal variables = displacement contact_traction contact_status contact_pressure
+        element variables = stress von_mises
+        format = both
       end results output fields
     end presto region main
   end presto procedure indent

@@ -189,17 +189,23 @@ TEST(ResultsWriter, XdmfIsWellFormedAndNamesOnlyExistingDatasets) {
   EXPECT_EQ(count(xml, "results.h5:/mesh/connectivity"), 2);
   EXPECT_EQ(count(xml, "<xi:include"), 2 * 2);
   // Cell data and topology: the block's rows of the whole array (6 elements each); nodal: whole.
-  EXPECT_NE(xml.find("<Attribute Name=\"stress [Pa]\" AttributeType=\"Tensor\" Center=\"Cell\"><DataItem "
+  EXPECT_NE(xml.find("<Attribute Name=\"stress\" AttributeType=\"Tensor\" Center=\"Cell\"><Information Name=\"units\" "
+                     "Value=\"Pa\"/><DataItem "
                      "ItemType=\"HyperSlab\" Dimensions=\"6 9\" Type=\"HyperSlab\" NumberType=\"Float\" Precision=\"8\">"
                      "<DataItem Dimensions=\"3 2\" NumberType=\"Int\" Format=\"XML\">6 0 1 1 6 9</DataItem>"),
             std::string::npos);
-  EXPECT_NE(xml.find("<Attribute Name=\"displacement [m]\" AttributeType=\"Vector\" Center=\"Node\"><DataItem "
+  EXPECT_NE(xml.find("<Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\"><Information Name=\"units\" "
+                     "Value=\"m\"/><DataItem "
                      "Dimensions=\"36 3\""),
             std::string::npos);
-  EXPECT_NE(xml.find("<Attribute Name=\"slip [m]\" AttributeType=\"Matrix\" Center=\"Cell\"><DataItem "
+  EXPECT_NE(xml.find("<Attribute Name=\"slip\" AttributeType=\"Matrix\" Center=\"Cell\"><Information Name=\"units\" "
+                     "Value=\"m\"/><DataItem "
                      "ItemType=\"HyperSlab\" Dimensions=\"6 2\""),
             std::string::npos);
-  EXPECT_NE(xml.find("<Attribute Name=\"plastic_strain\" "), std::string::npos);  // unit "1": the bare name
+  EXPECT_NE(xml.find("<Attribute Name=\"plastic_strain\" AttributeType=\"Scalar\" Center=\"Cell\"><Information "
+                     "Name=\"units\" Value=\"1\"/>"),
+            std::string::npos);
+  EXPECT_EQ(xml.find(" ["), std::string::npos);  // no name carries a bracketed unit
   EXPECT_NE(xml.find("<Information Name=\"length_unit\" Value=\"m\"/>"), std::string::npos);
 
   const auto refs = h5_references(xml);
@@ -439,8 +445,10 @@ TEST(ResultsWriter, NanometreModelIsWrittenInNanometresWithUnitsOnEveryDataset) 
   H5Fclose(f);
   const std::string xml = slurp(dir / "results.xdmf");
   EXPECT_NE(xml.find("<Information Name=\"length_unit\" Value=\"nm\"/>"), std::string::npos);
-  EXPECT_NE(xml.find("Name=\"displacement [nm]\""), std::string::npos);
-  EXPECT_NE(xml.find("Name=\"stress [Pa]\""), std::string::npos);
+  EXPECT_NE(xml.find("Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\"><Information Name=\"units\" Value=\"nm\"/>"),
+            std::string::npos);
+  EXPECT_NE(xml.find("Name=\"stress\" AttributeType=\"Tensor\" Center=\"Cell\"><Information Name=\"units\" Value=\"Pa\"/>"),
+            std::string::npos);
   // A resumed run keeps the file's unit whatever it is asked for.
   ResultsWriter resumed(dir.string(), mesh, nullptr, 1.0, {"m"});
   EXPECT_EQ(resumed.length_unit(), "nm");

@@ -12,6 +12,7 @@ int run_command(const std::vector<std::string>& args);    // tools/cli/run_comma
 int check_command(const std::vector<std::string>& args);  // tools/cli/run_command.cpp
 int keys_command(const std::vector<std::string>& args);   // tools/cli/keys_command.cpp
 int bench_command(const std::vector<std::string>& args);  // tools/bench/bench_command.cpp
+int plot_command(const std::vector<std::string>& args);   // tools/cli/plot_command.cpp: tribex plot history OUT
 
 int gw_command(const std::vector<std::string>& args);       // tools/gw/gw_command.cpp
 int surface_command(const std::vector<std::string>& args);  // tools/surface/surface_command.cpp

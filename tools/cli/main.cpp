@@ -30,6 +30,7 @@ const std::vector<Command> commands = {
     {"run", "run an input deck: tribex run DECK [-o OUTDIR] [--quiet]", tribex::cli::run_command},
     {"check", "validate a deck and its mesh, print the set-up summary, run nothing", tribex::cli::check_command},
     {"keys", "the deck key reference from the schema: tribex keys [BLOCK] [--markdown]", tribex::cli::keys_command},
+    {"plot", "pictures of a run: tribex plot history OUT (force, energy, contact radius panels)", tribex::cli::plot_command},
     {"bench", "benchmarks: tribex bench block --n N --element E --material M --steps S", tribex::cli::bench_command},
     {"gw", "Greenwood-Williamson models: F_n, discrete/DMT/tangential GW (CSV)", tribex::cli::gw_command},
     {"surface", "rough-surface statistics of AFM maps and McCool GW tables", tribex::cli::surface_command},

@@ -4,6 +4,7 @@
 
 #include "inputs/diagnostics.hpp"
 #include "inputs/parameters.hpp"
+#include "inputs/result_fields.hpp"
 #include "solver/output/history_columns.hpp"
 #include "solver/output/output_tables.hpp"
 #include "solver/run/run.hpp"
@@ -17,7 +18,7 @@ namespace {
 const char* run_usage =
     "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE [--restart-allow-changed]] [--stop-at-step N]\n"
     "           [--heartbeat SECONDS] [--set NAME=VALUE ...]\n"
-    "tribex run --list-columns | --list-summary-keys\n"
+    "tribex run --list-columns | --list-summary-keys | --list-fields\n"
     "  Runs an input deck. Outputs go to OUTDIR (default ./<deck name>_output): history.csv,\n"
     "  results.h5 + results.xdmf (open the .xdmf in ParaView), summary.json, log.txt.\n"
     "  --quiet   no progress line and no terminal echo (log.txt is still written)\n"
@@ -35,6 +36,8 @@ const char* run_usage =
     "            (history_columns.csv beside each history.csv lists a run's own), and exit\n"
     "  --list-summary-keys   print every key of summary.json (energies.NAME, warnings[].NAME,\n"
     "            rank_counts[].NAME for the fields of those) with its unit and definition, and exit\n"
+    "  --list-fields   print every result field ('nodal variables', 'element variables' of 'begin results\n"
+    "            output'): name, kind, SI unit and definition, and exit\n"
     "  Exit codes: 0 ok, 2 bad input, 3 numerical failure, 130 interrupted (outputs valid).\n";
 
 const char* check_usage =
@@ -80,12 +83,22 @@ bool args_has_stop(const std::vector<std::string>& argv) {
 
 int run_command(const std::vector<std::string>& argv) {
   tools::Args args(argv, "tribex run", run_usage, {"--quiet", "--restart-allow-changed", "--list-columns",
-                                                             "--list-summary-keys"});
+                                                             "--list-summary-keys", "--list-fields"});
   if (args.answered_help()) return tools::exit_ok;
   if (args.flag("--list-columns")) {
     args.finish();
     for (const auto& c : solver::describe_history_columns(true, {"SET"}, {"SET"}, true))
       std::printf("%-28s %-7s %s\n", c.name.c_str(), c.unit.c_str(), c.definition.c_str());
+    return 0;
+  }
+  if (args.flag("--list-fields")) {
+    args.finish();
+    std::printf("%-26s %-8s %-10s %s\n", "name", "kind", "unit", "definition");
+    inputs::for_each_result_field([](const auto& f) {
+      std::printf("%-26s %-8s %-10s %s\n", std::string(f.name).c_str(),
+                  f.kind == inputs::FieldKind::nodal ? "nodal" : "element", std::string(f.unit).c_str(),
+                  std::string(f.definition).c_str());
+    });
     return 0;
   }
   if (args.flag("--list-summary-keys")) {

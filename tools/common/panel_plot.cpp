@@ -15,15 +15,12 @@
 #endif
 
 namespace tribex::tools {
-namespace {
 
 std::string shell_quote(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
 }
-
-}  // namespace
 
 std::string default_plot_path(const std::string& input) {
   std::filesystem::path p(input);

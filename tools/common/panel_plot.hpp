@@ -19,6 +19,9 @@ struct PlotPanel {
 /// is unavailable. Throws tools::BadInput when the folder of `png` cannot be written.
 bool write_plot(const std::string& png, const std::string& title, const std::vector<PlotPanel>& panels);
 
+/// `s` in single quotes for /bin/sh (a ' inside as '\''): the plot scripts' arguments.
+std::string shell_quote(const std::string& s);
+
 /// "dir/name.csv" -> "dir/name.png" (the default plot path next to the input).
 std::string default_plot_path(const std::string& input);
 

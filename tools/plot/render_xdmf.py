@@ -3,7 +3,7 @@
 
 ParaView 5.11 on Debian renders through GLX only, so run it under a virtual X server:
   xvfb-run -a -s "-screen 0 1024x768x24" pvbatch tools/plot/render_xdmf.py RESULTS.xdmf [FIELD] OUT.png \\
-      [--time T | --step K] [--component N|Magnitude] [--view contact|whole] [--warp S] [--edges] [--size WxH]
+      [--time T | --step K] [--component N|Magnitude] [--view contact|top|whole] [--warp S] [--edges] [--size WxH]
 FIELD: a nodal or element field (displacement, stress, contact_traction, block_id, ...; the unit
 ParaView shows in brackets may be left out) or von_mises (from stress); default von_mises when the
 file has stress, else displacement. Vectors and tensors are coloured by their magnitude unless
@@ -11,8 +11,11 @@ file has stress, else displacement. Vectors and tensors are coloured by their ma
 Defaults: the step with the most nodes in contact (the last step when the file has no
 contact_status); the body deformed by its displacement (Warp By Vector, scale 1: the geometry and
 the displacement are in the same length unit); --view contact when that step has contact: the
-section through the contact centre normal to y, seen along y, framed on the contact region; else
---view whole, an oblique view of the whole body. Files written before the length unit (SI
+section through the contact centre normal to y, seen from -y (x to the right, z up), framed on the
+contact region; else --view whole, an oblique view of the whole body. --view top: the contact
+pressure seen along z (x to the right): the block that holds the slave nodes in contact (the lower
+one when both do), seen from above (from below for an upper block, y then pointing down), framed
+on the contact region; its default field is contact_pressure (a nodal variable of the run). Files written before the length unit (SI
 coordinates) are scaled to nm here when the model is under 1 um, since ParaView renders noise at
 coordinates of 1e-8 (issue 27).
 Prints one line: the PNG, field, step, time, view, and the colour range with its unit.
@@ -26,8 +29,8 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 from paraview.simple import (CellDatatoPointData, Clip, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction,
-                             GetScalarBar, MergeBlocks, ProgrammableFilter, Render, SaveScreenshot, Show, Transform,
-                             WarpByVector, XDMFReader)
+                             GetScalarBar, MergeBlocks, ProgrammableFilter, Render, SaveScreenshot, Show, Threshold,
+                             Transform, WarpByVector, XDMFReader)
 
 PER_METRE = {"m": 1.0, "um": 1e6, "nm": 1e9}
 
@@ -54,8 +57,12 @@ def xdmf_facts(path):
     fields, h5 = {}, None
     for attr in root.iter("Attribute"):
         shown = attr.get("Name")
+        # The unit: the attribute's <Information Name="units">; files before it put it in the name.
         m = re.fullmatch(r"(.*?) \[(.*)\]", shown)
         base, field_unit = (m.group(1), m.group(2)) if m else (shown, "")
+        for info in attr.iter("Information"):
+            if info.get("Name") == "units":
+                field_unit = info.get("Value", "")
         fields.setdefault(base, (shown, field_unit, attr.get("Center") == "Node"))
     for item in root.iter("DataItem"):
         if item.get("Format") == "HDF" and item.text and ":" in item.text:
@@ -95,7 +102,110 @@ def contact_region(h5_path, step, geometry_scale):
     return centre, radius
 
 
-def main():
+def slave_block(h5_path, step):
+    """(block id, True when it lies below the contact) of the block holding the nodes in contact at step
+    k, the lowest one (by mean z of its nodes in contact) when several do."""
+    import h5py
+    with h5py.File(h5_path, "r") as f:
+        nodal = f["steps"][sorted(f["steps"])[step]]["nodal"]
+        on = nodal["contact_status"][()] > 0
+        x = f["mesh/coordinates"][()]
+        if "displacement" in nodal:
+            x = x + nodal["displacement"][()]
+        conn, block = f["mesh/connectivity"][()], f["mesh/block_id"][()]
+    best = None
+    for b in np.unique(block[block >= 0]):
+        nodes = np.unique(conn[block == b])
+        touching = nodes[on[nodes]]
+        if len(touching) == 0:
+            continue
+        z = x[touching, 2].mean()
+        if best is None or z < best[1]:
+            best = (int(b), z, x[nodes, 2].mean() <= z)
+    return (best[0], best[2]) if best else (None, True)
+
+
+def cut_for_view(source, view_kind, centre, h5_path, k):
+    """(the filtered source, seen from below?): contact, the half body y >= y_c (its cut face seen from
+    -y, x to the right); top, the block holding the slave nodes in contact (from below when it is the
+    upper one); whole, the source as it is."""
+    if view_kind == "contact":
+        clip = Clip(Input=source)
+        clip.ClipType = "Plane"
+        clip.ClipType.Origin = list(centre)
+        clip.ClipType.Normal = [0.0, 1.0, 0.0]
+        clip.Invert = 0
+        return clip, False
+    if view_kind == "top":
+        block, below = slave_block(h5_path, k)
+        if block is not None:
+            only = Threshold(Input=source)  # the slave block alone: its contact face unhidden
+            only.Scalars = ["CELLS", "block_id"]
+            only.LowerThreshold = only.UpperThreshold = block
+            source = only
+        return source, not below
+    return source, False
+
+
+def frame(view, view_kind, centre, radius, extent, from_below):
+    """The camera. Contact and top views: framed on the contact region (half height 3 contact radii,
+    at least 8 % of the model); right-handed screens: seen from -y with z up, from +z with y up, from
+    -z with y down, so x points right in each. Whole: an oblique view from the front-right, z up."""
+    view.CameraViewUp = [0, 0, 1]
+    if view_kind in ("contact", "top"):
+        view.CameraParallelProjection = 1
+        view.CameraFocalPoint = list(centre)
+        if view_kind == "contact":
+            view.CameraPosition = [centre[0], centre[1] - 4.0 * extent, centre[2]]
+        else:
+            view.CameraPosition = [centre[0], centre[1], centre[2] + (-4.0 if from_below else 4.0) * extent]
+            view.CameraViewUp = [0, -1, 0] if from_below else [0, 1, 0]
+        view.CameraParallelScale = builtins.max(3.0 * radius, 0.08 * extent)
+    else:
+        view.CameraPosition = [1, -1.6, 1.2]
+        view.ResetCamera()
+
+
+def colour(display, view, source, array, component_arg, field, field_unit, where):
+    """Colours `display` by `array` (association, name) with Viridis and a titled colour bar (unit,
+    range); returns (bar, lo, hi)."""
+    association, colour_name = array
+    array_info = (source.PointData if association == "POINTS" else source.CellData).GetArray(colour_name)
+    if array_info is None:
+        sys.exit(f"error: {where}: field '{colour_name}' not found")
+    if array_info.GetNumberOfComponents() == 1:
+        ColorBy(display, (association, colour_name))
+        component = None
+    elif component_arg == "Magnitude":
+        ColorBy(display, (association, colour_name, "Magnitude"))
+        component = -1
+    else:
+        component = int(component_arg)
+        ColorBy(display, (association, colour_name, str(component)))
+    lo, hi = array_info.GetRange(-1 if component is None else component)
+    lut = GetColorTransferFunction(colour_name)
+    lut.ApplyPreset("Viridis (matplotlib)", True)
+    if component is not None and component >= 0:
+        lut.VectorMode, lut.VectorComponent = "Component", component
+    display.RescaleTransferFunctionToDataRange(False, True)
+    if component == -1 or component is None:
+        lo, hi = lut.RGBPoints[0], lut.RGBPoints[-4]
+    display.SetScalarBarVisibility(view, True)
+    bar = GetScalarBar(lut, view)
+    title = "von Mises stress" if field == "von_mises" else field.replace("_", " ")
+    what = "" if component is None else (" magnitude" if component == -1 else f" component {component}")
+    bar.Title = title + what + (f" [{field_unit}]" if field_unit and field_unit != "1" else "")
+    bar.ComponentTitle = ""  # else ParaView appends "Magnitude" or the component index
+    bar.RangeLabelFormat = "%-#.3g"
+    bar.LabelFormat = "%-#.3g"
+    bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+    bar.TitleFontSize, bar.LabelFontSize = 18, 16
+    bar.ScalarBarLength = 0.4
+    bar.WindowLocation = "Upper Right Corner"  # in the contact view the gap beside the tip stays white there
+    return bar, lo, hi
+
+
+def parse_args():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("xdmf", help="results.xdmf written by tribex (any path; made absolute)")
     p.add_argument("field", nargs="?", help="field to colour by (default von_mises, or displacement)")
@@ -104,11 +214,16 @@ def main():
     g.add_argument("--time", type=float, help="time value (s); the nearest step is shown")
     g.add_argument("--step", type=int, help="0-based step index (negative counts from the end)")
     p.add_argument("--component", default="Magnitude", help="component index or Magnitude")
-    p.add_argument("--view", choices=["contact", "whole"], help="framing (default: contact when there is contact)")
+    p.add_argument("--view", choices=["contact", "top", "whole"],
+                   help="framing (default: contact when there is contact); top: the contact pressure from above")
     p.add_argument("--warp", type=float, default=1.0, help="displacement scale of the deformed shape (0: undeformed)")
     p.add_argument("--edges", action="store_true", help="draw the element edges")
     p.add_argument("--size", default="1024x768", help="image size WxH in pixels")
-    a = p.parse_args()
+    return p.parse_args()
+
+
+def main():
+    a = parse_args()
 
     path = os.path.abspath(a.xdmf)  # Xdmf readers resolve the .h5 wrongly from a bare name
     if not os.path.isfile(path):
@@ -118,11 +233,15 @@ def main():
     except ValueError:
         sys.exit(f"error: --size {a.size}: expected WxH, e.g. 1024x768")
     unit, h5_path, fields = xdmf_facts(path)
-    field = a.field or ("von_mises" if "stress" in fields else "displacement")
+    if a.view == "top" and not a.field and "contact_pressure" not in fields:
+        sys.exit(f"error: {path}: --view top shows contact_pressure, which the run did not write; add it to "
+                 "the deck's 'nodal variables' (or name another FIELD)")
+    default = "contact_pressure" if a.view == "top" else ("von_mises" if "stress" in fields else "displacement")
+    field = a.field or default
     field = re.sub(r" \[.*\]$", "", field)
     if field != "von_mises" and field not in fields and field != "block_id":
         sys.exit(f"error: {path}: no field '{field}'; the file has {', '.join(sorted(fields))}, von_mises")
-    if field == "von_mises" and "stress" not in fields:
+    if field == "von_mises" and "von_mises" not in fields and "stress" not in fields:
         sys.exit(f"error: {path}: von_mises needs the stress field; the file has {', '.join(sorted(fields))}")
 
     reader = XDMFReader(FileNames=[path])
@@ -162,7 +281,7 @@ def main():
         source.ScaleFactor = a.warp
 
     colour_name, association = None, None
-    if field == "von_mises":
+    if field == "von_mises" and "von_mises" not in fields:  # files without the von_mises field
         vm = ProgrammableFilter(Input=source)
         vm.Script = VON_MISES.format(name=fields["stress"][0])
         source, colour_name, association, field_unit = vm, "von_mises", "CELLS", fields["stress"][1] or "Pa"
@@ -182,16 +301,10 @@ def main():
         centre, radius = contact_region(h5_path, k, (PER_METRE[shown_unit] / PER_METRE[unit]))
     if view_kind is None:
         view_kind = "contact" if centre is not None else "whole"
-    if view_kind == "contact" and centre is None:
-        sys.exit(f"error: --view contact: step {k} has no node in contact")
+    if view_kind in ("contact", "top") and centre is None:
+        sys.exit(f"error: --view {view_kind}: step {k} has no node in contact")
 
-    if view_kind == "contact":
-        clip = Clip(Input=source)  # the half body y <= y_c: its cut face shows the field inside
-        clip.ClipType = "Plane"
-        clip.ClipType.Origin = list(centre)
-        clip.ClipType.Normal = [0.0, 1.0, 0.0]
-        clip.Invert = 1
-        source = clip
+    source, from_below = cut_for_view(source, view_kind, centre, h5_path, k)
 
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [width, height]
@@ -205,55 +318,19 @@ def main():
     display = Show(source, view)
     display.SetRepresentationType("Surface With Edges" if a.edges else "Surface")
     source.UpdatePipeline(t)
-    array_info = (source.PointData if association == "POINTS" else source.CellData).GetArray(colour_name)
-    if array_info is None:
-        sys.exit(f"error: {path}: field '{colour_name}' not found at step {k}")
-    if array_info.GetNumberOfComponents() == 1:
-        ColorBy(display, (association, colour_name))
-        component = None
-    elif a.component == "Magnitude":
-        ColorBy(display, (association, colour_name, "Magnitude"))
-        component = -1
-    else:
-        component = int(a.component)
-        ColorBy(display, (association, colour_name, str(component)))
-    lo, hi = array_info.GetRange(-1 if component is None else component)
-    lut = GetColorTransferFunction(colour_name)
-    lut.ApplyPreset("Viridis (matplotlib)", True)
-    if component is not None and component >= 0:
-        lut.VectorMode, lut.VectorComponent = "Component", component
-    display.RescaleTransferFunctionToDataRange(False, True)
-    if component == -1 or component is None:
-        lo, hi = lut.RGBPoints[0], lut.RGBPoints[-4]
-    display.SetScalarBarVisibility(view, True)
-    bar = GetScalarBar(lut, view)
-    title = "von Mises stress" if field == "von_mises" else field.replace("_", " ")
-    what = "" if component is None else (" magnitude" if component == -1 else f" component {component}")
-    bar.Title = title + what + (f" [{field_unit}]" if field_unit and field_unit != "1" else "")
-    bar.ComponentTitle = ""  # else ParaView appends "Magnitude" or the component index
-    bar.RangeLabelFormat = "%-#.3g"
-    bar.LabelFormat = "%-#.3g"
-    bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
-    bar.TitleFontSize, bar.LabelFontSize = 18, 16
-    bar.ScalarBarLength = 0.4
-    bar.WindowLocation = "Upper Right Corner"  # in the contact view the gap beside the tip stays white there
+    bar, lo, hi = colour(display, view, source, (association, colour_name), a.component, field, field_unit,
+                         f"{path} at step {k}")
 
     Render(view)  # the first render resets the camera: frame the picture after it
-    view.CameraViewUp = [0, 0, 1]
-    if view_kind == "contact":
-        # Framed on the contact region: half height 3 contact radii, at least 8 % of the model.
-        half = builtins.max(3.0 * radius, 0.08 * extent)
-        view.CameraParallelProjection = 1
-        view.CameraFocalPoint = list(centre)
-        view.CameraPosition = [centre[0], centre[1] + 4.0 * extent, centre[2]]
-        view.CameraParallelScale = half
-    else:
-        view.CameraPosition = [1, -1.6, 1.2]  # an oblique view from the front-right, z up
-        view.ResetCamera()
+    frame(view, view_kind, centre, radius, extent, from_below)
     Render(view)
     SaveScreenshot(a.png, view, ImageResolution=[width, height], TransparentBackground=0)
     info = source.GetDataInformation()
-    print(f"{a.png}: {bar.Title} at step {k}, t={t:g} s, view {view_kind}, lengths in {shown_unit}"
+    # The screen's right-hand direction, (focal point - camera) x view up: where the x axis points.
+    look = np.subtract(view.CameraFocalPoint, view.CameraPosition)
+    right = np.cross(look, view.CameraViewUp)
+    x_side = "x to the right" if right[0] > 0.5 * np.linalg.norm(right) else "x NOT to the right"
+    print(f"{a.png}: {bar.Title} at step {k}, t={t:g} s, view {view_kind} ({x_side}), lengths in {shown_unit}"
           + (f", contact radius {radius:.3g} {shown_unit}" if centre is not None else "")
           + f"; colour range {lo:.4g} .. {hi:.4g}; {info.GetNumberOfPoints()} points, {info.GetNumberOfCells()} cells shown")
 

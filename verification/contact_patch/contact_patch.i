@@ -98,8 +98,8 @@ begin sierra contact_patch
       end history output hist
       begin results output fields
         time increment = 100 ps
-        nodal variables = displacement contact_traction contact_status
-        element variables = stress
+        nodal variables = displacement contact_traction contact_status contact_pressure gap
+        element variables = stress von_mises
       end results output fields
     end presto region main
   end presto procedure press
