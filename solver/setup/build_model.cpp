@@ -392,7 +392,7 @@ struct Assembly {
       const double rho = materials::density_of(blk.material);
       for (int e = 0; e < blk.count; ++e) {
         const double share = rho * blk.volume0[e] / 8.0;
-        if (!(share > 0.0) && blk.volume0[e] > 0.0) throw underflowing_density(*fem, deck, blk.name, rho, blk.volume0[e]);
+        if (!(share > 0.0) && blk.volume0[e] > 0.0) throw underflowing_density(fem, deck, blk.name, rho, blk.volume0[e]);
         for (int I = 0; I < 8; ++I) model.mass[m.connectivity[8 * (blk.first_element + e) + I]] += share;
         model.total_mass += 8.0 * share;
       }
