@@ -44,6 +44,8 @@ from cli_errors import guarded, make_folder, require_executable, require_folder 
 MADE = []  # output folders this run created: removed again on bad input
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# The binary the repository builds, found from this file: the script runs from any working directory.
+BUILT_TRIBEX = os.path.join(HERE, "..", "..", "..", "build", "bin", "tribex")
 LOAD = 500e-9                      # N, as in make_decks.py
 HOLD_WINDOW = 20e-12               # s: the hold is checked over its last 20 ps
 STEADY_FROM = 1.0e-9               # m of sliding
@@ -166,7 +168,8 @@ def compare_runs(res, ref, label, tolerance=0.01):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--tribex", default="build/bin/tribex")
+    ap.add_argument("--tribex", default=os.path.normpath(BUILT_TRIBEX),
+                    help="the tribex binary (default: the repository's build/bin/tribex, from any working directory)")
     ap.add_argument("--variant", choices=["reduced", "full"], default="reduced")
     ap.add_argument("--out", default="afm_sliding_output")
     ap.add_argument("--plot", help="PNG: friction force and contact radius versus sliding position (Fig. 3.9)")
