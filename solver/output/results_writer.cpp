@@ -116,6 +116,11 @@ struct ResultsWriter::Impl {
                     const std::vector<FieldSpec>& spec, std::set<std::string>& seen) const;
   void write_field(hid_t group, const FieldView& f, long long entities, const std::string& path, bool nodal);
   bool open_for_resume(hid_t fapl, double resume_time);
+  // The constructor's steps: the folder and the file can be made (rank 0 probes, every rank learns the
+  // outcome); the /mesh group of a new file.
+  void check_can_create(bool resume);
+  void write_mesh(const mesh::Mesh& mesh, const std::vector<int>& block_id, const std::vector<std::string>& names,
+                  bool holds_mesh, const ResultsOptions& options);
 };
 
 namespace {
@@ -286,6 +291,76 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
     output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols, h5_path + ":" + path);
 }
 
+void ResultsWriter::Impl::check_can_create(bool resume) {
+  // Rank 0 makes the folder and probes the file; every rank learns the outcome (one error, the
+  // same on every rank, instead of ranks waiting in a collective create).
+  std::error_code ec;
+  int status[2] = {1, 1};  // folder ok, file ok
+  std::string reason;
+  if (root) {
+    std::filesystem::create_directories(directory, ec);
+    status[0] = !ec && std::filesystem::is_directory(directory);
+    if (!status[0]) reason = ec ? ec.message() : std::string("a file of that name exists");
+    // fopen first: HDF5's own failure message is a multi-line stack without the errno text.
+    // A resumed run appends to an existing file ("ab" creates none and truncates nothing).
+    std::FILE* probe = status[0] ? std::fopen(h5_path.c_str(), resume ? "ab" : "wb") : nullptr;
+    if (probe) std::fclose(probe);
+    status[1] = probe != nullptr;
+    if (status[0] && !status[1]) reason = std::strerror(errno);
+  }
+  if (parallel) {
+    parallel::broadcast(status, 2, 0);
+    parallel::broadcast(reason, 0);
+  }
+  if (!status[0])
+    throw SetupError("cannot create output directory '" + directory + "': " + reason +
+                     "; choose another output directory or fix its permissions");
+  if (!status[1])
+    throw SetupError("cannot create results file '" + h5_path + "': " + reason +
+                     "; choose another output directory or fix its permissions");
+}
+
+void ResultsWriter::Impl::write_mesh(const mesh::Mesh& mesh, const std::vector<int>& block_id,
+                                     const std::vector<std::string>& names, bool holds_mesh,
+                                     const ResultsOptions& options) {
+  const std::string& p = h5_path;
+  const long long n = nodes, e = elements;
+  hid_t f = file.get();
+  H5Handle g = output::create_group(f, "/mesh", p);
+  output::create_group(f, "/steps", p);
+  output::write_string_attribute(g.get(), "connectivity_order",
+                                 "hex8 as VTK_HEXAHEDRON / docs/theory.md 2.1, 0-based node indices", p);
+  // The unit of the coordinates and of every length field (readers: README "Units").
+  output::write_string_attribute(f, "length_unit", unit.name, p);
+  if (!options.run_id.empty()) output::write_string_attribute(f, "run_id", options.run_id, p);
+  if (!options.mesh_sha256.empty()) output::write_string_attribute(f, "mesh_sha256", options.mesh_sha256, p);
+  // Parallel: the mesh is written once, by rank 0 (the others take part with no rows).
+  const auto write_all = [&](hid_t d, hid_t type, const void* data, hsize_t rows, hsize_t cols, const std::string& what) {
+    if (!parallel) return output::write_rows(d, type, data, 0, rows, cols, what);
+    std::vector<std::array<hsize_t, 2>> runs;
+    if (root) runs.push_back({0, rows});
+    output::write_row_runs(d, type, data, runs, cols, what);
+  };
+  const int z = gzip_level;
+  std::vector<double> xyz_in_unit(holds_mesh ? mesh.coordinates : std::vector<double>{});
+  for (double& x : xyz_in_unit) x *= unit.per_metre;
+  H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p, z);
+  output::write_string_attribute(xyz.get(), "units", unit.name, p);
+  write_all(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), n, 3, p + ":/mesh/coordinates");
+  H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p, z);
+  output::write_string_attribute(conn.get(), "units", "1", p);  // node indices
+  write_all(conn.get(), H5T_NATIVE_INT, mesh.connectivity.data(), e, 8, p + ":/mesh/connectivity");
+  H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p, z);
+  output::write_string_attribute(bid.get(), "units", "1", p);  // block indices
+  write_all(bid.get(), H5T_NATIVE_INT, block_id.data(), e, 0, p + ":/mesh/block_id");
+  std::string joined;
+  for (std::size_t b = 0; b < names.size(); ++b) {
+    if (b > 0) joined += '\n';
+    joined += names[b];
+  }
+  output::write_string_attribute(bid.get(), "block_names", joined, p);  // line b names block_id b
+}
+
 ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab,
                              std::optional<double> resume_time, const ResultsOptions& options) {
   if (mesh.coordinates.size() % 3 != 0 || mesh.connectivity.size() % 8 != 0)
@@ -317,32 +392,7 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     impl_->element_rows = slab->element_rows;
   }
 
-  // Rank 0 makes the folder and probes the file; every rank learns the outcome (one error, the
-  // same on every rank, instead of ranks waiting in a collective create).
-  std::error_code ec;
-  int status[2] = {1, 1};  // folder ok, file ok
-  std::string reason;
-  if (impl_->root) {
-    std::filesystem::create_directories(directory, ec);
-    status[0] = !ec && std::filesystem::is_directory(directory);
-    if (!status[0]) reason = ec ? ec.message() : std::string("a file of that name exists");
-    // fopen first: HDF5's own failure message is a multi-line stack without the errno text.
-    // A resumed run appends to an existing file ("ab" creates none and truncates nothing).
-    std::FILE* probe = status[0] ? std::fopen(impl_->h5_path.c_str(), resume_time ? "ab" : "wb") : nullptr;
-    if (probe) std::fclose(probe);
-    status[1] = probe != nullptr;
-    if (status[0] && !status[1]) reason = std::strerror(errno);
-  }
-  if (impl_->parallel) {
-    parallel::broadcast(status, 2, 0);
-    parallel::broadcast(reason, 0);
-  }
-  if (!status[0])
-    throw SetupError("cannot create output directory '" + directory + "': " + reason +
-                     "; choose another output directory or fix its permissions");
-  if (!status[1])
-    throw SetupError("cannot create results file '" + impl_->h5_path + "': " + reason +
-                     "; choose another output directory or fix its permissions");
+  impl_->check_can_create(resume_time.has_value());
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   if (impl_->parallel) H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL);
   if (resume_time && std::filesystem::file_size(impl_->h5_path) > 0 && impl_->open_for_resume(fapl.get(), *resume_time)) {
@@ -359,41 +409,7 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
                      "': HDF5 H5Fcreate failed (is another run writing it? HDF5 locks open files)");
 
   try {
-    const std::string& p = impl_->h5_path;
-    hid_t f = impl_->file.get();
-    H5Handle g = output::create_group(f, "/mesh", p);
-    output::create_group(f, "/steps", p);
-    output::write_string_attribute(g.get(), "connectivity_order",
-                                   "hex8 as VTK_HEXAHEDRON / docs/theory.md 2.1, 0-based node indices", p);
-    // The unit of the coordinates and of every length field (readers: README "Units").
-    output::write_string_attribute(f, "length_unit", impl_->unit.name, p);
-    if (!options.run_id.empty()) output::write_string_attribute(f, "run_id", options.run_id, p);
-    if (!options.mesh_sha256.empty()) output::write_string_attribute(f, "mesh_sha256", options.mesh_sha256, p);
-    // Parallel: the mesh is written once, by rank 0 (the others take part with no rows).
-    const auto write_all = [&](hid_t d, hid_t type, const void* data, hsize_t rows, hsize_t cols, const std::string& what) {
-      if (!impl_->parallel) return output::write_rows(d, type, data, 0, rows, cols, what);
-      std::vector<std::array<hsize_t, 2>> runs;
-      if (impl_->root) runs.push_back({0, rows});
-      output::write_row_runs(d, type, data, runs, cols, what);
-    };
-    const int z = impl_->gzip_level;
-    std::vector<double> xyz_in_unit(holds_mesh ? mesh.coordinates : std::vector<double>{});
-    for (double& x : xyz_in_unit) x *= impl_->unit.per_metre;
-    H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p, z);
-    output::write_string_attribute(xyz.get(), "units", impl_->unit.name, p);
-    write_all(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), n, 3, p + ":/mesh/coordinates");
-    H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p, z);
-    output::write_string_attribute(conn.get(), "units", "1", p);  // node indices
-    write_all(conn.get(), H5T_NATIVE_INT, mesh.connectivity.data(), e, 8, p + ":/mesh/connectivity");
-    H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p, z);
-    output::write_string_attribute(bid.get(), "units", "1", p);  // block indices
-    write_all(bid.get(), H5T_NATIVE_INT, block_id.data(), e, 0, p + ":/mesh/block_id");
-    std::string joined;
-    for (std::size_t b = 0; b < names.size(); ++b) {
-      if (b > 0) joined += '\n';
-      joined += names[b];
-    }
-    output::write_string_attribute(bid.get(), "block_names", joined, p);  // line b names block_id b
+    impl_->write_mesh(mesh, block_id, names, holds_mesh, options);
     flush();
   } catch (const std::runtime_error& err) {
     throw SetupError(err.what());

@@ -38,7 +38,7 @@ const char* top_usage =
   "  --youngs 161GPa --poisson 0.23  tip and substrate (Si); uncoated models use 1/E* = 2/Ebar\n"            \
   "  --reduced-modulus E*            E* for dmt/jkr/cos/md instead\n"                                        \
   "  coated: --coating-youngs 8GPa --coating-poisson 0.4 --coating-thickness 2nm\n"                          \
-  "          --coating-table verification/coated/results.csv (ebar_c_over_ebar,A,b[,A_sigma,b_sigma],\n"     \
+  "          --coating-table CSV (default: the repository's verification/coated/results.csv; ebar_c_over_ebar,A,b[,A_sigma,b_sigma],\n"     \
   "          interpolated in ln(Ebar_c/Ebar)) or --A A --b b; f = min(1, max(f_deep, A P~^b))\n"             \
   "  cos:    --alpha A (fixed; fitted when absent)     md: --lambda L | --z0 Z (lambda from W)\n"            \
   "  --z0 Z (default 0.3nm) also sets the Tabor parameter mu_T of the fit: dmt and coated assume DMT and\n"    \
@@ -86,7 +86,7 @@ FrictionSetup parse_setup(Args& a, const std::string& cmd) {
     if (!(*A > 0)) throw BadInput(cmd + ": --A must be > 0");
     s.area_law = AreaLawConstants{*A, *b, 0.0, 0.0};
   } else if (s.model == AreaModel::coated) {
-    s.table = CoatingTable::read(table.value_or("verification/coated/results.csv"));
+    s.table = CoatingTable::read(table.value_or(TRIBEX_COATED_RESULTS));  // the repository's table, any working directory
   } else if (table) {
     throw BadInput(cmd + ": --coating-table applies to --model coated only");
   }
