@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The result fields (`nodal variables`, `element variables` of `begin results output`) as one
 // table: name, kind, components, SI unit, one-line definition, getter. The deck schema's allowed
-// values (schema.cpp), the fields a run writes (solver/deck_run_loop.cpp write_fields), their
+// values (schema.cpp), the fields a run writes (solver/run/deck_run_loop.cpp write_fields), their
 // names in results.h5/.xdmf and results.exo, and `tribex run --list-fields` all come from it, so a
 // field is added here as one row and nowhere else (solver/output/README.md, "Result fields").
 //

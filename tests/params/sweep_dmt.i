@@ -1,4 +1,4 @@
-# sweep_dmt.i -- the small DMT indentation of tests/parallel/sweep_dmt.i (R = 27 nm silicon sphere on a
+# sweep_dmt.i -- the small DMT indentation of tests/parallel/mpi_dmt.i (R = 27 nm silicon sphere on a
 # silicon flat, 1.6 nm elements, Lennard-Jones adhesion z0 = 0.3 nm, a 1.2 nm cycloidal push in 30 ps,
 # then held to 40 ps) with its work of adhesion as a deck parameter, for the --set sweep of
 # tests/params/ (sweep.py: W = 0, 0.05, 0.1 J/m^2 and the W = 0 run against model = frictionless).
