@@ -6,7 +6,10 @@
 #   ./tribex.sh test-slow   the `slow` verification variants as well
 #   ./tribex.sh sanitize    ASan+UBSan build of the unit and bad-input tests in build-asan/, run them
 #   ./tribex.sh build       set-up and build only
+#   ./tribex.sh python SCRIPT [ARGS]  /usr/bin/python3 with tools/python on the path (`import tribex`),
+#                           in the caller's working directory
 set -euo pipefail
+CALLER_PWD=$PWD
 cd "$(dirname "$0")"
 ROOT=$PWD
 
@@ -84,6 +87,12 @@ case "$cmd" in
       || { cat build-asan/configure.log; exit 1; }
     cmake --build build-asan -j2
     ASAN_OPTIONS=detect_leaks=1 ctest --test-dir build-asan -j2 --output-on-failure -L "unit|bad_input" ;;
+  python)
+    # The Python package (tools/python/tribex) for the user's own scripts; the binary it drives is
+    # build/bin/tribex (./tribex.sh build first).
+    shift
+    cd "$CALLER_PWD"
+    PYTHONPATH="$ROOT/tools/python${PYTHONPATH:+:$PYTHONPATH}" exec /usr/bin/python3 "$@" ;;
   *)
-    echo "usage: ./tribex.sh demo|test|test-slow|sanitize|build" >&2; exit 2 ;;
+    echo "usage: ./tribex.sh demo|test|test-slow|sanitize|build|python SCRIPT" >&2; exit 2 ;;
 esac
