@@ -7,7 +7,9 @@
       binary, e.g. a verification deck's CTest fixture); every history column (or the listed ones) must agree:
       max |a - b| over the rows <= R * max |a| of the column (of the vector, for a component
       NAME_x/_y/_z; of all energies, for an energy; absolute for energy_error); --fields also compares every
-      dataset of results.h5 (gathered fields must land in global order).
+      dataset of results.h5 (gathered fields must land in global order). With --reference, --termination T
+      runs the N-rank deck only to T and compares it with the reference's rows up to T (a cheaper check of
+      the same code paths where the deck's first part already exercises them).
   parallel_check.py restart TRIBEX DECK OUT --ranks N --stop STEP
       runs DECK uninterrupted, then stopped after STEP (exit 130, restart file) and resumed with
       --restart OUT/restart.h5 into the same folder: history.csv must be byte-identical; where the
@@ -37,6 +39,7 @@ import csv
 import os
 import shutil
 import subprocess
+import re
 import sys
 
 
@@ -93,6 +96,10 @@ def agree(a):
     for d in ((parallel,) if a.reference else (serial, parallel)):
         shutil.rmtree(d, ignore_errors=True)
     deck = with_decomposition(a)
+    if a.termination:  # with --reference only: the N-rank run stops early, compared on the rows it has
+        with open(deck) as f:
+            text = f.read()
+        deck = deck_copy(a, re.sub(r"termination time = [^\n#]*", f"termination time = {a.termination}", text, count=1))
     if not a.reference:
         run(a.tribex, deck, serial, 1)
     run(a.tribex, deck, parallel, a.ranks)
@@ -106,6 +113,14 @@ def agree(a):
             sys.exit(f"FAIL: the partition line does not say '{a.expect_partition}'")
     h1, r1 = read(os.path.join(serial, "history.csv"))
     h2, r2 = read(os.path.join(parallel, "history.csv"))
+    if a.termination:
+        # The shortened run's rows are the full run's first rows (the same steps: the termination time
+        # enters the step only at the last one), except its final row at the new end: dropped.
+        r2 = r2[:-1]
+        if len(r2) >= len(r1) or any(x[1] != y[1] for x, y in zip(r1, r2)):
+            sys.exit("FAIL: the shortened run's rows are not the first rows of the reference (times differ)")
+        r1 = r1[:len(r2)]
+        print(f"--termination {a.termination}: the first {len(r2)} rows of the reference compared")
     if h1 != h2 or len(r1) != len(r2):
         sys.exit(f"FAIL: histories differ in shape ({len(r1)} vs {len(r2)} rows)")
     columns = a.columns.split(",") if a.columns else h1[1:]
