@@ -25,6 +25,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import pyplot  # noqa: E402  (matplotlib, Agg: imported after the inputs are checked)
+from cli_errors import fail, guarded, read_csv_rows  # noqa: E402
 
 FORCES = ["contact_normal_force", "compressive_force", "adhesive_force", "contact_tangential_force", "friction_force"]
 ENERGIES = ["kinetic_energy", "internal_energy", "hourglass_energy", "external_work", "contact_work",
@@ -35,19 +36,8 @@ RADII = ["contact_radius", "contact_radius_edge", "contact_radius_pressure_fit",
 PREFIX = [(1e-18, "a"), (1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "u"), (1e-3, "m"), (1.0, "")]
 
 
-def fail(message):
-    print(f"error: {message}", file=sys.stderr)
-    sys.exit(2)
-
-
 def read(history):
-    try:
-        with open(history, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        fail(f"{history}: {e.strerror}; give a run's output folder or its history.csv")
-    if not rows:
-        fail(f"{history} has no data rows (the run wrote no history interval yet)")
+    rows = read_csv_rows(history, "a tribex history.csv", "give a run's output folder or its history.csv")
     units = {}
     beside = os.path.join(os.path.dirname(history), "history_columns.csv")
     if os.path.isfile(beside):
@@ -131,4 +121,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(guarded(main))
