@@ -12,21 +12,14 @@
 #include <vector>
 
 #include "tools/cli/commands.hpp"
-#include "tools/cli/error_mapping.hpp"
+#include "tests/support/cli_capture.hpp"
 
 namespace {
 
 const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tribex_adhesion_cli_test";
 
 std::pair<int, std::string> run(const std::vector<std::string>& args) {
-  std::FILE* err = std::tmpfile();
-  const int code = tribex::cli::run_mapping_errors([&] { return tribex::cli::adhesion_curve_command(args); }, err);
-  std::rewind(err);
-  std::string text;
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, err)) text += buf;
-  std::fclose(err);
-  return {code, text};
+  return tribex::test::run_capturing_stderr([&] { return tribex::cli::adhesion_curve_command(args); });
 }
 
 std::string header_of(const std::filesystem::path& p, int& rows) {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "tools/cli/commands.hpp"
-#include "tools/cli/error_mapping.hpp"
+#include "tests/support/cli_capture.hpp"
 #include "tools/fit/coating_table.hpp"
 
 namespace {
@@ -20,14 +20,7 @@ namespace {
 const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tribex_layered_cli_test";
 
 std::pair<int, std::string> run(const std::vector<std::string>& args) {
-  std::FILE* err = std::tmpfile();
-  const int code = tribex::cli::run_mapping_errors([&] { return tribex::cli::layered_command(args); }, err);
-  std::rewind(err);
-  std::string text;
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, err)) text += buf;
-  std::fclose(err);
-  return {code, text};
+  return tribex::test::run_capturing_stderr([&] { return tribex::cli::layered_command(args); });
 }
 
 const std::vector<std::string> case1 = {"--radius", "27nm", "--thickness", "2nm", "--layer-youngs", "8GPa",
