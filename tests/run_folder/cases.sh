@@ -151,10 +151,14 @@ item14_path_too_long_or_no_descriptors)
   expect_rc 2 "$T" run "$W" -o "$out" --quiet
   [ -z "$(ls -A base)" ] || fail "the refused run left $(ls -A base) in base"
   expect_err "(PATH_MAX)"
-  expect_rc 2 sh -c "ulimit -n 5; exec '$T' run '$W' -o U --quiet"
-  [ ! -e U ] || fail "the refused run left U: $(ls -A U)"
-  grep -q "free space" err.txt && fail "the message blames free space"
-  expect_err "too many open files (ulimit -n)"
+  # The descriptor limit: not in the sanitizer build (TRIBEX_SANITIZED, tests/run_folder/CMakeLists.txt),
+  # whose runtime probes memory through a pipe and, with no descriptor left, reports a false invalid vptr.
+  if [ -z "${TRIBEX_SANITIZED:-}" ]; then
+    expect_rc 2 sh -c "ulimit -n 5; exec '$T' run '$W' -o U --quiet"
+    [ ! -e U ] || fail "the refused run left U: $(ls -A U)"
+    grep -q "free space" err.txt && fail "the message blames free space"
+    expect_err "too many open files (ulimit -n)"
+  fi
   ;;
 item15_mesh_extensions)
   afm="$SRC/inputs/data/afm/di-1.di --channel 0 --window 187.5nm,187.5nm,8nm,8nm --element-size 2nm --depth 8nm"
