@@ -18,16 +18,8 @@ using namespace tribex::adhesion;
 
 const double e_star = 85e9, z0 = 0.3e-9, work = 0.05;
 
-// A problem at Tabor parameter mu (R = mu^3 E*^2 z0^3/W^2), cut-off 20 z0, penalty 1000 E*/z0.
-Problem at_tabor(double mu) {
-  Problem pb;
-  pb.e_star = e_star;
-  pb.law.law = {work, z0, 20 * z0};
-  pb.law.penalty = 1000 * e_star / z0;
-  pb.contact_gap = 0.05 * z0;
-  pb.radius = mu * mu * mu * e_star * e_star * z0 * z0 * z0 / (work * work);
-  return pb;
-}
+// A problem at Tabor parameter mu (tools/adhesion/solver.hpp problem_at_tabor).
+Problem at_tabor(double mu) { return problem_at_tabor(mu, e_star, work, z0); }
 
 Curve traced(const Problem& pb, double max_load_bar = 3, double resolution = 8) {
   CurveSettings set;

@@ -53,12 +53,7 @@ TEST(AdhesionRegression, PullOffAgainstTaborParameterAsCommitted) {
   for (const auto& r : rows) {
     ASSERT_EQ(r.size(), 10u);
     const double mu = r[0];
-    Problem pb;
-    pb.e_star = e_star;
-    pb.law.law = {work, z0, 20 * z0};
-    pb.law.penalty = 1000 * e_star / z0;
-    pb.contact_gap = 0.05 * z0;
-    pb.radius = mu * mu * mu * e_star * e_star * z0 * z0 * z0 / (work * work);
+    Problem pb = problem_at_tabor(mu, e_star, work, z0);
     CurveSettings set;
     set.max_load = M_PI * pb.law.captured_work() * pb.radius;
     const Curve c = trace_curve(pb, set);

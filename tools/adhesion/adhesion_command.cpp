@@ -86,8 +86,7 @@ Problem parse_problem(Args& a, CurveSettings& set) {
   if (radius && tabor) throw BadInput("tribex adhesion-curve: give --radius or --tabor, not both");
   if (tabor && !(*tabor >= 1e-3 && *tabor <= 30 && law.work > 0))
     throw BadInput("tribex adhesion-curve: --tabor takes 0.001..30 and needs --work > 0");
-  pb.radius = tabor ? std::pow(*tabor, 3) * pb.e_star * pb.e_star * std::pow(law.z0, 3) / (law.work * law.work)
-                    : radius.value_or(27e-9);
+  pb.radius = tabor ? radius_at_tabor(*tabor, pb.e_star, law.work, law.z0) : radius.value_or(27e-9);
   if (!(pb.radius > 0)) throw BadInput("tribex adhesion-curve: --radius must be > 0 (e.g. --radius 27nm)");
   pb.contact_gap = a.quantity("--contact-gap", law.work > 0 ? 0.05 * law.z0 : 0.0, dim::length);
   if (!(pb.contact_gap >= 0 && pb.contact_gap < 0.2 * law.z0))

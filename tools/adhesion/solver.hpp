@@ -19,6 +19,24 @@ struct Problem {
   double contact_gap = 0;  // g_j, m: in contact where g <= g_j (the FE's `junction gap tolerance`, default 0.05 z0)
 };
 
+/// The sphere radius at Tabor parameter mu: mu_T = (R W^2 / (E*^2 z0^3))^(1/3) (docs/theory.md 6.7)
+/// solved for R, m.
+inline double radius_at_tabor(double mu, double e_star, double work, double z0) {
+  return mu * mu * mu * e_star * e_star * z0 * z0 * z0 / (work * work);
+}
+
+/// The reference problem the tests and the regression table use at Tabor parameter mu: the law's default
+/// cut-off 20 z0, a hard-contact penalty 1000 E*/z0, in contact where g <= 0.05 z0.
+inline Problem problem_at_tabor(double mu, double e_star, double work, double z0) {
+  Problem pb;
+  pb.e_star = e_star;
+  pb.law.law = {work, z0, 20 * z0};
+  pb.law.penalty = 1000 * e_star / z0;
+  pb.contact_gap = 0.05 * z0;
+  pb.radius = radius_at_tabor(mu, e_star, work, z0);
+  return pb;
+}
+
 /// Ring edges (0 = edges[0] < ... < edges.back() = r_max) and collocation midpoints.
 struct Grid {
   std::vector<double> edges, points;
