@@ -17,12 +17,16 @@ Runs `TRIBEX run DECK -o OUT`, then checks the first output (t = 0, nothing move
 
 usage: check_fields_gap.py TRIBEX DECK OUT
 """
+import pathlib
 import subprocess
 import sys
 
 import h5py
 import netCDF4
 import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import report_failures  # noqa: E402
 
 
 def main():
@@ -74,10 +78,7 @@ def main():
             problems.append("results.exo lacks gap, contact_pressure or von_mises")
         elif not (np.abs(g[top] - 1.0).max() < 1e-12 and np.all(np.isnan(g[~top]))):
             problems.append("results.exo's gap is not 1 nm on the slave nodes and NaN elsewhere")
-    for p in problems:
-        print("FAIL:", p)
-    print("PASS" if not problems else "FAIL")
-    return 1 if problems else 0
+    return report_failures(problems, verdict=True)
 
 
 if __name__ == "__main__":

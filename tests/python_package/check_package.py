@@ -24,6 +24,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 import numpy as np  # noqa: E402
 
 import tribex  # noqa: E402
+from history_checks import report_failures  # noqa: E402
 
 DECK = str(pathlib.Path(__file__).resolve().parents[1] / "params" / "sweep_dmt.i")
 VALUES = ["0 J/m^2", "0.05 J/m^2", "0.1 J/m^2"]
@@ -94,10 +95,7 @@ def main():
         failures.append("a missing binary was accepted")
     except tribex.TribexError as e:
         print(f"missing binary: {e}")
-    for f in failures:
-        print("FAIL:", f)
-    print("PASS" if not failures else "FAIL")
-    return 1 if failures else 0
+    return report_failures(failures, verdict=True)
 
 
 if __name__ == "__main__":

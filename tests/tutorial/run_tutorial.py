@@ -12,10 +12,14 @@ ratio 0.300, the tutorial's figures within 2 %, the sweep's adhesive pull growin
 Exit 0 when all holds, 1 otherwise.
 """
 import os
+import pathlib
 import re
 import shutil
 import subprocess
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from history_checks import report_failures  # noqa: E402
 
 
 def blocks(text):
@@ -55,10 +59,9 @@ def main():
     for png in ("tutorial_output/history.png", "tutorial_output/section.png"):
         if not os.path.isfile(os.path.join(work, png)) or os.path.getsize(os.path.join(work, png)) < 1000:
             failures.append(f"{png} missing or empty")
-    for f in failures:
-        print("FAIL:", f)
-    print("OK: every command of docs/tutorial.md ran and printed what it says" if not failures else "")
-    return 1 if failures else 0
+    if not failures:
+        print("OK: every command of docs/tutorial.md ran and printed what it says")
+    return report_failures(failures)
 
 
 if __name__ == "__main__":
