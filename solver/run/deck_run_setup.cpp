@@ -16,6 +16,7 @@
 #include "solver/run/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
 #include "solver/parallel/partition.hpp"
+#include "solver/restart/isolated_read.hpp"
 #include "solver/restart/restart_checks.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 
@@ -204,7 +205,7 @@ void DeckRun::start_from_restart() {
   if (options_.restart_path.empty()) return;
   std::exception_ptr error;
   try {
-    resume_ = read_restart_file(options_.restart_path);
+    resume_ = read_isolated(options_.restart_path, [&] { return read_restart_file(options_.restart_path); });
     const std::string changed = restart_difference(*resume_, deck_.resolved_text, mesh_hash_);
     if (!changed.empty() && !options_.restart_allow_changed)
       throw SetupError(options_.restart_path + ": error: this restart file was written by another run: " + changed +
