@@ -23,7 +23,8 @@ std::string mpirun_stop_grace_note(double needed, const std::string& basis) {
   return format("note: after a SIGTERM or SIGINT to mpirun, Open MPI kills the ranks %g s later (2 x "
                 "odls_base_sigkill_timeout) and this run needs about %.3g s to stop (%s): start mpirun with "
                 "OMPI_MCA_odls_base_sigkill_timeout=%d in the environment, or stop the run with SIGUSR1 to mpirun "
-                "(forwarded at once, no time limit)",
+                "(forwarded at once, no time limit), or start it with tribex run --ranks N, which forwards a "
+                "SIGTERM or SIGINT to it as SIGUSR1",
                 grace, needed, basis.c_str(), timeout < 1 ? 1 : timeout);
 }
 

@@ -279,7 +279,12 @@ def sigterm(a):
     if a.sigkill_timeout:
         env["OMPI_MCA_odls_base_sigkill_timeout"] = str(a.sigkill_timeout)
     grace = 2 * (a.sigkill_timeout or 1)  # SIGCONT, SIGTERM after the timeout, SIGKILL after another
-    job = subprocess.Popen(launcher(a.ranks) + [a.tribex, "run", deck, "-o", cut], env=env,
+    # --via-tribex: `tribex run --ranks N` starts mpirun itself and is the process signalled.
+    command = ([a.tribex, "run", "--ranks", str(a.ranks), deck, "-o", cut] if a.via_tribex
+               else launcher(a.ranks) + [a.tribex, "run", deck, "-o", cut])
+    if a.via_tribex:
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    job = subprocess.Popen(command, env=env,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1)
     # Signal once the ranks are in the time-step loop: rank 0 prints "running ..." as it enters it.
     before = []
@@ -313,14 +318,18 @@ def sigterm(a):
     # mpiexec's own code: SIGUSR1 is forwarded and mpiexec ends with the ranks' 130; after SIGTERM or
     # SIGINT Open MPI 4.1 exits 1 whatever the ranks return (its clean_abort sets the status, and the
     # kill sequence cancels the wait for the ranks' codes: docs/architecture.md "Signals").
-    expected = 130 if a.signal == "USR1" else 1
+    # `tribex run --ranks N` forwards any of them as SIGUSR1 and exits with the ranks' 130.
+    expected = 130 if a.signal == "USR1" or a.via_tribex else 1
     if job.returncode != expected:
-        sys.exit(f"FAIL: mpiexec exited {job.returncode}, expected {expected}\n{output}")
+        sys.exit(f"FAIL: {'tribex run --ranks' if a.via_tribex else 'mpiexec'} exited {job.returncode}, "
+                 f"expected {expected}\n{output}")
+    if a.via_tribex and "SIGUSR1" not in reason:
+        sys.exit(f"FAIL: the ranks did not stop at the forwarded SIGUSR1 (log.txt: {reason})")
     # The ranks stop at mpiexec's first signal (SIGCONT for SIGTERM/SIGINT), not at the SIGTERM that comes
     # odls_base_sigkill_timeout later: log.txt names it, and with a timeout set summary.json is written
     # before it (with the default 1 s the margin is too small to time on a loaded machine).
     late = a.sigkill_timeout and written >= a.sigkill_timeout
-    if a.signal != "USR1" and ("SIGCONT from mpirun" not in reason or late):
+    if a.signal != "USR1" and not a.via_tribex and ("SIGCONT from mpirun" not in reason or late):
         sys.exit(f"FAIL: the ranks did not stop at mpiexec's SIGCONT (summary.json {written:.2f} s after the signal)")
     rows, steps = valid_outputs(cut)
     print(f"valid outputs: {rows} history rows, {steps} results steps")
@@ -369,6 +378,8 @@ def main():
     ap.add_argument("--expect", default="")
     ap.add_argument("--serial-restart-at", type=int, default=-1)
     ap.add_argument("--termination", default="")
+    ap.add_argument("--via-tribex", action="store_true",
+                    help="sigterm: start the run with `tribex run --ranks N` and signal that process, not mpiexec")
     ap.add_argument("--signal", default="TERM", choices=["TERM", "INT", "USR1"], help="sigterm: the signal for mpiexec")
     ap.add_argument("--sigkill-timeout", type=int, default=0,
                     help="sigterm: OMPI_MCA_odls_base_sigkill_timeout for mpiexec (0: Open MPI's default, 1 s)")

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `tribex run DECK [-o OUTDIR] [--quiet]` and `tribex check DECK`.
+#include <cstdlib>
 #include <filesystem>
 
 #include "inputs/diagnostics.hpp"
@@ -9,6 +10,7 @@
 #include "solver/output/output_tables.hpp"
 #include "solver/run/run.hpp"
 #include "tools/cli/commands.hpp"
+#include "tools/cli/rank_launcher.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
 
@@ -17,7 +19,7 @@ namespace {
 
 const char* run_usage =
     "tribex run DECK [-o OUTDIR] [--quiet] [--restart FILE [--restart-allow-changed]] [--stop-at-step N]\n"
-    "           [--heartbeat SECONDS] [--set NAME=VALUE ...]\n"
+    "           [--heartbeat SECONDS] [--set NAME=VALUE ...] [--ranks N]\n"
     "tribex run --list-columns | --list-summary-keys | --list-fields\n"
     "  Runs an input deck. Outputs go to OUTDIR (default ./<deck name>_output): history.csv,\n"
     "  results.h5 + results.xdmf (open the .xdmf in ParaView), summary.json, log.txt.\n"
@@ -32,6 +34,9 @@ const char* run_usage =
     "            (wall time, default 60; 0: none; with --quiet to log.txt only)\n"
     "  --set NAME=VALUE replace the value of the deck's parameter {NAME = ...} (repeatable; VALUE an\n"
     "            expression with units, a plain number is SI: --set W=0.06, --set \"R=20 nm\"; inputs/README.md)\n"
+    "  --ranks N   run on N MPI ranks: starts mpirun -np N and stays its parent; a SIGINT/SIGTERM to this\n"
+    "            command stops the ranks cleanly (outputs valid, restart file) and it exits 130. Same as\n"
+    "            mpirun -np N tribex run ..., whose own exit code after SIGTERM is Open MPI's 1\n"
     "  --list-columns   print every column history.csv can have, with its unit and definition\n"
     "            (history_columns.csv beside each history.csv lists a run's own), and exit\n"
     "  --list-summary-keys   print every key of summary.json (energies.NAME, warnings[].NAME,\n"
@@ -118,13 +123,21 @@ int run_command(const std::vector<std::string>& argv) {
   const long stop_at = args.integer("--stop-at-step", -1);
   const double heartbeat = args.real("--heartbeat", 60.0);
   const auto settings = parameter_settings(args, "tribex run");
+  const long ranks = args.integer("--ranks", 1);
   args.finish();
   one_deck(args, "tribex run");
+  if (ranks < 1 || ranks > 1'000'000)
+    throw tools::BadInput("tribex run: option --ranks expects a number of MPI ranks in [1, 1000000], got " +
+                          std::to_string(ranks));
+  if (ranks > 1 && std::getenv("OMPI_COMM_WORLD_SIZE"))
+    throw tools::BadInput("tribex run: --ranks starts mpirun itself; under mpirun give the rank count to mpirun "
+                          "(-np N) and leave --ranks out");
   if (stop_at < 0 && args_has_stop(argv))
     throw tools::BadInput("tribex run: option --stop-at-step expects a step number >= 0, got " + std::to_string(stop_at));
   if (!(heartbeat >= 0.0))
     throw tools::BadInput("tribex run: option --heartbeat expects a number of seconds >= 0 (0 turns the heartbeat off)");
   const inputs::Deck deck = inputs::parse_deck_file(deck_path, settings);
+  if (ranks > 1) return run_under_mpirun(static_cast<int>(ranks), without_ranks_option(argv));
   solver::RunOptions options;
   options.quiet = quiet;
   if (restart) options.restart_path = *restart;
