@@ -8,12 +8,9 @@ namespace tribex::materials::every_model {
 
 bool run_four_lanes(const Material& m, int lanes, double* values) {
 #ifdef __AVX2__
-  std::visit([&](const auto& model) { run_at_width<double4>(model, lanes, values); }, m);
-  return true;
-#else
-  (void)m, (void)lanes, (void)values;
-  return false;
+  return run_material_at_width<double4>(m, lanes, values);
 #endif
+  return (void)m, (void)lanes, (void)values, false;  // not built for this width
 }
 
 }  // namespace tribex::materials::every_model

@@ -84,6 +84,13 @@ void run_at_width(const M& m, int lanes, double* out) {
   }
 }
 
+/// run_at_width<T> for whichever model `m` holds; true (for the wider widths' files, every_model_lanes.hpp).
+template <class T>
+bool run_material_at_width(const Material& m, int lanes, double* out) {
+  std::visit([&](const auto& model) { run_at_width<T>(model, lanes, out); }, m);
+  return true;
+}
+
 /// The lane runs in the order the lone points give them (run_at_width groups them by register).
 inline std::vector<double> by_point(const std::vector<double>& values, int lanes, int width, int per_point) {
   std::vector<double> out(values.size());

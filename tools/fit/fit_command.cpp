@@ -14,6 +14,7 @@
 #include "tools/common/args.hpp"
 #include "tools/common/csv_record.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/subcommands.hpp"
 #include "tools/common/fit_report.hpp"
 #include "tools/common/panel_plot.hpp"
 #include "tools/fit/friction_fit.hpp"
@@ -298,14 +299,7 @@ namespace tribex::cli {
 
 int fit_command(const std::vector<std::string>& args) {
   using namespace tribex::fit;
-  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-    std::fprintf(args.empty() ? stderr : stdout, "%s", top_usage);
-    return args.empty() ? tools::exit_bad_input : tools::exit_ok;
-  }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "friction") return friction_command(rest);
-  if (args[0] == "synth") return synth_command(rest);
-  throw tools::BadInput("tribex fit: unknown subcommand '" + args[0] + "' (use friction or synth; see --help)");
+  return tools::run_subcommand(args, "tribex fit", top_usage, {{"friction", friction_command}, {"synth", synth_command}});
 }
 
 }  // namespace tribex::cli

@@ -13,6 +13,7 @@
 #include "tools/cli/commands.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/subcommands.hpp"
 #include "tools/common/json.hpp"
 #include "tools/friction_test/calibration.hpp"
 #include "tools/friction_test/dynamic_friction.hpp"
@@ -493,17 +494,9 @@ namespace tribex::cli {
 
 int friction_test_command(const std::vector<std::string>& args) {
   using namespace tribex::friction_test;
-  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-    std::fprintf(args.empty() ? stderr : stdout, "%s", top_usage);
-    return args.empty() ? tools::exit_bad_input : tools::exit_ok;
-  }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "calibrate") return calibrate(rest);
-  if (args[0] == "static") return static_friction(rest);
-  if (args[0] == "dynamic") return dynamic_friction(rest);
-  if (args[0] == "synth") return synth(rest);
-  throw tools::BadInput("tribex friction-test: unknown subcommand '" + args[0] +
-                        "' (use calibrate, static, dynamic or synth; see --help)");
+  return tools::run_subcommand(args, "tribex friction-test", top_usage,
+                               {{"calibrate", calibrate}, {"static", static_friction}, {"dynamic", dynamic_friction},
+                                {"synth", synth}});
 }
 
 }  // namespace tribex::cli

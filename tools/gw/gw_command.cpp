@@ -9,6 +9,7 @@
 #include "tools/common/args.hpp"
 #include "tools/common/tabor.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/subcommands.hpp"
 #include "tools/common/text_file.hpp"
 #include "contact/rough/gw_integrals.hpp"
 #include "contact/rough/noncontact_attraction.hpp"
@@ -262,14 +263,8 @@ int figures(const std::vector<std::string>& argv) {
 }  // namespace
 
 int gw_command(const std::vector<std::string>& args) {
-  if (args.empty()) throw BadInput("tribex gw needs a subcommand: fn, curve, tangential or figures (see tribex gw --help)");
-  if (args[0] == "--help" || args[0] == "-h") { std::fputs(gw_usage, stdout); return tools::exit_ok; }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "fn") return fn(rest);
-  if (args[0] == "curve") return curve(rest);
-  if (args[0] == "tangential") return tangential(rest);
-  if (args[0] == "figures") return figures(rest);
-  throw BadInput("tribex gw: unknown subcommand '" + args[0] + "' (use fn, curve, tangential or figures)");
+  return tools::run_subcommand(args, "tribex gw", gw_usage,
+                               {{"fn", fn}, {"curve", curve}, {"tangential", tangential}, {"figures", figures}});
 }
 
 }  // namespace tribex::cli

@@ -11,6 +11,7 @@
 #include "mesh/afm/preprocess.hpp"
 #include "tools/common/args.hpp"
 #include "tools/common/errors.hpp"
+#include "tools/common/subcommands.hpp"
 #include "tools/common/text_file.hpp"
 #include "tools/surface/mccool.hpp"
 #include "tools/surface/spectral_moments.hpp"
@@ -338,13 +339,7 @@ int surface_command(const std::vector<std::string>& args) {
       "       tribex surface mccool FILE1 [FILE2] ...  McCool GW table for two surfaces in contact\n"
       "       tribex surface contact FILE ...          discrete Hertz/DMT GW over the map's own summits (CSV)\n"
       "(tribex surface SUB --help for details)\n";
-  if (args.empty()) throw BadInput(std::string("tribex surface needs a subcommand: stats, mccool or contact (see tribex surface --help)"));
-  if (args[0] == "--help" || args[0] == "-h") { std::fputs(usage, stdout); return tools::exit_ok; }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "stats") return stats(rest);
-  if (args[0] == "mccool") return mccool(rest);
-  if (args[0] == "contact") return contact(rest);
-  throw BadInput("tribex surface: unknown subcommand '" + args[0] + "' (use stats, mccool or contact)");
+  return tools::run_subcommand(args, "tribex surface", usage, {{"stats", stats}, {"mccool", mccool}, {"contact", contact}});
 }
 
 }  // namespace tribex::cli
