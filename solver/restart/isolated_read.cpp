@@ -52,6 +52,7 @@ class PipeReader {
   explicit PipeReader(std::vector<char> data) : data_(std::move(data)) {}
   void bytes(void* p, std::size_t n) {
     if (n > data_.size() - at_) throw std::length_error("short");
+    if (n == 0) return;  // an empty array's data() may be null, and memcpy's arguments may not
     std::memcpy(p, data_.data() + at_, n);
     at_ += n;
   }
