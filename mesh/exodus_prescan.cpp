@@ -88,6 +88,11 @@ class Walk {
     if (n > 256) fail("a netCDF name of " + std::to_string(n) + " characters (netCDF allows 256); the header is damaged");
     if (n > b_.size() - at_) cut();
     std::string s = b_.substr(at_, static_cast<std::size_t>(n));
+    // The C libraries end a name at a NUL: 'num_nodes\0_s' would be a second 'num_nodes' to them, and
+    // Exodus would size the coordinates by one and read them by the other (a fuzz finding).
+    if (const auto nul = s.find('\0'); nul != std::string::npos)
+      fail("the netCDF header is damaged (the name '" + s.substr(0, nul) +
+           "' is followed by a NUL byte and more characters; netCDF names hold none): a damaged or crafted file");
     skip(n);
     return s;
   }

@@ -140,6 +140,7 @@ item16_exodus_messages)
   expect_rc 2 "$T" mesh convert cut_header.exo out.msh
   expect_err "truncated: the file ends (1000 bytes) inside its netCDF header"
   craft duplicate_dimension "the netCDF header is damaged (two dimensions named 'num_nod_ns8')"
+  craft nul_in_name "the netCDF header is damaged (the name 'num_nodes' is followed by a NUL byte"
   craft not_exodus "a netCDF file, but not an Exodus II mesh (it has no dimension 'num_dim')"
   ;;
 item16_deck_and_mesh_messages)

@@ -8,6 +8,9 @@ usage: craft_exodus.py SRC DST elements|name_length|cut|not_exodus
   cut:         the first half of the file
   duplicate_dimension: dimension num_nod_ns9 renamed num_nod_ns8 (the first fuzz finding: the libraries
                misread it and read_exodus crashed)
+  nul_in_name: dimension num_node_sets renamed 'num_nodes\\0\\0_s' (the second fuzz finding, 2026-11-29: the C
+               libraries end the name at the NUL, see two dimensions 'num_nodes', and ex_get_coord wrote 363
+               coordinates into 14 places)
   not_exodus:  a netCDF classic file with one dimension and variable, no Exodus structure (SRC unused)
 """
 import struct
@@ -39,6 +42,11 @@ elif kind == "duplicate_dimension":
     if marker not in data:
         sys.exit("craft_exodus.py: no dimension num_nod_ns9")
     data = data.replace(marker, b"\x00\x00\x00\x0bnum_nod_ns8", 1)
+elif kind == "nul_in_name":
+    marker = b"\x00\x00\x00\x0dnum_node_sets"
+    if marker not in data:
+        sys.exit("craft_exodus.py: no dimension num_node_sets")
+    data = data.replace(marker, b"\x00\x00\x00\x0dnum_nodes\x00\x00_s", 1)
 elif kind == "cut":
     data = data[: len(data) // 2]
 open(dst, "wb").write(data)
