@@ -14,6 +14,7 @@
 #include <set>
 #include <vector>
 
+#include "mesh/exodus_shapes.hpp"
 #include "mesh/mesh_error.hpp"
 
 namespace tribex::mesh {
@@ -43,7 +44,7 @@ class Walk {
       if (!h.dimensions.emplace(names[i], lengths[i] == 0 ? records : lengths[i]).second)
         fail("the netCDF header is damaged (two dimensions named '" + names[i] + "')");
     list(0x0C, [&] { attribute(); });
-    list(0x0B, [&] { variable(lengths); });
+    list(0x0B, [&] { variable(lengths, names); });
     // The records: each holds at least the record variables' values; all but the last are complete in a
     // file of `records` records (the last may be partly written).
     const bool streaming = records == (version_ == 5 ? ~0ull : 0xFFFFFFFFull);
@@ -54,6 +55,9 @@ class Walk {
              std::to_string(static_cast<unsigned long long>(end)) + " bytes, but the file has " +
              std::to_string(file_size_) + " (an interrupted copy or write?): copy or write it again");
     }
+    // ex_get_info reads len_line characters per record into buffers of 81 (the format's fixed length).
+    if (const auto line = h.dimensions.find("len_line"); line != h.dimensions.end() && line->second > 81)
+      fail("its dimension 'len_line' is " + std::to_string(line->second) + " where Exodus II has 81: a damaged or crafted file");
     // Exodus II: every file has these (ex_open needs them); a netCDF file without them is another kind.
     for (const char* d : {"num_dim", "num_nodes", "num_elem", "num_el_blk"})
       if (!h.dimensions.count(d))
@@ -78,6 +82,11 @@ class Walk {
     return v;
   }
   std::uint64_t count() { return word(version_ == 5 ? 8 : 4); }
+  static std::string joined(const std::vector<std::string>& names) {
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+    return s;
+  }
   void skip(std::uint64_t n) {
     const std::uint64_t padded = n + (4 - n % 4) % 4;
     if (n > b_.size() || padded > b_.size() - at_) cut();
@@ -120,19 +129,25 @@ class Walk {
     if (n > b_.size()) cut();
     skip(n * size);
   }
-  void variable(const std::vector<std::uint64_t>& lengths) {
+  void variable(const std::vector<std::uint64_t>& lengths, const std::vector<std::string>& dimension_names) {
     const std::string var = name();
     if (!variables_.insert(var).second) fail("the netCDF header is damaged (two variables named '" + var + "')");
     const std::uint64_t rank = count();
     if (rank > 1024) fail("variable '" + var + "' has " + std::to_string(rank) + " dimensions; the header is damaged");
     long double values = 1;
     bool record = false;
+    std::vector<std::string> dims;
     for (std::uint64_t k = 0; k < rank; ++k) {
       const std::uint64_t id = count();
       if (id >= lengths.size()) fail("variable '" + var + "' refers to dimension " + std::to_string(id) + " of " + std::to_string(lengths.size()) + "; the header is damaged");
       if (lengths[id] == 0) record = true;
       else values *= static_cast<long double>(lengths[id]);
+      dims.push_back(dimension_names[id]);
     }
+    // The Exodus library sizes its reads of this variable by the format's dimensions, ours by the same.
+    if (const auto expected = exodus_dimensions_of(var); !expected.empty() && dims != expected)
+      fail("variable '" + var + "' has the dimensions (" + joined(dims) + ") where Exodus II has (" + joined(expected) +
+           "): a damaged or crafted file");
     list(0x0C, [&] { attribute(); });
     const std::uint64_t size = type_size(word(4));
     if (size == 0) fail("variable '" + var + "' has an unknown netCDF type; the header is damaged");

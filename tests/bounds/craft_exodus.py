@@ -11,6 +11,8 @@ usage: craft_exodus.py SRC DST elements|name_length|cut|not_exodus
   nul_in_name: dimension num_node_sets renamed 'num_nodes\\0\\0_s' (the second fuzz finding, 2026-11-29: the C
                libraries end the name at the NUL, see two dimensions 'num_nodes', and ex_get_coord wrote 363
                coordinates into 14 places)
+  coord_dimension: coordx declared over a new dimension 100 x num_nodes (the library filled a num_nodes buffer
+               from it: a segmentation fault before the header walk checked the variables' dimensions)
   not_exodus:  a netCDF classic file with one dimension and variable, no Exodus structure (SRC unused)
 """
 import struct
@@ -31,6 +33,23 @@ if kind == "not_exodus":
     with netCDF4.Dataset(dst, "w", format="NETCDF3_64BIT_OFFSET") as f:
         f.createDimension("x", 4)
         f.createVariable("temperature", "f8", ("x",))[:] = [1.0, 2.0, 3.0, 4.0]
+    sys.exit(0)
+if kind == "coord_dimension":
+    import netCDF4
+    import numpy
+    with netCDF4.Dataset(src) as f, netCDF4.Dataset(dst, "w", format=f.file_format) as g:
+        wide = 100 * len(f.dimensions["num_nodes"])
+        for name, d in f.dimensions.items():
+            g.createDimension(name, None if d.isunlimited() else len(d))
+        g.createDimension("num_nodes_wide", wide)
+        g.setncatts({k: f.getncattr(k) for k in f.ncattrs()})
+        for name, v in f.variables.items():
+            w = g.createVariable(name, v.dtype, ("num_nodes_wide",) if name == "coordx" else v.dimensions)
+            w.setncatts({k: v.getncattr(k) for k in v.ncattrs()})
+            v.set_auto_mask(False)
+            values = numpy.resize(v[:], wide) if name == "coordx" else v[:]
+            if values.size:
+                w[:] = values
     sys.exit(0)
 data = open(src, "rb").read()
 if kind == "elements":
