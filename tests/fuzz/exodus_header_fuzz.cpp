@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/fuzz/skip_library_teardown.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/exodus_prescan.hpp"
 #include "mesh/mesh_error.hpp"

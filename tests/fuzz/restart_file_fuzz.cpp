@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/fuzz/skip_library_teardown.hpp"
 #include "inputs/deck.hpp"
 #include "solver/errors.hpp"
 #include "solver/restart/isolated_read.hpp"
