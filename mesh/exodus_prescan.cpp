@@ -43,7 +43,7 @@ class Walk {
     for (std::size_t i = 0; i < names.size(); ++i)  // netCDF names are unique (the libraries misread duplicates)
       if (!h.dimensions.emplace(names[i], lengths[i] == 0 ? records : lengths[i]).second)
         fail("the netCDF header is damaged (two dimensions named '" + names[i] + "')");
-    list(0x0C, [&] { attribute(); });
+    list(0x0C, [&] { attribute(true); });
     list(0x0B, [&] { variable(lengths, names); });
     // The records: each holds at least the record variables' values; all but the last are complete in a
     // file of `records` records (the last may be partly written).
@@ -122,11 +122,20 @@ class Walk {
     if (n > b_.size()) cut();  // each item takes at least 4 bytes of the header
     for (std::uint64_t i = 0; i < n; ++i) item();
   }
-  void attribute() {
-    name();
+  /// One attribute; `global`: of the file, where Exodus reads some into a single value.
+  void attribute(bool global) {
+    const std::string att = name();
     const std::uint64_t size = type_size(word(4)), n = count();
     if (size == 0) fail("the netCDF header is damaged (an attribute of an unknown type)");
     if (n > b_.size()) cut();
+    // ex_open reads these into one int or float on its stack: more values would overwrite it (a fuzz
+    // finding: int64_status with 141 values, "stack smashing detected" inside ex_open).
+    if (global && n != 1 && exodus_scalar_attribute(att))
+      fail("its global attribute '" + att + "' holds " + std::to_string(n) +
+           " values where Exodus II has one: a damaged or crafted file");
+    // ex_get_block reads a block's element type into a buffer of MAX_STR_LENGTH + 1 (33) characters.
+    if (!global && att == "elem_type" && n > 32)
+      fail("an element type name of " + std::to_string(n) + " characters (Exodus II allows 32): a damaged or crafted file");
     skip(n * size);
   }
   void variable(const std::vector<std::uint64_t>& lengths, const std::vector<std::string>& dimension_names) {
@@ -148,7 +157,7 @@ class Walk {
     if (const auto expected = exodus_dimensions_of(var); !expected.empty() && dims != expected)
       fail("variable '" + var + "' has the dimensions (" + joined(dims) + ") where Exodus II has (" + joined(expected) +
            "): a damaged or crafted file");
-    list(0x0C, [&] { attribute(); });
+    list(0x0C, [&] { attribute(false); });
     const std::uint64_t size = type_size(word(4));
     if (size == 0) fail("variable '" + var + "' has an unknown netCDF type; the header is damaged");
     count();  // vsize: not trusted (it saturates for > 4 GiB); the dimensions give the size

@@ -34,4 +34,11 @@ std::vector<std::string> exodus_dimensions_of(const std::string& name) {
   return {};
 }
 
+bool exodus_scalar_attribute(const std::string& name) {
+  for (const char* scalar : {"api_version", "api version", "version", "floating_point_word_size", "floating point word size",
+                             "file_size", "maximum_name_length", "int64_status", "last_written_time"})
+    if (name == scalar) return true;
+  return false;
+}
+
 }  // namespace tribex::mesh

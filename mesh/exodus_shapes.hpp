@@ -14,4 +14,8 @@ namespace tribex::mesh {
 /// num_el_in_blk3, num_nod_per_el3; ...); empty for a variable read_exodus does not read.
 std::vector<std::string> exodus_dimensions_of(const std::string& name);
 
+/// Whether the Exodus library reads global attribute `name` into a single value (version,
+/// floating_point_word_size, int64_status, ...): the file must hold exactly one.
+bool exodus_scalar_attribute(const std::string& name);
+
 }  // namespace tribex::mesh

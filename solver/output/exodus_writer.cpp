@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "mesh/exodus_io.hpp"
+#include "mesh/exodus_prescan.hpp"
 #include "mesh/mesh_error.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/mesh_outline.hpp"
@@ -160,6 +161,11 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
   const std::string fix = "; move it away or resume into another output folder (-o)";
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0;
+  try {  // the header walk of read_exodus first: the library trusts the file's sizes (mesh/README.md)
+    mesh::prescan_exodus_file(path);
+  } catch (const mesh::MeshError& e) {
+    throw SetupError(refuse + e.what() + fix);
+  }
   ex_opts(EX_DEFAULT);
   struct Closer {
     int id = -1;

@@ -131,6 +131,7 @@ item11_exodus_header_sizes)
   exodus_file
   craft elements "the header states 2000000000 elements and 363 nodes, which need at least 64000004356 bytes, but the file has"
   craft name_length "the header states names of up to 2000000000 characters (maximum_name_length); Exodus II allows 256"
+  craft attribute_values "its global attribute 'int64_status' holds 141 values where Exodus II has one: a damaged or crafted file"
   craft coord_dimension "variable 'coordx' has the dimensions (num_nodes_wide) where Exodus II has (num_nodes): a damaged or crafted file"
   ;;
 item16_exodus_messages)

@@ -13,6 +13,8 @@ usage: craft_exodus.py SRC DST elements|name_length|cut|not_exodus
                coordinates into 14 places)
   coord_dimension: coordx declared over a new dimension 100 x num_nodes (the library filled a num_nodes buffer
                from it: a segmentation fault before the header walk checked the variables' dimensions)
+  attribute_values: the global attribute int64_status with 141 values (ex_open reads it into one int on its
+               stack: "stack smashing detected", the third fuzz finding)
   not_exodus:  a netCDF classic file with one dimension and variable, no Exodus structure (SRC unused)
 """
 import struct
@@ -34,7 +36,9 @@ if kind == "not_exodus":
         f.createDimension("x", 4)
         f.createVariable("temperature", "f8", ("x",))[:] = [1.0, 2.0, 3.0, 4.0]
     sys.exit(0)
-if kind == "coord_dimension":
+def rewrite(src, dst, wide_coordx=False, attributes=None):
+    """A copy of the netCDF file SRC through the netCDF library, coordx declared over a new dimension of
+    100 x num_nodes values (wide_coordx), global attributes replaced by `attributes`."""
     import netCDF4
     import numpy
     with netCDF4.Dataset(src) as f, netCDF4.Dataset(dst, "w", format=f.file_format) as g:
@@ -42,14 +46,23 @@ if kind == "coord_dimension":
         for name, d in f.dimensions.items():
             g.createDimension(name, None if d.isunlimited() else len(d))
         g.createDimension("num_nodes_wide", wide)
-        g.setncatts({k: f.getncattr(k) for k in f.ncattrs()})
+        g.setncatts({**{k: f.getncattr(k) for k in f.ncattrs()}, **(attributes or {})})
         for name, v in f.variables.items():
-            w = g.createVariable(name, v.dtype, ("num_nodes_wide",) if name == "coordx" else v.dimensions)
+            widened = wide_coordx and name == "coordx"
+            w = g.createVariable(name, v.dtype, ("num_nodes_wide",) if widened else v.dimensions)
             w.setncatts({k: v.getncattr(k) for k in v.ncattrs()})
             v.set_auto_mask(False)
-            values = numpy.resize(v[:], wide) if name == "coordx" else v[:]
+            values = numpy.resize(v[:], wide) if widened else v[:]
             if values.size:
                 w[:] = values
+
+
+if kind == "coord_dimension":
+    rewrite(src, dst, wide_coordx=True)
+    sys.exit(0)
+if kind == "attribute_values":
+    import numpy
+    rewrite(src, dst, attributes={"int64_status": numpy.arange(141, dtype="i4")})
     sys.exit(0)
 data = open(src, "rb").read()
 if kind == "elements":
