@@ -172,6 +172,15 @@ item11_restart_damaged_group)
   one_line
   nothing_written R
   ;;
+item11_restart_crashes_libhdf5)
+  # A restart file on which libhdf5 1.10.8 itself segfaults (H5Literate -> H5B_iterate -> memcpy; the
+  # 10-minute restart fuzz run of 2026-11-29 wrote it): read in a child process, so the run exits 2
+  # naming the file, nothing written. Not run in the sanitizer build (the child's ASan report is not one line).
+  expect_rc 2 "$T" run "$MW" --restart "$SRC/tests/bounds/restart_crashes_libhdf5.h5" -o R --quiet
+  expect_err "restart_crashes_libhdf5.h5: error: restart file is damaged: reading it crashed the HDF5 reader (signal 11"
+  one_line
+  nothing_written R
+  ;;
 *)
   fail "unknown case $case_name"
   ;;
