@@ -1,8 +1,8 @@
 # counts_box_output.i -- rank 0's memory with field output on (issue 57 scope 3; tools/bench/README.md
 # "Counts per rank, results output on"): scaling_block.i's silicon block of 1 nm hex8 (mean
 # quadrature, elastic) at 80 x 80 x 80 (512,000 elements, 531,441 nodes), bottom fixed, top pulled
-# at 1 m/s; 0.3 ps = 5 steps; results.h5 at every step (displacement, velocity, stress: 28 MB of
-# values per output), so set-up and the first output steps are in the peak RSS.
+# at 1 m/s; 0.3 ps = 5 steps; results.h5 at every step (displacement, velocity, stress: 62.4 MB of
+# values per output, stress stored as 9 components), so set-up and the output steps are in the peak RSS.
 #
 # Run:    /usr/bin/python3 tools/bench/rank_counts.py build/bin/tribex tools/bench/counts_box_output.i OUT --ranks 1 4 --run
 begin sierra counts_box_output
