@@ -77,30 +77,44 @@ void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_off
     fail(what, "write");
 }
 
+RowSelection select_row_runs(hsize_t rows, hsize_t cols, const std::vector<std::array<hsize_t, 2>>& runs,
+                             const std::string& what) {
+  const hsize_t width = std::max<hsize_t>(cols, 1);
+  hsize_t mine = 0;
+  for (const auto& r : runs) mine += r[1];
+  const int rank = cols == 0 ? 1 : 2;
+  const hsize_t file_dims[2] = {rows, width}, mem_dims[2] = {std::max<hsize_t>(mine, 1), width};
+  RowSelection s{H5Handle(H5Screate_simple(rank, file_dims, nullptr), H5Sclose),
+                 H5Handle(H5Screate_simple(rank, mem_dims, nullptr), H5Sclose),
+                 H5Handle(H5Pcreate(H5P_DATASET_XFER), H5Pclose)};
+  if (!s.file_space.valid() || !s.mem_space.valid() || !s.dxpl.valid() ||
+      H5Pset_dxpl_mpio(s.dxpl.get(), H5FD_MPIO_COLLECTIVE) < 0)
+    fail(what, "prepare a collective write");
+  if (H5Sselect_none(s.file_space.get()) < 0) fail(what, "select no rows");
+  if (mine == 0 && H5Sselect_none(s.mem_space.get()) < 0) fail(what, "select no rows");
+  for (const auto& r : runs) {
+    if (r[1] == 0) continue;  // an empty run selects nothing (HDF5 refuses a zero count)
+    const hsize_t start[2] = {r[0], 0}, count[2] = {r[1], width};
+    if (H5Sselect_hyperslab(s.file_space.get(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
+      fail(what, "select rows");
+  }
+  return s;
+}
+
+void write_selected_rows(hid_t dataset, hid_t mem_type, const void* data, const RowSelection& selection,
+                         const std::string& what) {
+  static const double nothing[9] = {};  // HDF5 wants a buffer even when this rank writes no rows
+  if (H5Dwrite(dataset, mem_type, selection.mem_space.get(), selection.file_space.get(), selection.dxpl.get(),
+               data ? data : nothing) < 0)
+    fail(what, "write");
+}
+
 void write_row_runs(hid_t dataset, hid_t mem_type, const void* data, const std::vector<std::array<hsize_t, 2>>& runs,
                     hsize_t cols, const std::string& what) {
-  const hsize_t width = std::max<hsize_t>(cols, 1);
-  hsize_t rows = 0;
-  for (const auto& r : runs) rows += r[1];
-  H5Handle file_space(H5Dget_space(dataset), H5Sclose);
-  const hsize_t mem_dims[2] = {std::max<hsize_t>(rows, 1), width};
-  H5Handle mem_space(H5Screate_simple(cols == 0 ? 1 : 2, mem_dims, nullptr), H5Sclose);
-  H5Handle dxpl(H5Pcreate(H5P_DATASET_XFER), H5Pclose);
-  if (!file_space.valid() || !mem_space.valid() || !dxpl.valid() || H5Pset_dxpl_mpio(dxpl.get(), H5FD_MPIO_COLLECTIVE) < 0)
-    fail(what, "prepare a collective write");
-  if (rows == 0) {
-    if (H5Sselect_none(file_space.get()) < 0 || H5Sselect_none(mem_space.get()) < 0) fail(what, "select no rows");
-  } else {
-    H5Sselect_none(file_space.get());
-    for (const auto& r : runs) {
-      const hsize_t start[2] = {r[0], 0}, count[2] = {r[1], width};
-      if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
-        fail(what, "select rows");
-    }
-  }
-  static const double nothing[9] = {};  // HDF5 wants a buffer even when this rank writes no rows
-  if (H5Dwrite(dataset, mem_type, mem_space.get(), file_space.get(), dxpl.get(), data ? data : nothing) < 0)
-    fail(what, "write");
+  H5Handle space(H5Dget_space(dataset), H5Sclose);
+  hsize_t dims[2] = {0, 0};
+  if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0) fail(what, "read the shape");
+  write_selected_rows(dataset, mem_type, data, select_row_runs(dims[0], cols, runs, what), what);
 }
 
 void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what) {

@@ -87,6 +87,20 @@ void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_off
 void write_row_runs(hid_t dataset, hid_t mem_type, const void* data, const std::vector<std::array<hsize_t, 2>>& runs,
                     hsize_t cols, const std::string& what);
 
+/// This rank's rows of a [rows][cols] dataset (cols 0: one-dimensional) as the file and memory
+/// dataspaces of a collective write, with its transfer list: built once at set-up from the runs
+/// (a union of hyperslabs, none for a rank without rows) and reused by every write of a dataset of
+/// that shape, so that an output step rebuilds no selection.
+struct RowSelection {
+  H5Handle file_space, mem_space, dxpl;
+};
+RowSelection select_row_runs(hsize_t rows, hsize_t cols, const std::vector<std::array<hsize_t, 2>>& runs,
+                             const std::string& what);
+
+/// Collective write of this rank's rows (packed in run order in `data`) through a RowSelection.
+void write_selected_rows(hid_t dataset, hid_t mem_type, const void* data, const RowSelection& selection,
+                         const std::string& what);
+
 /// Writes a scalar double attribute `name` on `loc`.
 void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what);
 

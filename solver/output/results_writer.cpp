@@ -97,6 +97,9 @@ struct ResultsWriter::Impl {
   bool parallel = false, root = true;
   std::vector<std::array<hsize_t, 2>> node_runs, element_runs;
   long long node_rows = 0, element_rows = 0;
+  // Parallel: the selections of this rank's rows, one per (nodal, columns), built at set-up for the
+  // shapes the fields have (1, 3, 9 columns) and reused by every step (selection()).
+  std::vector<std::pair<std::array<hsize_t, 2>, output::RowSelection>> selections;
 
   Impl(std::string dir, long long n, long long e, std::vector<output::XdmfBlock> grids, output::LengthUnit length,
        int gzip)
@@ -119,9 +122,29 @@ struct ResultsWriter::Impl {
   // The constructor's steps: the folder and the file can be made (rank 0 probes, every rank learns the
   // outcome); the /mesh group of a new file.
   void check_can_create(bool resume);
-  void write_mesh(const mesh::Mesh& mesh, const std::vector<int>& block_id, const std::vector<std::string>& names,
-                  bool holds_mesh, const ResultsOptions& options);
+  void write_mesh(const MeshRows& rows, const std::vector<mesh::Block>& blocks, const ResultsOptions& options);
+  // The selection of this rank's rows of a nodal or element dataset of `cols` columns (0: scalar).
+  const output::RowSelection& selection(bool nodal, hsize_t cols);
 };
+
+// The mesh rows a rank writes: every row in a serial run, rank 0's whole mesh or nothing in the
+// whole-mesh parallel constructor, the rank's own rows (the slab's runs) in the distributed one.
+struct ResultsWriter::MeshRows {
+  const double* coordinates = nullptr;  // m, [row][3], packed in node_runs order
+  const int* connectivity = nullptr;    // global node indices, [row][8], packed in element_runs order
+  std::vector<std::array<hsize_t, 2>> node_runs, element_runs;
+  long long node_rows = 0, element_rows = 0;  // rows in the runs
+};
+
+const output::RowSelection& ResultsWriter::Impl::selection(bool nodal, hsize_t cols) {
+  const std::array<hsize_t, 2> key{nodal ? 1u : 0u, cols};
+  for (const auto& [k, s] : selections)
+    if (k == key) return s;
+  // A shape first met in the loop (a Matrix field of another width): built once, then kept.
+  selections.emplace_back(key, output::select_row_runs(static_cast<hsize_t>(nodal ? nodes : elements), cols,
+                                                        nodal ? node_runs : element_runs, h5_path));
+  return selections.back().second;
+}
 
 namespace {
 
@@ -286,7 +309,7 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
     data = tensor_buffer.data();
   }
   if (parallel)
-    output::write_row_runs(d.get(), H5T_NATIVE_DOUBLE, data, nodal ? node_runs : element_runs, cols, h5_path + ":" + path);
+    output::write_selected_rows(d.get(), H5T_NATIVE_DOUBLE, data, selection(nodal, cols), h5_path + ":" + path);
   else
     output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols, h5_path + ":" + path);
 }
@@ -320,8 +343,29 @@ void ResultsWriter::Impl::check_can_create(bool resume) {
                      "; choose another output directory or fix its permissions");
 }
 
-void ResultsWriter::Impl::write_mesh(const mesh::Mesh& mesh, const std::vector<int>& block_id,
-                                     const std::vector<std::string>& names, bool holds_mesh,
+namespace {
+
+// Block index (line of block_names) of each element row a rank writes, -1 for none; a later block
+// wins where blocks overlap (the XDMF then has one grid, grid_ranges).
+std::vector<int> block_ids_of_rows(const std::vector<mesh::Block>& blocks,
+                                   const std::vector<std::array<hsize_t, 2>>& element_runs, long long element_rows) {
+  std::vector<int> id(static_cast<std::size_t>(element_rows), -1);
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const long long first = blocks[b].first_element, end = first + blocks[b].element_count;
+    long long packed = 0;
+    for (const auto& r : element_runs) {
+      const long long lo = std::max<long long>(first, static_cast<long long>(r[0]));
+      const long long hi = std::min<long long>(end, static_cast<long long>(r[0] + r[1]));
+      for (long long e = lo; e < hi; ++e) id[static_cast<std::size_t>(packed + e - static_cast<long long>(r[0]))] = static_cast<int>(b);
+      packed += static_cast<long long>(r[1]);
+    }
+  }
+  return id;
+}
+
+}  // namespace
+
+void ResultsWriter::Impl::write_mesh(const MeshRows& rows, const std::vector<mesh::Block>& blocks,
                                      const ResultsOptions& options) {
   const std::string& p = h5_path;
   const long long n = nodes, e = elements;
@@ -334,29 +378,29 @@ void ResultsWriter::Impl::write_mesh(const mesh::Mesh& mesh, const std::vector<i
   output::write_string_attribute(f, "length_unit", unit.name, p);
   if (!options.run_id.empty()) output::write_string_attribute(f, "run_id", options.run_id, p);
   if (!options.mesh_sha256.empty()) output::write_string_attribute(f, "mesh_sha256", options.mesh_sha256, p);
-  // Parallel: the mesh is written once, by rank 0 (the others take part with no rows).
-  const auto write_all = [&](hid_t d, hid_t type, const void* data, hsize_t rows, hsize_t cols, const std::string& what) {
-    if (!parallel) return output::write_rows(d, type, data, 0, rows, cols, what);
-    std::vector<std::array<hsize_t, 2>> runs;
-    if (root) runs.push_back({0, rows});
-    output::write_row_runs(d, type, data, runs, cols, what);
+  // Parallel: every rank writes its rows (collective; a rank with none takes part with no rows).
+  const auto write_mine = [&](hid_t d, hid_t type, const void* data, bool nodal, hsize_t rows_in_file, hsize_t cols,
+                              const std::string& what) {
+    if (!parallel) return output::write_rows(d, type, data, 0, rows_in_file, cols, what);
+    output::write_row_runs(d, type, data, nodal ? rows.node_runs : rows.element_runs, cols, what);
   };
   const int z = gzip_level;
-  std::vector<double> xyz_in_unit(holds_mesh ? mesh.coordinates : std::vector<double>{});
+  std::vector<double> xyz_in_unit(rows.coordinates, rows.coordinates + 3 * rows.node_rows);
   for (double& x : xyz_in_unit) x *= unit.per_metre;
   H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p, z);
   output::write_string_attribute(xyz.get(), "units", unit.name, p);
-  write_all(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), n, 3, p + ":/mesh/coordinates");
+  write_mine(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), true, n, 3, p + ":/mesh/coordinates");
   H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p, z);
   output::write_string_attribute(conn.get(), "units", "1", p);  // node indices
-  write_all(conn.get(), H5T_NATIVE_INT, mesh.connectivity.data(), e, 8, p + ":/mesh/connectivity");
+  write_mine(conn.get(), H5T_NATIVE_INT, rows.connectivity, false, e, 8, p + ":/mesh/connectivity");
+  const std::vector<int> block_id = block_ids_of_rows(blocks, rows.element_runs, rows.element_rows);
   H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p, z);
   output::write_string_attribute(bid.get(), "units", "1", p);  // block indices
-  write_all(bid.get(), H5T_NATIVE_INT, block_id.data(), e, 0, p + ":/mesh/block_id");
+  write_mine(bid.get(), H5T_NATIVE_INT, block_id.data(), false, e, 0, p + ":/mesh/block_id");
   std::string joined;
-  for (std::size_t b = 0; b < names.size(); ++b) {
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
     if (b > 0) joined += '\n';
-    joined += names[b];
+    joined += blocks[b].name;
   }
   output::write_string_attribute(bid.get(), "block_names", joined, p);  // line b names block_id b
 }
@@ -367,21 +411,37 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     throw std::invalid_argument("ResultsWriter: mesh arrays are not [n][3] and [e][8]");
   // A parallel run: `mesh` is the whole mesh on rank 0 only; the others take its outline.
   const output::MeshOutline outline = output::outline_of(mesh, options.length_unit, slab != nullptr);
-  const bool holds_mesh = !slab || parallel::is_root();
-  const long long n = outline.nodes;
+  MeshRows rows;
+  if (!slab || parallel::is_root()) {  // the holder of the whole mesh writes all of it
+    rows = {mesh.coordinates.data(), mesh.connectivity.data(), {}, {}, mesh.node_count(), mesh.element_count()};
+    rows.node_runs.push_back({0, static_cast<hsize_t>(rows.node_rows)});
+    rows.element_runs.push_back({0, static_cast<hsize_t>(rows.element_rows)});
+  }
+  open(directory, outline, slab, resume_time, options, rows);
+}
+
+ResultsWriter::ResultsWriter(const std::string& directory, const output::MeshOutline& outline, const ResultsSlab& slab,
+                             const ResultsMeshRows& mesh_rows, std::optional<double> resume_time,
+                             const ResultsOptions& options) {
+  if (mesh_rows.coordinates.size() != 3 * static_cast<std::size_t>(slab.node_rows) ||
+      mesh_rows.connectivity.size() != 8 * static_cast<std::size_t>(slab.element_rows))
+    throw std::invalid_argument("ResultsWriter: the mesh rows are not the slab's [nodes][3] and [elements][8]");
+  MeshRows rows{mesh_rows.coordinates.data(), mesh_rows.connectivity.data(), {}, {}, slab.node_rows, slab.element_rows};
+  for (const auto& r : slab.node_runs) rows.node_runs.push_back({r[0], r[1]});
+  for (const auto& r : slab.element_runs) rows.element_runs.push_back({r[0], r[1]});
+  open(directory, outline, &slab, resume_time, options, rows);
+}
+
+void ResultsWriter::open(const std::string& directory, const output::MeshOutline& outline, const ResultsSlab* slab,
+                         std::optional<double> resume_time, const ResultsOptions& options, const MeshRows& rows) {
   const long long e = outline.elements;
-  std::vector<int> block_id(holds_mesh ? static_cast<std::size_t>(e) : 0, -1);
-  std::vector<std::string> names;
-  for (const auto& b : outline.blocks) {
+  for (const auto& b : outline.blocks)
     if (b.first_element < 0 || b.element_count < 0 || b.first_element + b.element_count > e)
       throw std::invalid_argument("ResultsWriter: block '" + b.name + "' runs past the last element");
-    if (holds_mesh)
-      for (int k = 0; k < b.element_count; ++k) block_id[static_cast<std::size_t>(b.first_element + k)] = static_cast<int>(names.size());
-    names.push_back(b.name);
-  }
   if (options.gzip_level < 0 || options.gzip_level > 9)
     throw std::invalid_argument("ResultsWriter: gzip level " + std::to_string(options.gzip_level) + " is not 0..9");
-  impl_ = std::make_unique<Impl>(directory, n, e, grid_ranges(outline.blocks, e), outline.unit, options.gzip_level);
+  impl_ = std::make_unique<Impl>(directory, outline.nodes, e, grid_ranges(outline.blocks, e), outline.unit,
+                                 options.gzip_level);
   QuietHdf5Errors quiet;
   if (slab) {
     impl_->parallel = true;
@@ -390,6 +450,12 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
     for (const auto& r : slab->element_runs) impl_->element_runs.push_back({r[0], r[1]});
     impl_->node_rows = slab->node_rows;
     impl_->element_rows = slab->element_rows;
+    try {
+      for (bool nodal : {true, false})
+        for (hsize_t cols : {0, 3, 9}) impl_->selection(nodal, cols);  // the fields' shapes, before the loop
+    } catch (const std::runtime_error& err) {
+      throw SetupError(err.what());
+    }
   }
 
   impl_->check_can_create(resume_time.has_value());
@@ -409,7 +475,7 @@ ResultsWriter::ResultsWriter(const std::string& directory, const mesh::Mesh& mes
                      "': HDF5 H5Fcreate failed (is another run writing it? HDF5 locks open files)");
 
   try {
-    impl_->write_mesh(mesh, block_id, names, holds_mesh, options);
+    impl_->write_mesh(rows, outline.blocks, options);
     flush();
   } catch (const std::runtime_error& err) {
     throw SetupError(err.what());

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "mesh/mesh.hpp"
+#include "solver/output/mesh_outline.hpp"
 
 namespace tribex::solver {
 
@@ -46,6 +47,15 @@ struct ResultsSlab {
   long long node_rows = 0, element_rows = 0;  // rows in the runs
 };
 
+/// Parallel runs without the whole mesh on any rank: this rank's rows of the mesh arrays, packed in
+/// the slab's run order: the owned nodes' coordinates (m, [row][3]) and its elements' connectivity in
+/// global node indices ([row][8]). Each rank writes them into its hyperslabs of /mesh, so results.h5
+/// holds exactly what a serial run writes.
+struct ResultsMeshRows {
+  std::vector<double> coordinates;
+  std::vector<int> connectivity;
+};
+
 /// Writes DIR/results.h5 and DIR/results.xdmf. The mesh is written once; every step references it.
 /// After the constructor and after every write_step the pair on disk is complete and readable
 /// (HDF5 flushed first, then the XDMF rewritten atomically by temp file + rename), so a crash
@@ -60,6 +70,13 @@ class ResultsWriter {
   /// continued file keeps its own length unit (files without one are in metres).
   ResultsWriter(const std::string& directory, const mesh::Mesh& mesh, const ResultsSlab* slab = nullptr,
                 std::optional<double> resume_time = std::nullopt, const ResultsOptions& options = {});
+  /// A parallel run's writer from this rank's rows alone (collective, every rank): `outline` the whole
+  /// mesh's counts, blocks and resolved length unit (the same on every rank; output::outline_of at
+  /// set-up), `rows` this rank's mesh rows in `slab`'s order. No rank needs the whole mesh; the
+  /// file is the same as the one the whole-mesh constructor writes. options.length_unit is not used.
+  ResultsWriter(const std::string& directory, const output::MeshOutline& outline, const ResultsSlab& slab,
+                const ResultsMeshRows& rows, std::optional<double> resume_time = std::nullopt,
+                const ResultsOptions& options = {});
   ~ResultsWriter();  // closes; the files stay valid
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
@@ -81,7 +98,10 @@ class ResultsWriter {
 
  private:
   struct Impl;
+  struct MeshRows;  // the mesh rows this rank writes (results_writer.cpp)
   std::unique_ptr<Impl> impl_;
+  void open(const std::string& directory, const output::MeshOutline& outline, const ResultsSlab* slab,
+            std::optional<double> resume_time, const ResultsOptions& options, const MeshRows& rows);
 };
 
 }  // namespace tribex::solver

@@ -87,6 +87,7 @@ class DeckRun {
   void choose_history_columns();
   void note_mpirun_signal_grace();  // the Open MPI kill delay that can cost a signalled run its restart file
   void open_results();  // results.h5 + results.xdmf and/or results.exo (`format`)
+  ResultsMeshRows results_mesh_rows() const;  // parallel: this rank's rows of results.h5's mesh
   // ---- stage 4: the loop and what it writes at time n ----
   void loop();
   void write_outputs();
@@ -143,7 +144,8 @@ class DeckRun {
   double est_steps_ = 0.0;
   int elements_ = 0;
   std::optional<Model> model_;
-  std::optional<mesh::Mesh> whole_mesh_;  // parallel runs, rank 0: kept until results.h5 holds it
+  std::optional<mesh::Mesh> whole_mesh_;  // parallel runs with results.exo, rank 0: kept until its writer holds it
+  std::optional<output::MeshOutline> results_outline_;  // parallel runs with results.h5: the whole mesh's outline
   std::map<std::string, double> set_size_;  // node-set sizes of the whole mesh
   std::string mesh_hash_;                   // of the whole mesh (restart files)
   std::string restart_run_id_;              // rank 0: the run id the restart file carries ("" none or legacy)

@@ -122,7 +122,12 @@ void DeckRun::build_parts() {
   holders = {};
   part = {};
   if (region_.contact) broadcast_contact_faces(contact);
-  if (whole && region_.results) whole_mesh_ = std::move(*whole);
+  // results.h5's writer needs only the whole mesh's outline (counts, blocks, length unit: broadcast
+  // from rank 0 now, collective); each rank writes its own mesh rows. Only results.exo, written by rank
+  // 0 alone, keeps the whole mesh until its writer has it (open_results).
+  if (region_.results && region_.results->xdmf)
+    results_outline_ = output::outline_of(whole ? *whole : mesh::Mesh{}, region_.results->length_unit, true);
+  if (whole && region_.results && region_.results->exodus) whole_mesh_ = std::move(*whole);
   whole.reset();
   for (const auto& [name, size] : mine.node_set_size) set_size_[name] = double(size);
   model_.emplace(build_model(deck_, std::move(mine), contact));
@@ -370,10 +375,24 @@ void DeckRun::choose_history_columns() {
       model_->mass_scaling.active);
 }
 
+ResultsMeshRows DeckRun::results_mesh_rows() const {
+  // This rank's rows of results.h5's /mesh in the slab's order: its owned nodes (ascending local, so
+  // ascending global) and its elements, the connectivity in global node indices.
+  const auto& domain = model_->domain;
+  const auto& local = model_->mesh;
+  ResultsMeshRows rows;
+  rows.coordinates.reserve(3 * domain.owned_local_nodes().size());
+  for (int l : domain.owned_local_nodes())
+    for (int i = 0; i < 3; ++i) rows.coordinates.push_back(local.coordinates[3 * static_cast<std::size_t>(l) + static_cast<std::size_t>(i)]);
+  rows.connectivity.reserve(local.connectivity.size());
+  for (int l : local.connectivity) rows.connectivity.push_back(domain.global_node[static_cast<std::size_t>(l)]);
+  return rows;
+}
+
 void DeckRun::open_results() {
   // results.h5: in a parallel run every rank writes the rows of its owned nodes and its elements
-  // (runs of consecutive global rows) collectively with parallel HDF5. results.exo: the same rows
-  // gathered to rank 0, which writes the file.
+  // (runs of consecutive global rows) collectively with parallel HDF5, the mesh included: no rank needs
+  // the whole mesh. results.exo: the same rows gathered to rank 0, which writes the file.
   if (!region_.results) return;
   const auto& domain = model_->domain;
   if (model_->contact) {
@@ -398,9 +417,12 @@ void DeckRun::open_results() {
     // rewrites its results.exo with the steps before the restart time.
     const mesh::Mesh& mesh = whole_mesh_ ? *whole_mesh_ : model_->mesh;
     const auto resume_time = resume_ ? std::optional<double>(integrator_->time()) : std::nullopt;
-    if (region_.results->xdmf)
-      results_ = std::make_unique<ResultsWriter>(out_.string(), mesh, ranks_ > 1 ? &slab_ : nullptr, resume_time,
-                                                 ResultsOptions{region_.results->length_unit, 1, summary_.identity.run_id, mesh_hash_});
+    const ResultsOptions options{region_.results->length_unit, 1, summary_.identity.run_id, mesh_hash_};
+    if (region_.results->xdmf && ranks_ > 1)
+      results_ = std::make_unique<ResultsWriter>(out_.string(), *results_outline_, slab_, results_mesh_rows(), resume_time,
+                                                 options);
+    else if (region_.results->xdmf)
+      results_ = std::make_unique<ResultsWriter>(out_.string(), mesh, nullptr, resume_time, options);
     if (region_.results->exodus) {
       std::vector<std::string> globals;  // the history columns, `step` first
       for (const auto& c : history_columns_) globals.push_back(c.name);
