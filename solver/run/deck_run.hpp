@@ -94,6 +94,7 @@ class DeckRun {
   void fill_history_row(double t);  // row_: the history columns after `step` (collective in parallel)
   void write_history_row(double t, long n);
   void write_fields(double t, long n);
+  void write_output_step(double t, long n, bool history_due, bool fields_due);
   void write_restart();
   std::string progress_text(long n, double t, double error) const;
   // ---- stage 5: summary.json and the closing lines ----

@@ -102,18 +102,42 @@ void DeckRun::write_fields(double t, long n) {
   }
 }
 
+void DeckRun::write_output_step(double t, long n, bool history_due, bool fields_due) {
+  // A write that fails on some ranks only (history.csv is rank 0's; a full disk may fail one rank's
+  // share of a collective write) must stop every rank at this step: the others would otherwise wait in
+  // the next collective call for a rank that has left the loop (a 2-rank run into a full tmpfs hung).
+  // So each rank finishes the step's collective calls, then the ranks agree before anyone throws.
+  std::string failure;
+  try {
+    if (history_due) {
+      write_history_row(t, n);
+      history_schedule_->done(t);
+    }
+  } catch (const OutputError& e) {
+    failure = e.what();
+  }
+  try {
+    if (fields_due) {
+      write_fields(t, n);
+      field_schedule_->done(t);
+    }
+  } catch (const OutputError& e) {
+    if (failure.empty()) failure = e.what();
+  }
+  const bool failed = ranks_ > 1 ? parallel::max(failure.empty() ? 0LL : 1LL) != 0 : !failure.empty();
+  if (failed)
+    throw OutputError(!failure.empty() ? failure
+                                       : "another rank could not write its outputs at step " + std::to_string(n) +
+                                             " (rank 0's log.txt and summary.json name the file)");
+}
+
 void DeckRun::write_outputs() {
   const double t = integrator_->time();
   const long n = integrator_->step_index();
   const auto& E = integrator_->energies();
-  if (history_schedule_->due(t, n, closing_)) {
-    write_history_row(t, n);
-    history_schedule_->done(t);
-  }
-  if (field_schedule_ && field_schedule_->due(t, n, closing_)) {
-    write_fields(t, n);
-    field_schedule_->done(t);
-  }
+  const bool history_due = history_schedule_->due(t, n, closing_);
+  const bool fields_due = field_schedule_ && field_schedule_->due(t, n, closing_);
+  if (history_due || fields_due) write_output_step(t, n, history_due, fields_due);
   guards_->observe(n, t, E, model_->contact ? &integrator_->contact_totals() : nullptr,
                    guards_->wants_sample(n) ? block_translation_->kinetic_energy(integrator_->velocity()) : 0.0);
   if (strain_guard_->due(n) && n > 0) {
