@@ -123,6 +123,10 @@ class ContactManager {
   /// node of the region. A distributed run refreshes only these ghost rows between searches
   /// (ContactRegion::trim); the full region is refreshed at each search, which reads it all.
   const std::vector<char>& rows_read();
+  /// The slave nodes of pass `k` (its arrays' rows: gap, last face, law state), ascending: restart files
+  /// written by other rank counts move them by node (solver/restart/restart_remap.hpp).
+  const std::vector<int>& pass_slave_nodes(std::size_t k) const { return surfaces_[passes_[k].slave].nodes; }
+  std::size_t pass_count() const { return passes_.size(); }
   /// What the passes read of a node besides its position, so what a distributed run's ghost rows
   /// carry: its velocity (a law that reads velocities, or tangential pairs), its non-contact force
   /// (tangential pairs: the junction's slip prediction, contact/README.md).

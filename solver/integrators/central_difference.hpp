@@ -35,6 +35,7 @@
 namespace tribex::solver {
 
 struct StateArchive;
+struct RestartLayout;
 
 class CentralDifference {
  public:
@@ -58,6 +59,10 @@ class CentralDifference {
   /// outputs, contact state) into / from `archive`. restore_state() replaces init().
   void save_state(StateArchive& archive) const;
   void restore_state(const StateArchive& archive);
+  /// What save_state writes per rank and how it maps to global numbers, for a resume on another rank
+  /// count (solver/restart/restart_remap.hpp); an archive it remapped carries "remapped_from_ranks",
+  /// and restore_state then forms the applied loads' nodal forces again from the loads at that time.
+  RestartLayout restart_layout() const;
 
   bool finished() const { return time_ >= end_time_ * (1.0 - 1e-14) ; }
 
