@@ -164,6 +164,9 @@ class CentralDifference {
   // distributed run its region's ghost rows (contact_region_; other rows keep stale values).
   std::vector<double> x_, f_contact_, v_contact_, f_other_contact_;
   std::unique_ptr<parallel::ContactRegion> contact_region_;
+  // Resumed from a file of another rank count with the candidate lists moved by node: the region is
+  // built at the first force pass (a collective step every rank reaches), without a search.
+  bool region_stale_ = false;
   void complete_contact_forces();
   contact::ContactTotals contact_totals_;
   double momentum_[3] = {0, 0, 0};

@@ -145,11 +145,17 @@ void CentralDifference::restore_state(const StateArchive& a) {
       s.passes[k].stable_dt = a.array(q + "stable_dt").at(0);
       if (a.has(q + "law_state")) s.passes[k].law_state = a.array(q + "law_state");
       // A distributed run's candidates belong to its region: without the region's lists (a file of
-      // the replicated contact) every pass searches a new region at the first step.
-      if (contact_region_ && !a.has("contact_region")) s.passes[k].searched = false;
+      // the replicated contact) every pass searches a new region at the first step, unless the lists
+      // were moved here by slave node from another rank count (restart_remap.hpp): then the region is
+      // built anew at the first step (region_stale_) and the passes search when they would have.
+      if (contact_region_ && !a.has("contact_region") && !a.has("contact_candidates_moved")) s.passes[k].searched = false;
     }
     try {
       model_.contact->restore(s);
+      if (a.has("contact_candidates_moved")) {
+        model_.contact->keep_projected_candidates();
+        region_stale_ = contact_region_ != nullptr;
+      }
       if (contact_region_ && a.has("contact_region")) {
         std::vector<int> lists;
         a.get_ints("contact_region", lists);
@@ -182,7 +188,13 @@ RestartLayout CentralDifference::restart_layout() const {
   l.reformed_node_fields = {"external_force"};
   if (model_.contact) {
     l.contact_global_node = model_.contact_global_node;
-    for (std::size_t k = 0; k < model_.contact->pass_count(); ++k) l.pass_slave_rows.push_back(model_.contact->pass_slave_nodes(k));
+    for (std::size_t k = 0; k < model_.contact->pass_count(); ++k) {
+      l.pass_slave_rows.push_back(model_.contact->pass_slave_nodes(k));
+      l.pass_search_rows.push_back(l.pass_slave_rows.back());
+      const auto& master = model_.contact->pass_master_nodes(k);
+      l.pass_search_rows.back().insert(l.pass_search_rows.back().end(), master.begin(), master.end());
+    }
+    l.keep_candidates = model_.contact->node_to_face_only();
     l.contact_row_fields = {"contact_x", "contact_force", "contact_traction", "contact_status"};
   }
   // This rank's parts of sums over the ranks at the save point (between steps, after the force pass):

@@ -169,6 +169,35 @@ void copy_row(const std::vector<T>& from, std::size_t row, std::size_t to, int w
   for (int i = 0; i < width; ++i) dest[to * width + i] = from.at(row * width + i);
 }
 
+// Pass p's candidate lists of the last search, each slave node's from its owner (the rank that searched
+// for it), and the positions at that search by node; `searched` as written (searches are global steps).
+void move_candidates(const std::vector<StateArchive>& groups, const RestartLayout& layout, const NodeSources& src,
+                     std::size_t p, StateArchive& out) {
+  const std::string q = "contact_pass_" + std::to_string(p) + "_";
+  const auto& slaves = layout.pass_slave_rows[p];
+  std::vector<long long> offset{0}, candidates;
+  for (std::size_t j = 0; j < slaves.size(); ++j) {
+    const StateArchive& a = groups[static_cast<std::size_t>(src.contact_row[static_cast<std::size_t>(slaves[j])].group)];
+    const auto& from_offset = a.integer_array(q + "candidate_offset");
+    const auto& from = a.integer_array(q + "candidates");
+    if (from_offset.size() != slaves.size() + 1 || from_offset.at(j) < 0 || from_offset.at(j) > from_offset.at(j + 1) ||
+        static_cast<std::size_t>(from_offset.at(j + 1)) > from.size())
+      throw SetupError("restart file: '" + q + "candidate_offset' does not fit the pass's " +
+                       std::to_string(slaves.size()) + " slave nodes (an edited or damaged restart file?)");
+    candidates.insert(candidates.end(), from.begin() + from_offset[j], from.begin() + from_offset[j + 1]);
+    offset.push_back(static_cast<long long>(candidates.size()));
+  }
+  out.put_integers(q + "candidate_offset", offset);
+  out.put_integers(q + "candidates", candidates);
+  out.put_integers(q + "searched", groups[0].integer_array(q + "searched"));
+  const auto& rows = layout.pass_search_rows.at(p);
+  std::vector<double> x(3 * rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    copy_row(groups[static_cast<std::size_t>(src.contact_row[static_cast<std::size_t>(rows[r])].group)].array(q + "x_at_search"), r, r, 3, x);
+  out.put(q + "x_at_search", x);
+  out.put_integer("contact_candidates_moved", 1);
+}
+
 void remap_contact(const std::vector<StateArchive>& groups, const RestartLayout& layout, const NodeSources& src,
                    StateArchive& out) {
   const StateArchive& first = groups[0];
@@ -188,11 +217,15 @@ void remap_contact(const std::vector<StateArchive>& groups, const RestartLayout&
   for (std::size_t p = 0; p < passes; ++p) {
     const std::string q = "contact_pass_" + std::to_string(p) + "_";
     const auto& slaves = layout.pass_slave_rows[p];
-    // Every pass searches at the first step: no candidates yet (a rank's lists are its region's).
-    out.put_integers(q + "candidate_offset", std::vector<long long>(slaves.size() + 1, 0));
-    out.put_integers(q + "candidates", {});
-    out.put_integer(q + "searched", 0);
-    out.put(q + "x_at_search", first.array(q + "x_at_search"));
+    if (layout.keep_candidates) {
+      move_candidates(groups, layout, src, p, out);
+    } else {
+      // Every pass searches at the first step: no candidates yet (a rank's lists are its region's).
+      out.put_integers(q + "candidate_offset", std::vector<long long>(slaves.size() + 1, 0));
+      out.put_integers(q + "candidates", {});
+      out.put_integer(q + "searched", 0);
+      out.put(q + "x_at_search", first.array(q + "x_at_search"));
+    }
     out.put(q + "stable_dt", first.array(q + "stable_dt"));
     std::vector<double> gap(slaves.size());
     std::vector<long long> last_face(slaves.size());

@@ -9,8 +9,9 @@
 //     held the element, record by record (plain or four-wide interleaved records, element_block.hpp);
 //   - contact arrays, whose numbering (the surface nodes, Model::contact_global_node) is the same on every
 //     rank: each row from the owner of its node (positions, forces, traction, status; per pass the gap,
-//     the face of the last step and the law's state such as Coulomb's stick points); every pass searches
-//     at the first step (the candidate lists and region of a rank are not another rank's);
+//     the face of the last step, the law's state such as Coulomb's stick points, and the candidate master
+//     faces of the last search, so that the next search comes when it would have; the rank's contact
+//     region is built anew at the first step (the integrator). Mortar passes search at the first step;
 //   - this rank's partial sums that the next step sums over the ranks (the element energies of the
 //     last force pass, its viscous power, the plastic work so far): the writers' sum on rank 0, zero on
 //     the others, so that the next reduction gives the written total;
@@ -41,6 +42,10 @@ struct RestartLayout {
   std::vector<Block> blocks;
   std::vector<int> contact_global_node;           // [contact row] global node (every rank the same)
   std::vector<std::vector<int>> pass_slave_rows;  // [pass][slave node] contact row
+  std::vector<std::vector<int>> pass_search_rows; // [pass][row of x_at_search] contact row (slave, then master nodes)
+  /// Node-to-face passes only: the candidate lists of the last search move with their slave nodes and the
+  /// passes search when they would have (else every pass searches at the first step).
+  bool keep_candidates = false;
   /// Arrays with one or more values that are this rank's part of a sum over the ranks: (name, index).
   std::vector<std::pair<std::string, int>> partial_sums;
   /// Nodal arrays (3 values per node) taken from the node's owner.

@@ -155,6 +155,43 @@ TEST(RestartRemap, ContactRowsAndPassStateComeFromTheOwners) {
   EXPECT_FALSE(out.has("contact_region"));  // a new region at the first search
 }
 
+// Node-to-face passes: the candidate lists of the last search move with their slave nodes (each from its
+// owner, the rank that searched for it), the positions at that search by node, and `searched` as written,
+// so that the next search comes at the step it would have.
+TEST(RestartRemap, CandidateListsMoveWithTheirSlaveNodes) {
+  std::vector<StateArchive> groups{writer(0, {0, 1, 2}, {0}), writer(1, {2, 3, 4}, {1})};
+  for (int w = 0; w < 2; ++w) {
+    StateArchive& a = groups[w];
+    a.put_integer("contact_passes", 1);
+    // Slave rows 0, 2 (global nodes 1, 4), master row 1 (global node 3); writer w's lists: slave 0 has
+    // faces {w, 5}, slave 1 has {7 + w}.
+    a.put_ints("contact_pass_0_candidate_offset", std::vector<int>{0, 2, 3});
+    a.put_ints("contact_pass_0_candidates", std::vector<int>{w, 5, 7 + w});
+    a.put_ints("contact_pass_0_last_face", std::vector<int>{-1, -1});
+    a.put("contact_pass_0_gap", std::vector<double>{0.0, 0.0});
+    std::vector<double> x;
+    for (int r = 0; r < 3; ++r)
+      for (int i = 0; i < 3; ++i) x.push_back(tag(w, r, i));
+    a.put("contact_pass_0_x_at_search", x);
+    a.put("contact_pass_0_stable_dt", std::vector<double>{1e-13});
+    a.put_integer("contact_pass_0_searched", 1);
+  }
+  RestartLayout l = layout_for({0, 1}, {0});
+  l.contact_global_node = {1, 3, 4};
+  l.pass_slave_rows = {{0, 2}};
+  l.pass_search_rows = {{0, 2, 1}};  // slave nodes, then master nodes
+  l.keep_candidates = true;
+  const StateArchive out = remap_restart(groups, l, 1);
+  EXPECT_EQ(out.integer_array("contact_pass_0_candidate_offset"), (std::vector<long long>{0, 2, 3}));
+  EXPECT_EQ(out.integer_array("contact_pass_0_candidates"), (std::vector<long long>{0, 5, 8}));  // {0, 5} of writer 0, {8} of writer 1
+  EXPECT_EQ(out.integer("contact_pass_0_searched"), 1);
+  EXPECT_EQ(out.integer("contact_candidates_moved"), 1);
+  const auto& x = out.array("contact_pass_0_x_at_search");
+  const int owner[] = {0, 1, 1};  // rows 0, 1, 2 of x_at_search: contact rows 0, 2, 1
+  for (int r = 0; r < 3; ++r)
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(x[3 * r + i], tag(owner[r], r, i));
+}
+
 // The partial sums of the save point: the writers' total on rank 0 (in writer order), 0 on the others; the
 // other entries of the array from group 0.
 TEST(RestartRemap, PartialSumsGoToRankZero) {
