@@ -233,7 +233,7 @@ void DeckRun::start_from_restart() {
                   integrator_->step_index(), integrator_->time()));
   if (resume_->has("remapped_from_ranks"))
     log_.say(format("restart: written by %lld rank(s), moved onto %d by global node and element numbers (applied "
-                    "loads formed again, contact searched at the first step)",
+                    "loads formed again; solver/README.md \"Restart\")",
                     resume_->integer("remapped_from_ranks"), ranks_));
 }
 
