@@ -288,9 +288,10 @@ StateArchive remap_restart(const std::vector<StateArchive>& groups, const Restar
   return out;
 }
 
-StateArchive read_restart_for(const std::string& path, const RestartLayout& layout, int rank, int ranks) {
+StateArchive read_restart_for(const std::string& path, const RestartLayout& layout, int rank, int ranks,
+                              bool always_remap) {
   const RestartFile file(path);
-  if (file.ranks() == ranks) return file.read_group(rank);
+  if (file.ranks() == ranks && !always_remap) return file.read_group(rank);
   std::vector<StateArchive> groups(static_cast<std::size_t>(file.ranks()));
   for (int g = 0; g < file.ranks(); ++g) {
     groups[static_cast<std::size_t>(g)] = file.read_group(g, is_id);

@@ -70,6 +70,9 @@ std::vector<char> needs_group(const std::vector<StateArchive>& ids, const Restar
 /// written by `ranks` ranks (bitwise the state written), else the groups it needs, remapped
 /// (remap_restart). Throws SetupError (exit 2) for a file without global numbers written by another
 /// rank count. Makes no MPI call (a run reads restart files in a forked child: isolated_read.hpp).
-StateArchive read_restart_for(const std::string& path, const RestartLayout& layout, int rank, int ranks);
+/// `always_remap` (the test hook TRIBEX_RESTART_REMAP=1 of a run): the same rank count goes through the move
+/// too, which must then give bitwise the state written (tests/parallel `*_remapped`).
+StateArchive read_restart_for(const std::string& path, const RestartLayout& layout, int rank, int ranks,
+                              bool always_remap = false);
 
 }  // namespace tribex::solver

@@ -16,7 +16,9 @@
       deck writes fields, the resumed results.h5 (continued, not restarted) must hold the same steps
       with bitwise the same times and datasets, and results.xdmf must be byte-identical. The resumed
       summary.json reports its own steps (first_step = STEP, ns/element/step over its steps) and the
-      segments' total wall and loop time; log.txt holds both segments.
+      segments' total wall and loop time; log.txt holds both segments. --remapped: the resume goes through
+      the move by global numbers of a restart on another rank count (test hook TRIBEX_RESTART_REMAP=1),
+      which must then be lossless: the same bitwise checks.
   parallel_check.py remap TRIBEX DECK OUT --from-ranks N --ranks M --stop STEP --rtol R
       runs DECK on N ranks stopped after STEP (restart file), resumed on M ranks from it (the state moved by
       global node and element numbers: solver/restart/restart_remap.hpp; log.txt must say so), and
@@ -59,9 +61,9 @@ def launcher(ranks):
     return cmd
 
 
-def run(tribex, deck, out, ranks, *extra, check=True, quiet=True):
+def run(tribex, deck, out, ranks, *extra, check=True, quiet=True, env_extra=None):
     cmd = launcher(ranks) + [tribex, "run", deck, "-o", out, *(["--quiet"] if quiet else []), *extra]
-    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
+    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none", **(env_extra or {}))
     p = subprocess.run(cmd, capture_output=True, text=True, env=env)
     if check and p.returncode != 0:
         sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
@@ -207,7 +209,15 @@ def restart(a):
     p = run(a.tribex, a.deck, resumed, a.ranks, "--stop-at-step", str(a.stop), check=False)
     if p.returncode != 130:
         sys.exit(f"FAIL: the stopped run exited {p.returncode}, expected 130\n{p.stderr}")
-    run(a.tribex, a.deck, resumed, a.ranks, "--restart", os.path.join(resumed, "restart.h5"))
+    # --remapped: the resume goes through the move onto a partition by global numbers (restart_remap.hpp)
+    # although the rank count is the same (test hook TRIBEX_RESTART_REMAP=1): the move must be lossless.
+    run(a.tribex, a.deck, resumed, a.ranks, "--restart", os.path.join(resumed, "restart.h5"),
+        env_extra={"TRIBEX_RESTART_REMAP": "1"} if a.remapped else None)
+    if a.remapped:
+        with open(os.path.join(resumed, "log.txt")) as f:
+            if f"moved onto {a.ranks} by global node and element numbers" not in f.read():
+                sys.exit("FAIL: --remapped: the resumed run did not go through the move (log.txt)")
+        print(f"resumed through the move by global numbers (TRIBEX_RESTART_REMAP=1) on {a.ranks} rank(s)")
     with open(os.path.join(full, "history.csv"), "rb") as f:
         x = f.read()
     with open(os.path.join(resumed, "history.csv"), "rb") as f:
@@ -446,6 +456,8 @@ def main():
                     help="failure with --serial-restart-at: remove the global numbers from the restart file (an earlier "
                          "tribex's file)")
     ap.add_argument("--from-ranks", type=int, default=1, help="remap: the rank count that writes the restart file")
+    ap.add_argument("--remapped", action="store_true",
+                    help="restart: resume through the move by global numbers at the same rank count (bitwise)")
     ap.add_argument("--termination", default="")
     ap.add_argument("--via-tribex", action="store_true",
                     help="sigterm: start the run with `tribex run --ranks N` and signal that process, not mpiexec")
