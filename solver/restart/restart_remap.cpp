@@ -5,7 +5,6 @@
 #include "solver/restart/restart_remap.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <set>
 
 #include "solver/element_block.hpp"
