@@ -25,6 +25,7 @@
 // contact/mortar/ (weighted gaps, consistent nodal loads, adhesion at face integration points).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -123,6 +124,21 @@ class ContactManager {
   /// node of the region. A distributed run refreshes only these ghost rows between searches
   /// (ContactRegion::trim); the full region is refreshed at each search, which reads it all.
   const std::vector<char>& rows_read();
+  /// The slave nodes of pass `k` (its arrays' rows: gap, last face, law state), ascending: restart files
+  /// written by other rank counts move them by node (solver/restart/restart_remap.hpp).
+  const std::vector<int>& pass_slave_nodes(std::size_t k) const { return surfaces_[passes_[k].slave].nodes; }
+  /// Its master nodes: the rows of its positions at the last search are the slave nodes', then these.
+  const std::vector<int>& pass_master_nodes(std::size_t k) const { return surfaces_[passes_[k].master].nodes; }
+  std::size_t pass_count() const { return passes_.size(); }
+  /// No pass is mortar: every pass's state lives on its slave nodes, so a restart on another rank count
+  /// can move the candidate lists of the last search by node (else every pass searches afresh).
+  bool node_to_face_only() const {
+    return std::none_of(passes_.begin(), passes_.end(), [](const Pass& p) { return p.mortar != nullptr; });
+  }
+  /// After restore() of candidate lists moved from other ranks (restart on another rank count): keeps the
+  /// lists of the slave nodes this rank projects (owner computes: its counted nodes and their faces'), as a
+  /// search here would have made them.
+  void keep_projected_candidates();
   /// What the passes read of a node besides its position, so what a distributed run's ghost rows
   /// carry: its velocity (a law that reads velocities, or tangential pairs), its non-contact force
   /// (tangential pairs: the junction's slip prediction, contact/README.md).

@@ -41,4 +41,19 @@ void ContactManager::restore(const State& s) {
   total_searches_ = s.total_searches;
 }
 
+void ContactManager::keep_projected_candidates() {
+  if (projected_.empty()) return;  // one rank, or every slave node of the region computed here
+  for (Pass& p : passes_) {
+    const auto& nodes = surfaces_[p.slave].nodes;
+    std::vector<int> offset{0}, kept;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (projected_[nodes[k]])
+        kept.insert(kept.end(), p.candidates.begin() + p.candidate_offset[k], p.candidates.begin() + p.candidate_offset[k + 1]);
+      offset.push_back(static_cast<int>(kept.size()));
+    }
+    p.candidate_offset = std::move(offset);
+    p.candidates = std::move(kept);
+  }
+}
+
 }  // namespace tribex::contact

@@ -271,9 +271,10 @@ void CentralDifference::add_contact_forces() {
   bool refreshed = false;
   if (contact_region_) {
     refreshed = model_.contact->plan_searches(x_.data());
-    if (refreshed) {
+    if (refreshed || region_stale_) {
       contact_region_->refresh(x_.data(), *model_.contact);
       model_.contact->set_present(contact_region_->present());
+      region_stale_ = false;
     }
     contact_region_->fill_ghosts(x_.data(), v_contact_.data(), f_other_contact_.data());
   }

@@ -35,6 +35,7 @@
 namespace tribex::solver {
 
 struct StateArchive;
+struct RestartLayout;
 
 class CentralDifference {
  public:
@@ -58,6 +59,10 @@ class CentralDifference {
   /// outputs, contact state) into / from `archive`. restore_state() replaces init().
   void save_state(StateArchive& archive) const;
   void restore_state(const StateArchive& archive);
+  /// What save_state writes per rank and how it maps to global numbers, for a resume on another rank
+  /// count (solver/restart/restart_remap.hpp); an archive it remapped carries "remapped_from_ranks",
+  /// and restore_state then forms the applied loads' nodal forces again from the loads at that time.
+  RestartLayout restart_layout() const;
 
   bool finished() const { return time_ >= end_time_ * (1.0 - 1e-14) ; }
 
@@ -159,6 +164,9 @@ class CentralDifference {
   // distributed run its region's ghost rows (contact_region_; other rows keep stale values).
   std::vector<double> x_, f_contact_, v_contact_, f_other_contact_;
   std::unique_ptr<parallel::ContactRegion> contact_region_;
+  // Resumed from a file of another rank count with the candidate lists moved by node: the region is
+  // built at the first force pass (a collective step every rank reaches), without a search.
+  bool region_stale_ = false;
   void complete_contact_forces();
   contact::ContactTotals contact_totals_;
   double momentum_[3] = {0, 0, 0};

@@ -12,6 +12,7 @@
 
 #include "solver/integrators/central_difference.hpp"
 #include "solver/output/output_tables.hpp"
+#include "solver/restart/restart_remap.hpp"
 #include "solver/restart/state_archive.hpp"
 
 namespace tribex::solver {
@@ -20,6 +21,12 @@ void CentralDifference::save_state(StateArchive& a) const {
   a.put_integer("step", step_);
   a.put_integer("node_count", model_.mesh.node_count());
   a.put_integer("element_count", model_.mesh.element_count());
+  // Global numbers, so that another rank count can resume from this file (restart_remap.hpp).
+  a.put_ints("global_node", model_.domain.global_node);
+  a.put_ints("global_element", model_.domain.global_element);
+  std::vector<int> ranges;
+  for (const auto& b : model_.blocks) ranges.insert(ranges.end(), {b.first_element, b.count});
+  a.put_ints("block_ranges", ranges);
   a.put("time", time_);
   a.put("dt_n", dt_n_);
   a.put("dt_half", dt_half_);
@@ -92,8 +99,15 @@ void CentralDifference::restore_state(const StateArchive& a) {
   a.get("v_n", v_n_);
   a.get("acceleration", a_);
   reported_current_ = true;  // v_n and acceleration as reported for v_half's update (no refill)
+  if (a.has("remapped_from_ranks")) {
+    // Written by another rank count: this rank's share of the applied loads (a partial sum on shared
+    // nodes) is formed again at the time of the last force pass, on the restored positions.
+    force_time_ = a.array("material_work").at(1);
+    apply_loads(force_time_);
+  } else {
+    a.get("external_force", f_ext_);
+  }
   a.get("force", f_);
-  a.get("external_force", f_ext_);
   a.get("reaction", reaction_);
   restore_array(energy_fields(), a.array("energies"), energies_, "the energy ledger");
   const auto members = lagged_members(*this);
@@ -131,11 +145,17 @@ void CentralDifference::restore_state(const StateArchive& a) {
       s.passes[k].stable_dt = a.array(q + "stable_dt").at(0);
       if (a.has(q + "law_state")) s.passes[k].law_state = a.array(q + "law_state");
       // A distributed run's candidates belong to its region: without the region's lists (a file of
-      // the replicated contact) every pass searches a new region at the first step.
-      if (contact_region_ && !a.has("contact_region")) s.passes[k].searched = false;
+      // the replicated contact) every pass searches a new region at the first step, unless the lists
+      // were moved here by slave node from another rank count (restart_remap.hpp): then the region is
+      // built anew at the first step (region_stale_) and the passes search when they would have.
+      if (contact_region_ && !a.has("contact_region") && !a.has("contact_candidates_moved")) s.passes[k].searched = false;
     }
     try {
       model_.contact->restore(s);
+      if (a.has("contact_candidates_moved")) {
+        model_.contact->keep_projected_candidates();
+        region_stale_ = contact_region_ != nullptr;
+      }
       if (contact_region_ && a.has("contact_region")) {
         std::vector<int> lists;
         a.get_ints("contact_region", lists);
@@ -148,6 +168,46 @@ void CentralDifference::restore_state(const StateArchive& a) {
   } else if (a.reals.count("contact_x")) {
     throw SetupError("the restart file has contact state but the deck has no contact definition");
   }
+}
+
+RestartLayout CentralDifference::restart_layout() const {
+  RestartLayout l;
+  l.global_node = model_.domain.global_node;
+  l.global_element = model_.domain.global_element;
+  for (const auto& b : model_.blocks) {
+    const int per_element = b.count > 0 ? static_cast<int>(b.state.size() / static_cast<std::size_t>(b.count)) : 0;
+    const bool interleaved = b.formulation != inputs::ElementFormulation::mean_quadrature;
+    // Interleaved records are padded to whole groups of four: the width per element is the state's
+    // size per group over four (element_block.hpp, interleaved_size).
+    const int width = interleaved && b.count > 0
+                          ? static_cast<int>(b.state.size() / (static_cast<std::size_t>((b.count + interleave_width - 1) / interleave_width) * interleave_width))
+                          : per_element;
+    l.blocks.push_back({b.first_element, b.count, b.state.empty() ? 0 : width, interleaved});
+  }
+  l.node_fields = {"u", "v_half", "v_prev_half", "v_n", "acceleration", "force", "reaction"};
+  l.reformed_node_fields = {"external_force"};
+  if (model_.contact) {
+    l.contact_global_node = model_.contact_global_node;
+    for (std::size_t k = 0; k < model_.contact->pass_count(); ++k) {
+      l.pass_slave_rows.push_back(model_.contact->pass_slave_nodes(k));
+      l.pass_search_rows.push_back(l.pass_slave_rows.back());
+      const auto& master = model_.contact->pass_master_nodes(k);
+      l.pass_search_rows.back().insert(l.pass_search_rows.back().end(), master.begin(), master.end());
+    }
+    l.keep_candidates = model_.contact->node_to_face_only();
+    l.contact_row_fields = {"contact_x", "contact_force", "contact_traction", "contact_status"};
+  }
+  // This rank's parts of sums over the ranks at the save point (between steps, after the force pass):
+  // the element energies of that pass, its viscous power (lagged_members' index 1) and the plastic work.
+  int stored = 0;
+  for (const auto& f : energy_fields()) {
+    if (!f.set) continue;
+    if (f.name == "internal" || f.name == "hourglass") l.partial_sums.push_back({"energies", stored});
+    ++stored;
+  }
+  l.partial_sums.push_back({"lagged_power", 1});
+  l.partial_sums.push_back({"material_work", 0});
+  return l;
 }
 
 }  // namespace tribex::solver

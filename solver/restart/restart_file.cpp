@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <system_error>
 
 #include "solver/output/h5_handles.hpp"
@@ -42,10 +43,12 @@ struct ReadContext {
   std::uintmax_t file_bytes = 0;  // sizes read from the file are checked against it before allocating
   bool failed = false;
   std::string refused;  // a dataset whose size the file cannot hold (issue 54, item 11)
+  const std::function<bool(const std::string&)>* wanted = nullptr;  // null: every dataset
 };
 
 herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data) {
   auto* ctx = static_cast<ReadContext*>(data);
+  if (ctx->wanted && *ctx->wanted && !(*ctx->wanted)(name)) return 0;
   H5Handle d(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
   H5Handle space(d.valid() ? H5Dget_space(d.get()) : H5I_INVALID_HID, H5Sclose);
   H5Handle type(d.valid() ? H5Dget_type(d.get()) : H5I_INVALID_HID, H5Tclose);
@@ -161,40 +164,56 @@ void write_restart_file(const std::string& path, const StateArchive& archive, co
   parallel::barrier();
 }
 
-StateArchive read_restart_file(const std::string& path) {
+RestartFile::RestartFile(const std::string& path) : path_(path) {
   output::QuietHdf5Errors quiet;
   if (!std::filesystem::is_regular_file(path))
     throw SetupError(path + ": error: no such restart file; give a restart_<k>.h5 or restart.h5 written by a run with "
                             "'begin restart output'");
-  H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.valid()) throw SetupError(path + ": error: not a readable HDF5 restart file");
-  double ranks = 0;
-  {
-    H5Handle a(H5Aopen(file.get(), "ranks", H5P_DEFAULT), H5Aclose);
-    if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &ranks) < 0)
-      throw SetupError(path + ": error: not a tribex restart file (no 'ranks' attribute)");
+  file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file_ < 0) throw SetupError(path + ": error: not a readable HDF5 restart file");
+  try {
+    double ranks = 0;
+    {
+      H5Handle a(H5Aopen(file_, "ranks", H5P_DEFAULT), H5Aclose);
+      if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &ranks) < 0)
+        throw SetupError(path + ": error: not a tribex restart file (no 'ranks' attribute)");
+    }
+    double version = 0;
+    {
+      H5Handle a(H5Aopen(file_, "format_version", H5P_DEFAULT), H5Aclose);
+      if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &version) < 0 || version != kRestartFormatVersion)
+        throw SetupError(path + ": error: restart file format version " + std::to_string(static_cast<int>(version)) +
+                         ", this tribex reads version " + std::to_string(static_cast<int>(kRestartFormatVersion)) +
+                         "; restart with the tribex that wrote it");
+    }
+    if (!(ranks >= 1 && ranks <= 1e7))
+      throw SetupError(path + ": error: restart file states " + std::to_string(ranks) +
+                       " ranks (an edited or damaged restart file?); restart from a file a tribex run wrote");
+    ranks_ = static_cast<int>(ranks);
+  } catch (...) {
+    H5Fclose(file_);
+    throw;
   }
-  double version = 0;
-  {
-    H5Handle a(H5Aopen(file.get(), "format_version", H5P_DEFAULT), H5Aclose);
-    if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &version) < 0 || version != kRestartFormatVersion)
-      throw SetupError(path + ": error: restart file format version " + std::to_string(static_cast<int>(version)) +
-                       ", this tribex reads version " + std::to_string(static_cast<int>(kRestartFormatVersion)) +
-                       "; restart with the tribex that wrote it");
-  }
-  if (static_cast<int>(ranks) != parallel::size())
-    throw SetupError(path + ": error: the restart file was written by " + std::to_string(static_cast<int>(ranks)) +
-                     " rank(s), this run has " + std::to_string(parallel::size()) + "; restart with mpirun -np " +
-                     std::to_string(static_cast<int>(ranks)));
-  StateArchive archive;
-  const std::string group_name = "rank_" + std::to_string(parallel::rank());
-  H5Handle group(H5Gopen2(file.get(), group_name.c_str(), H5P_DEFAULT), H5Gclose);
-  if (!group.valid()) throw SetupError(path + ": error: restart file has no group " + group_name);
   std::error_code size_error;
+  file_bytes_ = std::filesystem::file_size(path, size_error);
+}
+
+RestartFile::~RestartFile() {
+  output::QuietHdf5Errors quiet;
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+StateArchive RestartFile::read_group(int g, const std::function<bool(const std::string&)>& wanted) const {
+  output::QuietHdf5Errors quiet;
+  StateArchive archive;
+  const std::string group_name = "rank_" + std::to_string(g);
+  H5Handle group(H5Gopen2(file_, group_name.c_str(), H5P_DEFAULT), H5Gclose);
+  if (!group.valid()) throw SetupError(path_ + ": error: restart file has no group " + group_name);
   ReadContext ctx;
   ctx.archive = &archive;
-  ctx.path = path;
-  ctx.file_bytes = std::filesystem::file_size(path, size_error);
+  ctx.path = path_;
+  ctx.file_bytes = file_bytes_;
+  ctx.wanted = &wanted;
   herr_t walked = 0;
   bool exhausted = false;
   {
@@ -207,12 +226,21 @@ StateArchive read_restart_file(const std::string& path) {
     exhausted = exhausted || (walked < 0 && ctx.refused.empty() && budget.exhausted());
   }
   if (exhausted)
-    throw SetupError(path + ": error: restart file is damaged: reading " + group_name + " took more than 256 MB + 8 x the "
+    throw SetupError(path_ + ": error: restart file is damaged: reading " + group_name + " took more than 256 MB + 8 x the "
                      "file's size of memory (a damaged HDF5 group); restart from a file a tribex run wrote");
   if (!ctx.refused.empty()) throw SetupError(ctx.refused);
   if (walked < 0 || ctx.failed)
-    throw SetupError(path + ": error: restart file is damaged (a dataset of " + group_name + " cannot be read)");
+    throw SetupError(path_ + ": error: restart file is damaged (a dataset of " + group_name + " cannot be read)");
   return archive;
+}
+
+StateArchive read_restart_file(const std::string& path) {
+  const RestartFile file(path);
+  if (file.ranks() != parallel::size())
+    throw SetupError(path + ": error: the restart file was written by " + std::to_string(file.ranks()) +
+                     " rank(s), this run has " + std::to_string(parallel::size()) + "; restart with mpirun -np " +
+                     std::to_string(file.ranks()));
+  return file.read_group(parallel::rank());
 }
 
 }  // namespace tribex::solver

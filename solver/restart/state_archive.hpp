@@ -5,6 +5,8 @@
 // solver/README.md "Parallel runs and restart: rules for model authors".
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -72,6 +74,28 @@ struct StateArchive {
 /// run_id (may be ""): the run's identity, a string attribute `run_id` on the file (README.md "The
 /// output folder"): a resumed run keeps it, and continues only that run's output folder.
 void write_restart_file(const std::string& path, const StateArchive& archive, const std::string& run_id = "");
+
+/// A restart file opened for reading its groups one at a time (restart_remap.cpp reads those a rank
+/// needs when the file was written by another rank count). The constructor checks the file is a
+/// tribex restart file of this format version (SetupError, exit 2, otherwise).
+class RestartFile {
+ public:
+  explicit RestartFile(const std::string& path);
+  ~RestartFile();
+  RestartFile(const RestartFile&) = delete;
+  RestartFile& operator=(const RestartFile&) = delete;
+  /// The rank count that wrote the file (its groups rank_0 .. rank_<ranks - 1>).
+  int ranks() const { return ranks_; }
+  const std::string& path() const { return path_; }
+  /// Group rank_<g>: every dataset, or those `wanted` accepts (an empty function: every dataset).
+  StateArchive read_group(int g, const std::function<bool(const std::string&)>& wanted = {}) const;
+
+ private:
+  std::string path_;
+  std::int64_t file_ = -1;  // hid_t
+  int ranks_ = 0;
+  std::uintmax_t file_bytes_ = 0;
+};
 
 /// Reads this rank's group. Throws SetupError (exit 2) when the file is missing or unreadable,
 /// or was written by a different number of ranks.

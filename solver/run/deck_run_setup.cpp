@@ -18,6 +18,7 @@
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/isolated_read.hpp"
 #include "solver/restart/restart_checks.hpp"
+#include "solver/restart/restart_remap.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 
 namespace tribex::solver {
@@ -210,7 +211,14 @@ void DeckRun::start_from_restart() {
   if (options_.restart_path.empty()) return;
   std::exception_ptr error;
   try {
-    resume_ = read_isolated(options_.restart_path, [&] { return read_restart_file(options_.restart_path); });
+    // Any rank count: a file of another one is moved onto this run's partition by global numbers.
+    const RestartLayout layout = integrator_->restart_layout();
+    const int rank = parallel::rank(), ranks = parallel::size();
+    // Test hook: the same rank count through the move as well (tests/parallel "*_remapped": bitwise).
+    const char* hook = std::getenv("TRIBEX_RESTART_REMAP");
+    const bool always_remap = hook && std::string(hook) == "1";
+    resume_ = read_isolated(options_.restart_path,
+                            [&] { return read_restart_for(options_.restart_path, layout, rank, ranks, always_remap); });
     const std::string changed = restart_difference(*resume_, deck_.resolved_text, mesh_hash_);
     if (!changed.empty() && !options_.restart_allow_changed)
       throw SetupError(options_.restart_path + ": error: this restart file was written by another run: " + changed +
@@ -231,6 +239,10 @@ void DeckRun::start_from_restart() {
   agree_on_errors(error);
   log_.say(format("restart: resuming from %s at step %ld, t = %.6g s", options_.restart_path.c_str(),
                   integrator_->step_index(), integrator_->time()));
+  if (resume_->has("remapped_from_ranks"))
+    log_.say(format("restart: written by %lld rank(s), moved onto %d by global node and element numbers (applied "
+                    "loads formed again; solver/README.md \"Restart\")",
+                    resume_->integer("remapped_from_ranks"), ranks_));
 }
 
 // The files the deck reads besides itself and its includes: the mesh file, the AFM height map, the

@@ -16,7 +16,7 @@ struct RunOptions {
   std::string output_directory;  // created if missing
   bool quiet = false;            // no progress line, no echo to the terminal (log.txt still written)
   bool check_only = false;       // set up, print the pre-flight report, do not integrate
-  std::string restart_path;      // non-empty: resume from this restart file (same deck, same rank count)
+  std::string restart_path;      // non-empty: resume from this restart file (same deck; any rank count: restart/restart_remap.hpp)
   bool restart_allow_changed = false;  // resume although the deck or mesh differ from the restart file's
   long stop_at_step = -1;        // >= 0: stop as if interrupted after this step (writes a restart file)
   double heartbeat_seconds = 60; // stdout not a terminal (batch, pipe): a progress line to stdout and log.txt

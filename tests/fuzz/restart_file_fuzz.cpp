@@ -16,6 +16,7 @@
 #include "solver/errors.hpp"
 #include "solver/restart/isolated_read.hpp"
 #include "solver/restart/restart_checks.hpp"
+#include "solver/restart/restart_remap.hpp"
 #include "solver/restart/state_archive.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -34,6 +35,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (a.has("stable_elements")) (void)a.integer_array("stable_elements");
   } catch (const tribex::solver::SetupError&) {
     // expected for almost every input
+  }
+  // The same bytes resumed on another rank count (issue 57): rank 0 of 2 with a one-element layout reads
+  // the groups it needs and moves their arrays by global number (solver/restart/restart_remap.hpp).
+  try {
+    static const tribex::solver::RestartLayout layout = [] {
+      tribex::solver::RestartLayout l;
+      for (int n = 0; n < 8; ++n) l.global_node.push_back(n);
+      l.global_element = {0};
+      l.blocks.push_back({0, 1, 0, false});
+      l.node_fields = {"u", "v_half", "v_prev_half", "v_n", "acceleration", "force", "reaction"};
+      l.reformed_node_fields = {"external_force"};
+      l.partial_sums = {{"energies", 1}, {"lagged_power", 1}, {"material_work", 0}};
+      return l;
+    }();
+    (void)tribex::solver::read_isolated(path, [] { return tribex::solver::read_restart_for(path, layout, 0, 2); });
+  } catch (const tribex::solver::SetupError&) {
   }
   return 0;
 }

@@ -68,6 +68,11 @@ begin sierra mpi_loads
         reaction force = block_zmin
         mean displacement = block_zmax
       end history output loads
+      # restart files for the N -> M rank restart test (mpi_restart_loads_np1_to_np3): the applied loads'
+      # nodal forces, partial sums on shared nodes, are formed again on the new ranks
+      begin restart output
+        step increment = 1000
+      end restart output
     end presto region column
   end presto procedure loads
 end sierra mpi_loads

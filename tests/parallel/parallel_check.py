@@ -16,7 +16,15 @@
       deck writes fields, the resumed results.h5 (continued, not restarted) must hold the same steps
       with bitwise the same times and datasets, and results.xdmf must be byte-identical. The resumed
       summary.json reports its own steps (first_step = STEP, ns/element/step over its steps) and the
-      segments' total wall and loop time; log.txt holds both segments.
+      segments' total wall and loop time; log.txt holds both segments. --remapped: the resume goes through
+      the move by global numbers of a restart on another rank count (test hook TRIBEX_RESTART_REMAP=1),
+      which must then be lossless: the same bitwise checks.
+  parallel_check.py remap TRIBEX DECK OUT --from-ranks N --ranks M --stop STEP --rtol R
+      runs DECK on N ranks stopped after STEP (restart file), resumed on M ranks from it (the state moved by
+      global node and element numbers: solver/restart/restart_remap.hpp; log.txt must say so), and
+      uninterrupted on M ranks: the history rows from STEP on and every results.h5 dataset must agree to R
+      (relative as in agree). Not bitwise: the two M-rank runs differ at STEP by the N- and M-rank partitions'
+      summation order (shared-node sums, lumped masses, energy reductions).
   parallel_check.py sigterm TRIBEX DECK OUT --ranks N --termination T [--signal TERM|INT|USR1] [--sigkill-timeout S]
       DECK with its termination time set to T (written to OUT/deck.i) runs uninterrupted, then again
       with the signal sent to mpiexec alone (as a batch scheduler does at its time limit) once rank 0
@@ -29,7 +37,8 @@
   parallel_check.py failure TRIBEX DECK OUT --ranks N --expect-code C --expect TEXT
       runs DECK (meant to fail; not quiet, so that rank 0 prints its log); exit code C, TEXT printed
       exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
-      ranks) from a restart file written by a one-rank run stopped after STEP.
+      ranks) from a restart file written by a one-rank run stopped after STEP; --strip-global-ids removes its
+      global numbers first (a file of an earlier tribex, which another rank count cannot resume).
   agree ... --decomposition "rcb [SX SY SZ]": both runs of a deck given a `begin decomposition` block (written
       to OUT/deck.i; without SX SY SZ the run chooses the scale); the parallel run's log must name the coordinate
       bisection, and with --expect-partition TEXT its partition line must hold TEXT.
@@ -52,9 +61,9 @@ def launcher(ranks):
     return cmd
 
 
-def run(tribex, deck, out, ranks, *extra, check=True, quiet=True):
+def run(tribex, deck, out, ranks, *extra, check=True, quiet=True, env_extra=None):
     cmd = launcher(ranks) + [tribex, "run", deck, "-o", out, *(["--quiet"] if quiet else []), *extra]
-    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
+    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none", **(env_extra or {}))
     p = subprocess.run(cmd, capture_output=True, text=True, env=env)
     if check and p.returncode != 0:
         sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
@@ -120,6 +129,54 @@ def h5py_dataset():
     import h5py
     return h5py.Dataset
 
+def history_difference(h1, r1, r2, columns):
+    """The largest relative difference of `columns` between rows r1 and r2 (header h1) and its column."""
+    worst, worst_name = 0.0, ""
+    for name in columns:
+        j = h1.index(name)
+        # A vector component (NAME_x/_y/_z) is measured against the largest component of its
+        # vector: a zero-by-symmetry component holds only round-off, relative to itself noise.
+        # Energies are measured against the largest energy of the run (a term that is zero up to
+        # round-off, like the hourglass energy of a uniaxial wave, has no scale of its own), and
+        # energy_error, itself a relative number, absolutely.
+        group = [name]
+        energy = ("_energy", "_work", "_dissipation")
+        if name == "energy_error":
+            group = []
+        elif name.endswith(energy):
+            group = [c for c in h1 if c.endswith(energy)]
+        elif name[-2:] in ("_x", "_y", "_z"):
+            group = [c for c in h1 if c[:-2] == name[:-2] and c[-2:] in ("_x", "_y", "_z")]
+        scale = max((abs(r[h1.index(c)]) for c in group for r in r1), default=1.0)
+        if scale == 0.0:
+            scale = 1.0
+        err = max(abs(x[j] - y[j]) for x, y in zip(r1, r2)) / scale
+        if err > worst:
+            worst, worst_name = err, name
+    return worst, worst_name
+
+
+def fields_difference(path1, path2):
+    """Every dataset of results.h5 `path1` against `path2`: (dataset names, largest relative difference)."""
+    import h5py
+    import numpy as np
+    with h5py.File(path1) as f1, h5py.File(path2) as f2:
+        names = []
+        f1.visit(lambda n: names.append(n) if isinstance(f1[n], h5py.Dataset) else None)
+        fworst = 0.0
+        for n in names:
+            x, y = np.asarray(f1[n], dtype=float), np.asarray(f2[n], dtype=float)
+            if x.shape != y.shape:
+                sys.exit(f"FAIL: results.h5 {n}: shape {x.shape} vs {y.shape}")
+            # NaN marks "no value" (gap off the slave nodes): at the same places in both files.
+            if not np.array_equal(np.isnan(x), np.isnan(y)):
+                sys.exit(f"FAIL: results.h5 {n}: NaN at other places than in the one-rank run's")
+            x, y = x[~np.isnan(x)], y[~np.isnan(y)]
+            scale = np.max(np.abs(x)) if x.size else 0.0
+            err = np.max(np.abs(x - y)) / (scale if scale > 0 else 1.0) if x.size else 0.0
+            fworst = max(fworst, err)
+    return names, fworst
+
 
 def agree(a):
     serial, parallel = a.reference or os.path.join(a.out, "np1"), os.path.join(a.out, f"np{a.ranks}")
@@ -154,53 +211,18 @@ def agree(a):
     if h1 != h2 or len(r1) != len(r2):
         sys.exit(f"FAIL: histories differ in shape ({len(r1)} vs {len(r2)} rows)")
     columns = a.columns.split(",") if a.columns else h1[1:]
-    worst, worst_name = 0.0, ""
-    for name in columns:
-        j = h1.index(name)
-        # A vector component (NAME_x/_y/_z) is measured against the largest component of its
-        # vector: a zero-by-symmetry component holds only round-off, relative to itself noise.
-        # Energies are measured against the largest energy of the run (a term that is zero up to
-        # round-off, like the hourglass energy of a uniaxial wave, has no scale of its own), and
-        # energy_error, itself a relative number, absolutely.
-        group = [name]
-        energy = ("_energy", "_work", "_dissipation")
-        if name == "energy_error":
-            group = []
-        elif name.endswith(energy):
-            group = [c for c in h1 if c.endswith(energy)]
-        elif name[-2:] in ("_x", "_y", "_z"):
-            group = [c for c in h1 if c[:-2] == name[:-2] and c[-2:] in ("_x", "_y", "_z")]
-        scale = max((abs(r[h1.index(c)]) for c in group for r in r1), default=1.0)
-        if scale == 0.0:
-            scale = 1.0
-        err = max(abs(x[j] - y[j]) for x, y in zip(r1, r2)) / scale
-        if err > worst:
-            worst, worst_name = err, name
+    worst, worst_name = history_difference(h1, r1, r2, columns)
     print(f"{len(columns)} history columns, {len(r1)} rows, 1 vs {a.ranks} ranks: "
           f"largest relative difference {worst:.3e} ({worst_name or 'none'}), tolerance {a.rtol:g}")
     if worst > a.rtol:
         sys.exit("FAIL: history differs beyond the tolerance")
     if a.fields:
+        names, fworst = fields_difference(os.path.join(serial, "results.h5"), os.path.join(parallel, "results.h5"))
+        print(f"results.h5: {len(names)} datasets, largest relative difference {fworst:.3e}")
+        if fworst > a.rtol:
+            sys.exit("FAIL: results.h5 differs beyond the tolerance")
         import h5py
-        import numpy as np
         with h5py.File(os.path.join(serial, "results.h5")) as f1, h5py.File(os.path.join(parallel, "results.h5")) as f2:
-            names = []
-            f1.visit(lambda n: names.append(n) if isinstance(f1[n], h5py.Dataset) else None)
-            fworst = 0.0
-            for n in names:
-                x, y = np.asarray(f1[n], dtype=float), np.asarray(f2[n], dtype=float)
-                if x.shape != y.shape:
-                    sys.exit(f"FAIL: results.h5 {n}: shape {x.shape} vs {y.shape}")
-                # NaN marks "no value" (gap off the slave nodes): at the same places in both files.
-                if not np.array_equal(np.isnan(x), np.isnan(y)):
-                    sys.exit(f"FAIL: results.h5 {n}: NaN at other places than in the one-rank run's")
-                x, y = x[~np.isnan(x)], y[~np.isnan(y)]
-                scale = np.max(np.abs(x)) if x.size else 0.0
-                err = np.max(np.abs(x - y)) / (scale if scale > 0 else 1.0) if x.size else 0.0
-                fworst = max(fworst, err)
-            print(f"results.h5: {len(names)} datasets, largest relative difference {fworst:.3e}")
-            if fworst > a.rtol:
-                sys.exit("FAIL: results.h5 differs beyond the tolerance")
             same_layout(f1, f2, names)
         with open(os.path.join(serial, "results.xdmf"), "rb") as x1, open(os.path.join(parallel, "results.xdmf"), "rb") as x2:
             if x1.read() != x2.read():
@@ -227,7 +249,15 @@ def restart(a):
     p = run(a.tribex, a.deck, resumed, a.ranks, "--stop-at-step", str(a.stop), check=False)
     if p.returncode != 130:
         sys.exit(f"FAIL: the stopped run exited {p.returncode}, expected 130\n{p.stderr}")
-    run(a.tribex, a.deck, resumed, a.ranks, "--restart", os.path.join(resumed, "restart.h5"))
+    # --remapped: the resume goes through the move onto a partition by global numbers (restart_remap.hpp)
+    # although the rank count is the same (test hook TRIBEX_RESTART_REMAP=1): the move must be lossless.
+    run(a.tribex, a.deck, resumed, a.ranks, "--restart", os.path.join(resumed, "restart.h5"),
+        env_extra={"TRIBEX_RESTART_REMAP": "1"} if a.remapped else None)
+    if a.remapped:
+        with open(os.path.join(resumed, "log.txt")) as f:
+            if f"moved onto {a.ranks} by global node and element numbers" not in f.read():
+                sys.exit("FAIL: --remapped: the resumed run did not go through the move (log.txt)")
+        print(f"resumed through the move by global numbers (TRIBEX_RESTART_REMAP=1) on {a.ranks} rank(s)")
     with open(os.path.join(full, "history.csv"), "rb") as f:
         x = f.read()
     with open(os.path.join(resumed, "history.csv"), "rb") as f:
@@ -384,12 +414,58 @@ def sigterm(a):
     print("PASS")
 
 
+def remap(a):
+    """--from-ranks N --ranks M --stop STEP: a run on N ranks stopped after STEP, resumed on M ranks from its
+    restart file (moved by global numbers), against an uninterrupted M-rank run."""
+    resumed, full = os.path.join(a.out, "resumed"), os.path.join(a.out, "full")
+    for d in (resumed, full):
+        shutil.rmtree(d, ignore_errors=True)
+    p = run(a.tribex, a.deck, resumed, a.from_ranks, "--stop-at-step", str(a.stop), check=False)
+    if p.returncode != 130:
+        sys.exit(f"FAIL: the stopped run on {a.from_ranks} rank(s) exited {p.returncode}, expected 130\n{p.stderr}")
+    run(a.tribex, a.deck, resumed, a.ranks, "--restart", os.path.join(resumed, "restart.h5"))
+    run(a.tribex, a.deck, full, a.ranks)
+    with open(os.path.join(resumed, "log.txt")) as f:
+        moved = f"moved onto {a.ranks} by global node and element numbers" in f.read()
+    if not moved:
+        sys.exit("FAIL: the resumed run's log.txt does not say the state was moved onto the new rank count")
+    h1, r1 = read(os.path.join(full, "history.csv"))
+    h2, r2 = read(os.path.join(resumed, "history.csv"))
+    if h1 != h2 or len(r1) != len(r2) or any(x[0] != y[0] for x, y in zip(r1, r2)):
+        sys.exit(f"FAIL: histories differ in shape or steps ({len(r1)} vs {len(r2)} rows)")
+    after = [i for i, r in enumerate(r1) if r[0] >= a.stop]  # the rows the resumed run wrote
+    worst, name = history_difference(h1, [r1[i] for i in after], [r2[i] for i in after], h1[1:])
+    print(f"{a.from_ranks} -> {a.ranks} ranks, restart after step {a.stop}: {len(after)} history rows from there, "
+          f"{len(h1) - 1} columns against an uninterrupted {a.ranks}-rank run: largest relative difference "
+          f"{worst:.3e} ({name or 'none'}), tolerance {a.rtol:g}")
+    if worst > a.rtol:
+        sys.exit("FAIL: the resumed history differs beyond the tolerance")
+    if os.path.exists(os.path.join(full, "results.h5")):
+        names, fworst = fields_difference(os.path.join(full, "results.h5"), os.path.join(resumed, "results.h5"))
+        print(f"results.h5: {len(names)} datasets, largest relative difference {fworst:.3e}")
+        if fworst > a.rtol:
+            sys.exit("FAIL: the resumed results.h5 differs beyond the tolerance")
+    print("PASS")
+
+
+def strip_global_ids(path):
+    """A restart file as an earlier tribex wrote it: without the global numbers of each rank group."""
+    import h5py
+    with h5py.File(path, "r+") as f:
+        for group in f.values():
+            for name in ("global_node", "global_element", "block_ranges"):
+                if name in group:
+                    del group[name]
+
+
 def failure(a):
     shutil.rmtree(a.out, ignore_errors=True)
     extra = []
     if a.serial_restart_at >= 0:  # a restart file written by one rank, resumed on a.ranks
         first = os.path.join(a.out, "serial")
         run(a.tribex, a.deck, first, 1, "--stop-at-step", str(a.serial_restart_at), check=False)
+        if a.strip_global_ids:
+            strip_global_ids(os.path.join(first, "restart.h5"))
         extra = ["--restart", os.path.join(first, "restart.h5")]
     p = run(a.tribex, a.deck, a.out, a.ranks, *extra, check=False, quiet=False)
     text = p.stdout + p.stderr
@@ -402,7 +478,7 @@ def failure(a):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("mode", choices=["agree", "restart", "sigterm", "failure"])
+    ap.add_argument("mode", choices=["agree", "restart", "remap", "sigterm", "failure"])
     ap.add_argument("tribex")
     ap.add_argument("deck")
     ap.add_argument("out")
@@ -416,6 +492,12 @@ def main():
     ap.add_argument("--expect-code", type=int, default=3)
     ap.add_argument("--expect", default="")
     ap.add_argument("--serial-restart-at", type=int, default=-1)
+    ap.add_argument("--strip-global-ids", action="store_true",
+                    help="failure with --serial-restart-at: remove the global numbers from the restart file (an earlier "
+                         "tribex's file)")
+    ap.add_argument("--from-ranks", type=int, default=1, help="remap: the rank count that writes the restart file")
+    ap.add_argument("--remapped", action="store_true",
+                    help="restart: resume through the move by global numbers at the same rank count (bitwise)")
     ap.add_argument("--termination", default="")
     ap.add_argument("--via-tribex", action="store_true",
                     help="sigterm: start the run with `tribex run --ranks N` and signal that process, not mpiexec")
@@ -430,7 +512,7 @@ def main():
                     help="agree: also require that some rank's contact region holds fewer faces than the whole "
                          "surfaces (summary.json rank_counts contact_faces), so the distributed contact is exercised")
     a = ap.parse_args()
-    {"agree": agree, "restart": restart, "sigterm": sigterm, "failure": failure}[a.mode](a)
+    {"agree": agree, "restart": restart, "remap": remap, "sigterm": sigterm, "failure": failure}[a.mode](a)
 
 
 if __name__ == "__main__":
