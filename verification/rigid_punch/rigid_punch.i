@@ -84,6 +84,9 @@ begin sierra rigid_punch
       begin history output hist
         time increment = 5 ps
       end history output hist
+      begin restart output           # for the restart test (CMakeLists.txt): --stop-at-step writes one
+        wall time increment = 600 s
+      end restart output
     end presto region main
   end presto procedure press
 end sierra rigid_punch
