@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""One rigid-punch run: the mesh (make_mesh.py --cells N --domain L) and rigid_punch.i in OUT, then
+"""One rigid-punch run: the mesh (make_mesh.py --cells N --domain L) and a copy of rigid_punch.i.in as
+OUT/rigid_punch.i, then
 `tribex run OUT/rigid_punch.i -o OUT/run --set L=L`.
 
   /usr/bin/python3 run_punch.py --tribex build/bin/tribex --cells 8 --domain 10 --out punch_n8_L10
@@ -26,7 +27,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     nodes, hexes, surfaces = make_mesh.build(a.cells, a.domain)
     make_mesh.write_msh(os.path.join(a.out, "punch.msh"), nodes, hexes, surfaces)
-    shutil.copy(os.path.join(HERE, "rigid_punch.i"), os.path.join(a.out, "rigid_punch.i"))
+    shutil.copy(os.path.join(HERE, "rigid_punch.i.in"), os.path.join(a.out, "rigid_punch.i"))
     print(f"{a.out}: {len(nodes)} nodes, {len(hexes)} hex8", flush=True)
     cmd = [a.tribex, "run", os.path.join(a.out, "rigid_punch.i"), "-o", os.path.join(a.out, "run"), "--quiet",
            "--set", f"L={a.domain:g}"]
