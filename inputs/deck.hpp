@@ -200,11 +200,12 @@ struct FixedDisplacementSpec {
 /// scale_factor * function(t) on every node of the node set.
 struct PrescribedMotionSpec {
   enum class Kind { displacement, velocity } kind = Kind::displacement;
-  std::string node_set;
+  std::string node_set;  // with `rigid body = NAME`: NAME, the node set build_mesh adds for the body
   Component component = Component::x;
   std::string function;  // checked by the parser
   double scale_factor = 1.0;
   SourceLocation where;
+  std::string rigid_body;  // `rigid body = NAME`: drives the body's reference point (empty: a node set)
 };
 
 /// `begin initial velocity`: v(t=0) on a node set or on every node of a block.
@@ -228,10 +229,24 @@ struct PressureSpec {
 /// on a node set, shared equally by its nodes (load control, e.g. holding the normal load on a
 /// tip top while another component is driven). The node set's dofs of that component must be free.
 struct PrescribedForceSpec {
-  std::string node_set;
+  std::string node_set;  // with `rigid body = NAME`: NAME, the node set build_mesh adds for the body
   Component component = Component::x;
   std::string function;       // checked by the parser
   double scale_factor = 1.0;  // N per unit of the function value
+  SourceLocation where;
+  std::string rigid_body;  // `rigid body = NAME`: the force acts on the body's reference point
+};
+
+/// `begin rigid body NAME` (Sierra/SM `rigid body`, Abaqus *RIGID BODY / *COUPLING kinematic, LS-DYNA
+/// *CONSTRAINED_NODAL_RIGID_BODY): the nodes of a node set or a block move as one rigid body whose
+/// reference point takes the boundary conditions that name it (`rigid body = NAME` in `begin prescribed
+/// displacement | velocity | force`) and reports its reaction force and moment (solver/setup/rigid_bodies.hpp).
+/// Rotation is fixed (the body translates only), the one mode supported.
+struct RigidBodySpec {
+  std::string name;
+  std::string node_set;  // exactly one of node_set / block is non-empty
+  std::string block;
+  std::optional<std::array<double, 3>> reference_point;  // m; default: the centroid of the body's nodes
   SourceLocation where;
 };
 
@@ -372,6 +387,7 @@ struct RegionSpec {
   std::vector<InitialVelocitySpec> initial_velocities;
   std::vector<PressureSpec> pressures;
   std::vector<PrescribedForceSpec> prescribed_forces;
+  std::vector<RigidBodySpec> rigid_bodies;
   std::vector<SilentBoundarySpec> silent_boundaries;
   double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
   GuardSpec guards;

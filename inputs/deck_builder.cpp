@@ -441,6 +441,55 @@ class Builder {
     return c == "y" ? Component::y : c == "z" ? Component::z : Component::x;
   }
 
+  // `begin rigid body NAME`: a node set or a block, the reference point, rotation fixed.
+  RigidBodySpec rigid_body(const Scope& c) {
+    RigidBodySpec b;
+    b.name = c.name;
+    b.where = c.where;
+    b.node_set = word(c, "node set");
+    b.block = word(c, "block");
+    if (c.find("node set") && c.find("block"))
+      error(where(c, "block"), c, "'begin rigid body' takes 'node set' or 'block', not both; remove one");
+    else if (!c.find("node set") && !c.find("block"))
+      error(c.where, c, "'begin rigid body " + c.name + "' needs 'node set = NAME' or 'block = NAME' (its nodes)");
+    if (auto p = get(c, "reference point"); p && p->numbers.size() == 3)
+      b.reference_point = std::array<double, 3>{p->numbers[0], p->numbers[1], p->numbers[2]};
+    if (word(c, "rotation") == "free")
+      error(where(c, "rotation"), c,
+            "'rotation = free' is not supported yet: a rigid body translates only; write 'rotation = fixed' (or "
+            "remove the line), or model the part as an elastic block with a stiff material");
+    return b;
+  }
+
+  static std::string did_you_mean_body(const RegionSpec& r, const std::string& name) {
+    std::vector<std::string> names;
+    for (const auto& b : r.rigid_bodies) names.push_back(b.name);
+    const std::string hint = closest_match(name, names);
+    return hint.empty() ? std::string() : " (did you mean '" + hint + "'?)";
+  }
+
+  // A boundary condition's target: `node set = NAME` or `rigid body = NAME` (exactly one). A rigid
+  // body's nodes are the node set NAME that build_mesh adds for it, so the node-set machinery applies
+  // the condition to every node of the body; `rigid_body` keeps the name for the body's own accounts.
+  void target(const Scope& c, const std::string& block, const RegionSpec& r, std::string& node_set,
+              std::string& rigid_body) {
+    node_set = word(c, "node set");
+    rigid_body = word(c, "rigid body");
+    if (c.find("node set") && c.find("rigid body")) {
+      error(where(c, "rigid body"), c, block + " takes 'node set' or 'rigid body', not both; remove one");
+    } else if (!c.find("node set") && !c.find("rigid body")) {
+      error(c.where, c, block + " needs 'node set = NAME' or 'rigid body = NAME'");
+    } else if (!rigid_body.empty()) {
+      const bool known = std::any_of(r.rigid_bodies.begin(), r.rigid_bodies.end(),
+                                     [&](const RigidBodySpec& b) { return b.name == rigid_body; });
+      if (!known)
+        error(where(c, "rigid body"), c,
+              "rigid body '" + rigid_body + "' is not defined in the region; add 'begin rigid body " + rigid_body +
+                  "' (with 'node set' or 'block') to it" + did_you_mean_body(r, rigid_body));
+      node_set = rigid_body;
+    }
+  }
+
   RegionSpec region(const Scope& s, const Deck& deck) {
     RegionSpec r;
     r.name = s.name;
@@ -455,6 +504,8 @@ class Builder {
     r.guards.kinetic_energy_warning = real(s, "kinetic energy warning");
     r.guards.contact_motion_warning = real(s, "contact motion warning");
     r.guards.contact_motion_limit = real(s, "contact motion limit");
+    for (const Scope& c : s.children)
+      if (c.type() == "rigid body") r.rigid_bodies.push_back(rigid_body(c));
     for (const Scope& c : s.children) {
       const std::string& t = c.type();
       if (t == "fixed displacement") {
@@ -467,7 +518,7 @@ class Builder {
         PrescribedMotionSpec m;
         const bool velocity = t == "prescribed velocity";
         m.kind = velocity ? PrescribedMotionSpec::Kind::velocity : PrescribedMotionSpec::Kind::displacement;
-        m.node_set = word(c, "node set");
+        target(c, "'begin " + t + "'", r, m.node_set, m.rigid_body);
         m.component = component(word(c, "component"));
         m.function = word(c, "function");
         m.scale_factor = real(c, "scale factor", 1.0);
@@ -498,13 +549,15 @@ class Builder {
         r.pressures.push_back(p);
       } else if (t == "prescribed force") {
         PrescribedForceSpec p;
-        p.node_set = word(c, "node set");
+        target(c, "'begin prescribed force'", r, p.node_set, p.rigid_body);
         p.component = component(word(c, "component"));
         p.function = word(c, "function");
         p.scale_factor = real(c, "scale factor", 1.0);
         p.where = c.where;
         check_function_use(c, dim::force, "'begin prescribed force'", deck);
         r.prescribed_forces.push_back(p);
+      } else if (t == "rigid body") {
+        // read before the loop (a boundary condition may name a body defined below it)
       } else if (t == "silent boundary") {
         SilentBoundarySpec b;
         b.side_set = word(c, "side set");

@@ -308,6 +308,7 @@ std::vector<BlockSchema> build_table() {
                 {"initial velocity"},
                 {"pressure"},
                 {"prescribed force"},
+                {"rigid body"},
                 {"silent boundary"},
                 {"contact definition", 0, 1},
                 {"results output", 0, 1},
@@ -377,7 +378,9 @@ std::vector<BlockSchema> build_table() {
 
   for (const char* kind : {"prescribed displacement", "prescribed velocity"}) {
     t.push_back({kind, NameRule::none, {}, {}, false,
-                 {text("node set", ValueKind::string, true, "a node set of the mesh"),
+                 {text("node set", ValueKind::string, false, "a node set of the mesh (or rigid body)"),
+                  text("rigid body", ValueKind::string, false,
+                       "a rigid body of the region (or node set): drives its reference point, the body translating with it"),
                   choice("component", ValueKind::enumeration, components, true, "", "driven component"),
                   text("function", ValueKind::string, true, "a function name"),
                   quantity("scale factor", "1", "multiplies the function")},
@@ -400,12 +403,26 @@ std::vector<BlockSchema> build_table() {
                false, "p(t) on a side set, positive pushing into the body"});
 
   t.push_back({"prescribed force", NameRule::none, {}, {}, false,
-               {text("node set", ValueKind::string, true, "a node set of the mesh"),
+               {text("node set", ValueKind::string, false, "a node set of the mesh (or rigid body)"),
+                text("rigid body", ValueKind::string, false,
+                     "a rigid body of the region (or node set): the force acts at its reference point, the body translating"),
                 choice("component", ValueKind::enumeration, components, true, "", "loaded component"),
                 text("function", ValueKind::string, true, "a function name (ordinate: force)"),
                 quantity("scale factor", "1", "N per unit of the function")},
                {},
                false, "total force F(t) on a node set, equal shares per node (load control)"});
+
+  t.push_back({"rigid body", NameRule::required, {}, {}, true,
+               {text("node set", ValueKind::string, false, "the body's nodes: a node set of the mesh (or block)"),
+                text("block", ValueKind::string, false, "the body's nodes: every node of an element block (or node set)"),
+                reals("reference point", dim::length, 3, Range{}, false, "",
+                      "x y z: the point the body's loads and motion refer to, its moment is taken about (default: the "
+                      "centroid of its nodes)"),
+                choice("rotation", ValueKind::enumeration, {"fixed", "free"}, false, "fixed",
+                       "fixed: the body translates only (the one mode supported; free is refused)")},
+               {},
+               false, "nodes moving as one rigid body, loaded and reported at a reference point "
+                      "(`rigid body = NAME` in prescribed displacement/velocity/force; solver/setup/rigid_bodies.hpp)"});
 
   t.push_back({"silent boundary", NameRule::none, {}, {}, false,
                {text("side set", ValueKind::string, true, "a side set of the mesh"),

@@ -16,6 +16,7 @@
 #include "solver/element_block.hpp"
 #include "solver/guards/run_warning.hpp"
 #include "solver/setup/mass_scaling.hpp"
+#include "solver/setup/rigid_bodies.hpp"
 #include "solver/parallel/domain.hpp"
 #include "solver/parallel/mesh_part.hpp"
 #include "solver/time_function.hpp"
@@ -68,6 +69,7 @@ struct Model {
   std::vector<PressureLoad> pressures;
   std::vector<NodalForceLoad> nodal_forces;
   SilentBoundaryNodes silent;
+  RigidBodies rigid_bodies;            // `begin rigid body`: nodes moving as one translating body
   double mass_damping = 0.0;           // 1/s
   /// [node] kg: the mass the mass damping force -c m v acts with, the unscaled lumped mass when mass
   /// scaling is active and the region is damped (docs/theory.md 1.4.1); empty: Model::mass.

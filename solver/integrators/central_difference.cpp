@@ -97,6 +97,8 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
       owned_damping_mass_[n] = model.domain.owned[n] * model.damping_mass[n];
     }
   }
+  rigid_momentum_.assign(3 * model.rigid_bodies.size(), 0.0);
+  rigid_coupling_.assign(3 * model.rigid_bodies.node.size(), 0.0);
   for (const auto& load : model.nodal_forces) loaded_dofs_.insert(loaded_dofs_.end(), load.dof.begin(), load.dof.end());
   for (const auto& load : model.pressures)
     for (int node : load.face_nodes)
@@ -162,6 +164,7 @@ void CentralDifference::init() {
     if (kind == Kind::fixed) v_[dof] = 0.0;
     if (kind == Kind::velocity) v_[dof] = model_.constraints.scale[k] * model_.functions[model_.constraints.function[k]](time_);
   }
+  move_rigid_bodies(false);  // a body starts with one velocity, its nodes' momentum over its mass
   v_prev_ = v_;
   double ke = 0.0;
   for (std::size_t d = 0; d < v_.size(); ++d) ke += 0.5 * owned_mass_[d / 3] * v_[d] * v_[d];
@@ -354,6 +357,39 @@ void CentralDifference::update_velocity() {
       v_[3 * n + i] = vn_new * nv[i] + vt_new;
     }
   }
+  move_rigid_bodies(true);
+}
+
+// V = sum m_i v_i / M over a body's nodes (owned copies; one sum over the ranks), then v_i = V on every
+// copy of its nodes, so all copies stay bit-identical. Each node's change is the coupling force
+// g_i = m_i (V - v_i) / dt^n, which sums to zero over the body (docs/theory.md 1.6).
+void CentralDifference::move_rigid_bodies(bool record) {
+  const RigidBodies& rb = model_.rigid_bodies;
+  if (rb.empty()) return;
+  std::fill(rigid_momentum_.begin(), rigid_momentum_.end(), 0.0);
+  for (std::size_t b = 0; b < rb.size(); ++b)
+    for (int k = rb.first[b]; k < rb.first[b + 1]; ++k) {
+      const int n = rb.node[k];
+      const double w = rb.owned[k] * model_.mass[n];
+      for (int i = 0; i < 3; ++i) rigid_momentum_[3 * b + i] += w * v_[3 * n + i];
+    }
+  if (!model_.domain.serial()) parallel::sum(rigid_momentum_.data(), static_cast<int>(rigid_momentum_.size()));
+  const double inverse_h = record && dt_n_ > 0.0 ? 1.0 / dt_n_ : 0.0;
+  for (std::size_t b = 0; b < rb.size(); ++b)
+    for (int k = rb.first[b]; k < rb.first[b + 1]; ++k) {
+      const int n = rb.node[k];
+      for (int i = 0; i < 3; ++i) {
+        double& v = v_[3 * n + i];
+        double& g = rigid_coupling_[3 * static_cast<std::size_t>(k) + i];
+        if (!rb.free[3 * b + i]) {
+          g = 0.0;
+          continue;
+        }
+        const double V = rigid_momentum_[3 * b + i] / rb.mass[b];
+        g = model_.mass[n] * (V - v) * inverse_h;
+        v = V;
+      }
+    }
 }
 
 void CentralDifference::apply_constraints() {

@@ -77,6 +77,9 @@ class CentralDifference {
   const std::vector<double>& acceleration() const { fill_reported_fields(); return a_; }  // (v^{n+1/2} - v^{n-1/2}) / dt^n
   const std::vector<double>& force() const { return f_; }          // f^n, internal + applied loads
   const std::vector<double>& reaction() const { return reaction_; }  // R^n at constrained dofs, else 0
+  /// [rigid-body entry][3] the coupling force g_i = m_i (V - v_i) / dt^n that gave node i its body's
+  /// velocity V at the last update (free components; 0 on driven ones), N (Model::rigid_bodies).
+  const std::vector<double>& rigid_coupling_force() const { return rigid_coupling_; }
   const Energies& energies() const { return energies_; }
   const contact::ContactTotals& contact_totals() const { return contact_totals_; }  // at time n
   /// [surface node][3] positions in the contact's numbering at the last force pass (time n), m.
@@ -115,6 +118,9 @@ class CentralDifference {
   }
   bool stable_step_due() const { return step_ % dt_update_interval_ == 0 || stable_.dt <= 0.0; }
   void update_velocity();
+  /// Rigid bodies (solver/setup/rigid_bodies.hpp): the free components of each body's nodes set to the
+  /// body's velocity, its momentum over its mass (collective). `record`: keep the coupling forces.
+  void move_rigid_bodies(bool record);
   void apply_constraints();
   void account_time_n();
   /// v^n and a^n from v^{n-1/2} and v^{n+1/2}, once per velocity update and only when asked for
@@ -139,6 +145,8 @@ class CentralDifference {
   mutable bool reported_current_ = false;    // v_n_, a_ belong to the current velocity update
   bool reported_first_step_ = true;          // that update was step 0's (v^0 = v^{-1/2})
   std::vector<int> loaded_dofs_;             // dofs that nodal forces or pressures load, ascending
+  std::vector<double> rigid_momentum_;       // [body][3] sum m v over a body (move_rigid_bodies)
+  std::vector<double> rigid_coupling_;       // [rigid-body entry][3] N
   std::vector<double> inverse_mass_;
   std::vector<double> owned_mass_;  // [local node] mass where this rank owns the node, else 0 (energy sums)
   // Mass damping on mass-scaled models (Model::damping_mass; both empty otherwise): [local node] the damped

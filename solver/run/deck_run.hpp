@@ -165,6 +165,7 @@ class DeckRun {
   std::vector<std::vector<int>> reaction_sets_, displacement_sets_;
   std::vector<double> displacement_set_size_;
   std::vector<double> set_sums_;
+  std::vector<double> rigid_values_;  // nine per rigid body (output/rigid_body_history.hpp)
   std::optional<Schedule> history_schedule_;
   std::unique_ptr<ResultsWriter> results_;
   std::unique_ptr<ExodusWriter> exodus_;  // results.exo; its global variables are the history columns

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "solver/run/deck_run.hpp"
+#include "solver/output/rigid_body_history.hpp"
 #include "solver/errors.hpp"
 #include "solver/run/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
@@ -76,6 +77,12 @@ void DeckRun::fill_history_row(double t) {
   for (std::size_t k = 0; k < displacement_sets_.size(); ++k)
     for (int i = 0; i < 3; ++i) set_sums_[3 * (reaction_sets_.size() + k) + i] /= displacement_set_size_[k];
   row_.insert(row_.end(), set_sums_.begin(), set_sums_.end());
+  if (!rigid_values_.empty()) {
+    rigid_body_history_values(*model_, {t, integrator_->displacement().data(), integrator_->reaction().data(),
+                                        integrator_->rigid_coupling_force().data()},
+                              rigid_values_);
+    row_.insert(row_.end(), rigid_values_.begin(), rigid_values_.end());
+  }
 }
 
 void DeckRun::write_history_row(double t, long n) {

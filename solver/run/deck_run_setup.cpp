@@ -12,6 +12,7 @@
 #include "solver/setup/contact_setup.hpp"
 #include "solver/parallel/contact_travel.hpp"
 #include "solver/run/deck_run.hpp"
+#include "solver/output/rigid_body_history.hpp"
 #include "solver/errors.hpp"
 #include "solver/run/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
@@ -385,6 +386,9 @@ void DeckRun::choose_history_columns() {
       material_dissipation_, region_.history ? region_.history->reaction_force_node_sets : std::vector<std::string>{},
       region_.history ? region_.history->displacement_node_sets : std::vector<std::string>{},
       model_->mass_scaling.active);
+  const auto rigid = describe_rigid_body_columns(model_->rigid_bodies.name);  // after the node-set columns
+  history_columns_.insert(history_columns_.end(), rigid.begin(), rigid.end());
+  rigid_values_.assign(rigid.size(), 0.0);
 }
 
 ResultsMeshRows DeckRun::results_mesh_rows() const {

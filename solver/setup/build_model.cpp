@@ -197,7 +197,11 @@ const inputs::FiniteElementModelSpec& model_spec(const inputs::Deck& deck) {
 }
 }  // namespace
 
-mesh::Mesh build_mesh(const inputs::Deck& deck) { return build_mesh(model_spec(deck)); }
+mesh::Mesh build_mesh(const inputs::Deck& deck) {
+  mesh::Mesh mesh = build_mesh(model_spec(deck));
+  add_rigid_body_node_sets(mesh, deck.procedure.region.rigid_bodies);  // node set NAME per `begin rigid body NAME`
+  return mesh;
+}
 
 std::vector<double> block_wave_moduli(const inputs::Deck& deck, const mesh::Mesh& mesh) {
   const inputs::FiniteElementModelSpec& fem = model_spec(deck);
@@ -301,7 +305,10 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
 
 }  // namespace
 
-Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) { return assemble(deck, std::move(mesh), nullptr, nullptr); }
+Model build_model(const inputs::Deck& deck, mesh::Mesh mesh) {
+  add_rigid_body_node_sets(mesh, deck.procedure.region.rigid_bodies);  // a mesh built elsewhere (tests, tools)
+  return assemble(deck, std::move(mesh), nullptr, nullptr);
+}
 
 Model build_model(const inputs::Deck& deck, parallel::MeshPart part, const ContactFaces& contact_faces) {
   mesh::Mesh mesh = std::move(part.mesh);
@@ -611,6 +618,8 @@ Model assemble(const inputs::Deck& deck, mesh::Mesh mesh, const parallel::MeshPa
   a.local_steps();
   std::vector<double> unscaled_mass = a.scale_and_sum_masses();
   a.finish_silent_boundaries();
+  model.rigid_bodies = build_rigid_bodies(deck.procedure.region, model);
+  for (const auto& line : describe_rigid_bodies(model.rigid_bodies)) model.preflight.push_back(line);
   a.add_contact(faces, std::move(unscaled_mass));
   // The counters report the loop's messages (summary.json rank_counts, per step): set-up's sums are not among them.
   model.domain.traffic = {};

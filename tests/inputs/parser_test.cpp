@@ -118,12 +118,24 @@ TEST(Parser, FullDeckValues) {
   EXPECT_EQ(r.finite_element_model, "tip_model");
   ASSERT_EQ(r.fixed_displacements.size(), 1u);
   EXPECT_EQ(r.fixed_displacements[0].components, (std::vector<Component>{Component::x, Component::y, Component::z}));
-  ASSERT_EQ(r.prescribed_motions.size(), 2u);
+  ASSERT_EQ(r.prescribed_motions.size(), 3u);  // the third drives rigid body 'cap'
   EXPECT_EQ(r.prescribed_motions[0].kind, PrescribedMotionSpec::Kind::displacement);
   EXPECT_EQ(r.prescribed_motions[0].component, Component::z);
   EXPECT_EQ(r.prescribed_motions[0].scale_factor, 2.0);
   EXPECT_EQ(r.prescribed_motions[1].kind, PrescribedMotionSpec::Kind::velocity);
   EXPECT_EQ(r.prescribed_motions[1].node_set, "substrate_xmax");
+  EXPECT_TRUE(r.prescribed_motions[1].rigid_body.empty());
+  EXPECT_EQ(r.prescribed_motions[2].rigid_body, "cap");
+  EXPECT_EQ(r.prescribed_motions[2].node_set, "cap");  // the node set build_mesh adds for the body
+  ASSERT_EQ(r.rigid_bodies.size(), 2u);
+  EXPECT_EQ(r.rigid_bodies[0].name, "lid");
+  EXPECT_EQ(r.rigid_bodies[0].node_set, "substrate_ymax");
+  ASSERT_TRUE(r.rigid_bodies[0].reference_point.has_value());
+  expect_close((*r.rigid_bodies[0].reference_point)[1], 1e-9);
+  EXPECT_EQ(r.rigid_bodies[1].block, "substrate_skin");
+  EXPECT_FALSE(r.rigid_bodies[1].reference_point.has_value());
+  ASSERT_EQ(r.prescribed_forces.size(), 1u);
+  EXPECT_EQ(r.prescribed_forces[0].rigid_body, "lid");
   ASSERT_EQ(r.initial_velocities.size(), 1u);
   EXPECT_EQ(r.initial_velocities[0].block, "substrate");
   EXPECT_TRUE(r.initial_velocities[0].node_set.empty());

@@ -6,6 +6,7 @@
 #include "inputs/diagnostics.hpp"
 #include "inputs/parameters.hpp"
 #include "inputs/result_fields.hpp"
+#include "solver/output/rigid_body_history.hpp"
 #include "solver/output/history_columns.hpp"
 #include "solver/output/output_tables.hpp"
 #include "solver/run/run.hpp"
@@ -92,7 +93,9 @@ int run_command(const std::vector<std::string>& argv) {
   if (args.answered_help()) return tools::exit_ok;
   if (args.flag("--list-columns")) {
     args.finish();
-    for (const auto& c : solver::describe_history_columns(true, {"SET"}, {"SET"}, true))
+    auto columns = solver::describe_history_columns(true, {"SET"}, {"SET"}, true);
+    for (const auto& c : solver::describe_rigid_body_columns({"BODY"})) columns.push_back(c);
+    for (const auto& c : columns)
       std::printf("%-28s %-7s %s\n", c.name.c_str(), c.unit.c_str(), c.definition.c_str());
     return 0;
   }

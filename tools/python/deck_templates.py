@@ -111,12 +111,18 @@ def fixed_displacement(node_set, components):
             f"      end fixed displacement")
 
 
-def prescribed(kind, node_set, component, function, scale_factor=None):
+def prescribed(kind, node_set, component, function, scale_factor=None, target="node set"):
     """A `begin prescribed displacement` (kind "displacement") or `begin prescribed force` block
-    driven by `function`, optionally scaled (scale_factor as written, e.g. "-1", "-500 nN")."""
+    driven by `function`, optionally scaled (scale_factor as written, e.g. "-1", "-500 nN"); target
+    "rigid body" names a rigid body instead of a node set."""
     scale = f"        scale factor = {scale_factor}\n" if scale_factor is not None else ""
-    return (f"      begin prescribed {kind}\n        node set = {node_set}\n        component = {component}\n"
+    return (f"      begin prescribed {kind}\n        {target} = {node_set}\n        component = {component}\n"
             f"        function = {function}\n{scale}      end prescribed {kind}")
+
+
+def rigid_body(name, node_set):
+    """A `begin rigid body` block: the nodes of `node_set` move as one translating body."""
+    return f"      begin rigid body {name}\n        node set = {node_set}\n      end rigid body {name}"
 
 
 def history_output(increment_ps, reactions, displacements):

@@ -7,9 +7,9 @@
 # Run:    build/bin/tribex run inputs/examples/afm_sliding/afm_sliding_reduced_b_sam_mass_scaled.i -o afm_sliding_reduced_b_sam_mass_scaled_output
 # Plot:   /usr/bin/python3 inputs/examples/afm_sliding/afm_sliding.py afm_sliding_reduced_b_sam_mass_scaled_output ...  (see README.md)
 #
-# Time line: 0 - 80 ps load ramp to 500 nN (load control on tip_top z: a total force shared by
-# its nodes; the tip starts 0.3 nm above first touch), 80 - 980 ps hold, then tip_top
-# moves in +y at 7.5 m/s (cycloidal 40 ps ramp) to 1400 ps; tip_top x is fixed.
+# Time line: 0 - 80 ps load ramp to 500 nN (load control on z of tip_body, the tip top as a rigid
+# body; the tip starts 0.3 nm above first touch), 80 - 980 ps hold, then tip_body
+# moves in +y at 7.5 m/s (cycloidal 40 ps ramp) to 1400 ps; its x is fixed.
 # Substrate: bottom fixed (it carries the 500 nN; a dashpot alone cannot hold a static load), silent
 # boundaries on the four sides (absorb the waves of the load and the sliding).
 # Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
@@ -159,18 +159,21 @@ begin sierra afm_sliding_reduced_b_sam_mass_scaled
       begin silent boundary
         side set = substrate_sides
       end silent boundary
-      begin fixed displacement
+      begin rigid body tip_body
         node set = tip_top
+      end rigid body tip_body
+      begin fixed displacement
+        node set = tip_body
         components = x
       end fixed displacement
       begin prescribed force
-        node set = tip_top
+        rigid body = tip_body
         component = z
         function = load
         scale factor = -500 nN
       end prescribed force
       begin prescribed displacement
-        node set = tip_top
+        rigid body = tip_body
         component = y
         function = slide
       end prescribed displacement

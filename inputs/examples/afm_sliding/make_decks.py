@@ -21,7 +21,7 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "tools" / "python"))
 from deck_templates import (HEX8_FULLY_INTEGRATED, NM, PS, block_parameters, elastic_material,  # noqa: E402
                             contact_definition, fixed_displacement, function_table, history_output, piecewise_linear_function,
-                            prescribed, ramped_travel, results_output, table_times, write_deck)
+                            prescribed, ramped_travel, results_output, rigid_body, table_times, write_deck)
 
 # Mixed blocks (issue 24): only SKIN_LAYERS element layers under the contact surfaces are fully
 # integrated (`begin surface layer block`, mesh/README.md); below them one-point elements. One layer
@@ -109,9 +109,9 @@ TEMPLATE = """\
 # Run:    build/bin/tribex run inputs/examples/afm_sliding/{name}.i -o {name}_output
 # Plot:   /usr/bin/python3 inputs/examples/afm_sliding/afm_sliding.py {name}_output ...  (see README.md)
 #
-# Time line: 0 - {t_load:.0f} ps load ramp to {load} nN (load control on tip_top z: a total force shared by
-# its nodes; the tip starts 0.3 nm above first touch), {t_load:.0f} - {t_slide:.0f} ps hold, then tip_top
-# moves in +y at {speed} m/s (cycloidal 40 ps ramp) to {t_end:.0f} ps; tip_top x is fixed.
+# Time line: 0 - {t_load:.0f} ps load ramp to {load} nN (load control on z of tip_body, the tip top as a rigid
+# body; the tip starts 0.3 nm above first touch), {t_load:.0f} - {t_slide:.0f} ps hold, then tip_body
+# moves in +y at {speed} m/s (cycloidal 40 ps ramp) to {t_end:.0f} ps; its x is fixed.
 # Substrate: bottom fixed (it carries the {load} nN; a dashpot alone cannot hold a static load), silent
 # boundaries on the four sides (absorb the waves of the load and the sliding).
 # Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
@@ -261,9 +261,11 @@ def main():
                 tip_fine_depth=v["tip_fine_depth"], x0=v["start"][0], y0=v["start"][1],
                 apex_z=v["touch"] + 0.3, blocks="\n".join(blocks),
                 decomposition=v["decomposition"], substrate_bottom=fixed_displacement("substrate_bottom", "x y z"),
-                tip_top="\n".join([fixed_displacement("tip_top", "x"),
-                                   prescribed("force", "tip_top", "z", "load", f"-{LOAD} nN"),
-                                   prescribed("displacement", "tip_top", "y", "slide")]),
+                # The tip top is a rigid body (issue 56): with the force shared equally by its nodes the
+                # tip rocked (verification/rigid_slide); its x held through the body's node set.
+                tip_top="\n".join([rigid_body("tip_body", "tip_top"), fixed_displacement("tip_body", "x"),
+                                   prescribed("force", "tip_body", "z", "load", f"-{LOAD} nN", "rigid body"),
+                                   prescribed("displacement", "tip_body", "y", "slide", target="rigid body")]),
                 outputs=history_output(v["hist"], "substrate_bottom", "tip_top tip_apex") + "\n" + results_output(v["fields"])
                 + v["restart"],
                 contact=contact_definition("tip_on_track", [("tip", "tip_surface"), ("track", "substrate_top")],

@@ -122,6 +122,25 @@ begin sierra tip_on_flat
         wall time increment = 1800 s
         ring size = 3
       end restart output
+      begin rigid body lid
+        node set = substrate_ymax
+        reference point = 0 1 0 nm
+        rotation = fixed
+      end rigid body lid
+      begin prescribed force
+        rigid body = lid
+        component = y
+        function = load
+        scale factor = 1 N
+      end prescribed force
+      begin rigid body cap
+        block = substrate_skin
+      end rigid body cap
+      begin prescribed displacement
+        rigid body = cap
+        component = x
+        function = ramp
+      end prescribed displacement
     end presto region tip
   end presto procedure explicit
 end sierra tip_on_flat

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include "solver/output/rigid_body_history.hpp"
+
+#include <algorithm>
+
+#include "solver/model.hpp"
+#include "solver/parallel/communicator.hpp"
+
+namespace tribex::solver {
+
+std::vector<ColumnInfo> describe_rigid_body_columns(const std::vector<std::string>& bodies) {
+  std::vector<ColumnInfo> out;
+  for (const auto& b : bodies) {
+    for (const char* i : {"x", "y", "z"})
+      out.push_back({b + "_reaction_" + i, "N",
+                     "force the reference point of rigid body '" + b + "' applies to it (prescribed force or "
+                     "constraint reaction), " + i});
+    for (const char* i : {"x", "y", "z"})
+      out.push_back({b + "_displacement_" + i, "m", "displacement of rigid body '" + b + "' (its reference point), " + i});
+    for (const char* i : {"x", "y", "z"})
+      out.push_back({b + "_moment_" + i, "N m",
+                     "moment of the coupling forces about the reference point of rigid body '" + b +
+                     "' (what holds its rotation fixed), " + i});
+  }
+  return out;
+}
+
+void rigid_body_history_values(const Model& model, const RigidBodyState& s, std::vector<double>& values) {
+  const RigidBodies& rb = model.rigid_bodies;
+  std::fill(values.begin(), values.end(), 0.0);
+  if (rb.empty()) return;
+  const double* X = model.mesh.coordinates.data();
+  for (std::size_t b = 0; b < rb.size(); ++b) {
+    double share[3] = {0.0, 0.0, 0.0};  // per node, of the prescribed forces on the body
+    for (std::size_t l = 0; l < rb.load_body.size(); ++l)
+      if (rb.load_body[l] == static_cast<int>(b)) {
+        const NodalForceLoad& load = model.nodal_forces[rb.load_index[l]];
+        share[rb.load_component[l]] += load.scale * model.functions[load.function](s.time);
+      }
+    double* v = &values[9 * b];
+    for (int k = rb.first[b]; k < rb.first[b + 1]; ++k) {
+      if (!(rb.owned[k] > 0.0)) continue;
+      const std::size_t n = static_cast<std::size_t>(rb.node[k]);
+      double c[3], r[3];
+      for (int i = 0; i < 3; ++i) {
+        c[i] = s.coupling[3 * static_cast<std::size_t>(k) + i] + s.reaction[3 * n + i] + share[i];
+        // x_i - x_ref: the body translates, so the reference configuration's arm is the current one.
+        r[i] = X[3 * n + i] - rb.reference[3 * b + i];
+        v[i] += c[i];
+        v[3 + i] += s.displacement[3 * n + i];
+      }
+      v[6] += r[1] * c[2] - r[2] * c[1];
+      v[7] += r[2] * c[0] - r[0] * c[2];
+      v[8] += r[0] * c[1] - r[1] * c[0];
+    }
+  }
+  if (!model.domain.serial()) parallel::sum(values.data(), static_cast<int>(values.size()));
+  for (std::size_t b = 0; b < rb.size(); ++b)
+    for (int i = 0; i < 3; ++i) values[9 * b + 3 + i] /= rb.node_count[b];
+}
+
+}  // namespace tribex::solver

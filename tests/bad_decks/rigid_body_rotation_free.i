@@ -1,0 +1,30 @@
+# expect: 25: 'rotation = free' is not supported yet
+# a rigid body asked to rotate freely: refused with the fix
+begin sierra bad
+  begin property specification for material m
+    density = 1000
+    begin parameters for model elastic
+      youngs modulus = 1e9
+      poissons ratio = 0.3
+    end parameters for model elastic
+  end property specification for material m
+  begin finite element model fem
+    begin generated box b
+      origin = 0 0 0
+      size = 1 1 1
+      intervals = 2 2 2
+    end generated box b
+  end finite element model fem
+  begin presto procedure p
+    begin time control
+      termination time = 1e-6
+    end time control
+    begin presto region r
+      use finite element model fem
+      begin rigid body top
+        rotation = free
+        node set = b_zmax
+      end rigid body top
+    end presto region r
+  end presto procedure p
+end sierra bad

@@ -1,0 +1,195 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Writes the two decks of the force-controlled coated slide (README.md): the same model, the tip top
+driven through a rigid body (rigid_slide_rigid.i) or with the node-set load control of before
+(rigid_slide_nodeset.i: `prescribed force` on the node set shares the force equally among its nodes).
+
+  /usr/bin/python3 verification/rigid_slide/make_decks.py
+"""
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+LOAD_NN = 100.0          # normal load, nN
+SLIDE_NM, V_NM_PS = 3.0, 0.01   # 3 nm at 10 m/s
+T_LOAD, T_SLIDE, T_RAMP = 80.0, 120.0, 40.0  # ps: load ramp, slide start, speed ramp
+
+
+def load_rows():
+    rows = [(T_LOAD * k / 8, k / 8 - math.sin(2 * math.pi * k / 8) / (2 * math.pi)) for k in range(9)]
+    return rows + [(1000.0, 1.0)]
+
+
+def slide_rows():
+    """x(t): at rest to T_SLIDE, a cycloidal speed ramp to V over T_RAMP, then V to SLIDE_NM."""
+    rows = [(0.0, 0.0), (T_SLIDE, 0.0)]
+    for k in range(1, 9):
+        tau = T_RAMP * k / 8
+        x = V_NM_PS * (tau ** 2 / (2 * T_RAMP) + (math.cos(2 * math.pi * tau / T_RAMP) - 1) * T_RAMP / (4 * math.pi ** 2))
+        rows.append((T_SLIDE + tau, x))
+    t_end = T_SLIDE + T_RAMP + (SLIDE_NM - rows[-1][1]) / V_NM_PS
+    return rows + [(t_end, SLIDE_NM), (1000.0, SLIDE_NM)], t_end
+
+
+def values(rows):
+    return "".join(f"      {t:7.1f}  {v:.6f}\n" for t, v in rows)
+
+
+def tip_top_conditions(rigid):
+    if rigid:
+        return """      begin rigid body tip_body   # the tip top moves as one body: no rocking (rotation fixed)
+        node set = tip_top
+      end rigid body tip_body
+      begin fixed displacement
+        node set = tip_body        # the body's node set: y of the whole body (its reference point)
+        components = y
+      end fixed displacement
+      begin prescribed force
+        rigid body = tip_body
+        component = z
+        function = load
+        scale factor = -{load} nN
+      end prescribed force
+      begin prescribed displacement
+        rigid body = tip_body
+        component = x
+        function = slide
+      end prescribed displacement
+""".format(load=LOAD_NN)
+    return """      begin fixed displacement
+        node set = tip_top
+        components = y
+      end fixed displacement
+      begin prescribed force      # the force shared equally by the nodes of tip_top: the tip may rock
+        node set = tip_top
+        component = z
+        function = load
+        scale factor = -{load} nN
+      end prescribed force
+      begin prescribed displacement
+        node set = tip_top
+        component = x
+        function = slide
+      end prescribed displacement
+""".format(load=LOAD_NN)
+
+
+def deck(rigid):
+    name = "rigid_slide_rigid" if rigid else "rigid_slide_nodeset"
+    slide, t_end = slide_rows()
+    how = ("the tip top a rigid body (`begin rigid body`) loaded and driven at its reference point" if rigid else
+           "the tip top loaded with `prescribed force` on its node set (equal shares per node), as before rigid bodies")
+    history = ("reaction force = substrate_bottom\n        mean displacement = tip_top tip_apex" if rigid else
+               "reaction force = substrate_bottom\n        mean displacement = tip_top tip_apex")
+    return f"""# {name}.i -- written by make_decks.py (edit that, not this file).
+# Force-controlled sliding of a silicon sphere (R = 27 nm) on a SAM-coated silicon flat (coating 1.6 nm,
+# E = 8 GPa), junction model (W = 0.05 J/m^2, tau* = 194 MPa): {how}.
+# 0 - 80 ps: normal load ramped to {LOAD_NN:g} nN (cycloidal); 120 - {t_end:.0f} ps: the tip top slides {SLIDE_NM:g} nm
+# in +x at 10 m/s (cycloidal 40 ps speed ramp); y of the tip top held.
+#
+# Run:    build/bin/tribex run verification/rigid_slide/{name}.i -o {name}_output
+# Check:  /usr/bin/python3 verification/rigid_slide/compare.py {name}_output  (README.md)
+begin sierra {name}
+  begin function load
+    type = piecewise linear
+    abscissa unit = ps
+    begin values
+{values(load_rows())}    end values
+  end function load
+  begin function slide
+    type = piecewise linear
+    abscissa unit = ps
+    ordinate unit = nm
+    begin values
+{values(slide)}    end values
+  end function slide
+  begin property specification for material silicon
+    density = 2330 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 161 GPa
+      poissons ratio = 0.23
+    end parameters for model elastic
+  end property specification for material silicon
+  begin property specification for material sam
+    density = 1000 kg/m^3
+    begin parameters for model elastic
+      youngs modulus = 8 GPa
+      poissons ratio = 0.4
+    end parameters for model elastic
+  end property specification for material sam
+  begin solid section hex8
+    formulation = fully_integrated
+  end solid section hex8
+  begin finite element model asperity
+    begin generated asperity
+      radius = 27 nm
+      tip width = 24 nm
+      tip height = 13 nm
+      substrate width = 40 nm
+      substrate depth = 20 nm
+      element size = 0.8 nm
+      fine half width = 9.6 nm
+      fine depth = 3.2 nm
+      grading ratio = 1.4
+      coating thickness = 1.6 nm
+      coating layers = 2
+    end generated asperity
+    begin parameters for block tip
+      material = silicon
+      section = hex8
+    end parameters for block tip
+    begin parameters for block substrate
+      material = silicon
+      section = hex8
+    end parameters for block substrate
+    begin parameters for block coating
+      material = sam
+      section = hex8
+    end parameters for block coating
+  end finite element model asperity
+  begin presto procedure load_and_slide
+    begin time control
+      termination time = {t_end + 20:.1f} ps
+    end time control
+    begin presto region main
+      use finite element model asperity
+      mass damping coefficient = 5e11 1/s
+      begin fixed displacement
+        node set = substrate_bottom
+        components = x y z
+      end fixed displacement
+{tip_top_conditions(rigid)}      begin contact definition tip_on_flat
+        contact surface tip contains tip_surface
+        contact surface flat contains substrate_top
+        contact axis = 0 0 0 0 0 1 nm
+        begin interaction sphere_flat
+          surfaces = flat tip     # the coating is the softer side: slave
+          model = junction
+          work of adhesion = 0.05 J/m^2
+          equilibrium separation = 0.3 nm
+          adhesion cutoff = 6 nm
+          junction strength = 194 MPa
+          junction reference speed = 0.1 m/s
+          junction gap tolerance = 0 nm
+        end interaction sphere_flat
+      end contact definition tip_on_flat
+      begin history output hist
+        time increment = 2 ps
+        {history}
+      end history output hist
+      begin results output fields
+        time increment = 20 ps
+        nodal variables = displacement
+      end results output fields
+    end presto region main
+  end presto procedure load_and_slide
+end sierra {name}
+"""
+
+
+if __name__ == "__main__":
+    for rigid in (True, False):
+        name = "rigid_slide_rigid" if rigid else "rigid_slide_nodeset"
+        with open(os.path.join(HERE, name + ".i"), "w") as f:
+            f.write(deck(rigid))
+        print("wrote", name + ".i")
