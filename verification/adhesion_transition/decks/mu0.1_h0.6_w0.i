@@ -7,7 +7,8 @@
 #
 # Paraboloid tip R = 27 nm on a flat, both E = 94.71 GPa, nu = 0.23 (E* = 50 GPa), density scaled to
 # keep silicon's wave speed. Quarter model: forces in history.csv are a quarter of the full problem's.
-# Push (nm) = gap - z0 + delta: fast to 1.5 z0 above contact, then 4 m/s to the Hertz approach of 2 pi W_c R.
+# Push (nm) = gap + delta: fast to 1.5 z0 above contact, then 4 m/s to the Hertz approach of 2 pi W_c R.
+# Adhesive / element stiffness 16 W h/(E z0^2) = 0: time step scale factor 0.9/sqrt(1 + that).
 begin sierra mu0.1_h0.6_w0
   begin function push
     type = piecewise linear
@@ -118,6 +119,7 @@ begin sierra mu0.1_h0.6_w0
   begin presto procedure indent
     begin time control
       termination time = 320 ps
+      time step scale factor = 0.9
     end time control
     begin presto region main
       use finite element model asperity
