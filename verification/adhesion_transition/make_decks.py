@@ -49,7 +49,10 @@ RAMP = 20 * PS
 # name: mu_T, element size h (nm), fine half width (nm), labels (README.md says which run in CI).
 RUNS = {
     "mu0.1_h0.6": dict(mu=0.1, h=0.6, fine=5.0),
+    "mu0.1_h0.4": dict(mu=0.1, h=0.4, fine=5.0),
+    "mu0.1_h0.3": dict(mu=0.1, h=0.3, fine=5.0),
     "mu0.3_h0.5": dict(mu=0.3, h=0.5, fine=6.0),
+    "mu0.3_h0.35": dict(mu=0.3, h=0.35, fine=6.0),
     "mu1_h0.4": dict(mu=1.0, h=0.4, fine=8.5),
     "mu1_h0.3": dict(mu=1.0, h=0.3, fine=8.5),
     "mu1_h0.25": dict(mu=1.0, h=0.25, fine=8.5),
@@ -93,6 +96,8 @@ def drive(waypoints_nm):
     cycloidal ramps; returns (values text, end time in ps)."""
     moves, t = [], 0.0
     for (p0, _), (p1, v) in zip(waypoints_nm, waypoints_nm[1:]):
+        if abs(p1 - p0) < 1e-9:   # no zero-length moves: their ramps would jerk the tip
+            continue
         duration = abs(p1 - p0) * 1e-9 / v + RAMP
         moves.append((t, t + duration, p0, math.copysign(v, p1 - p0)))
         t += duration
@@ -176,7 +181,7 @@ def write(name, run, summary, rows, twin):
         note = f"fast to 1.5 z0 above contact, then {V_SLOW:g} m/s to the Hertz approach of {P_MAX:g} pi W_c R."
         body = ""
     else:
-        knee = pull + 1.0   # above it (loaded, stable, far from the jumps) the tip moves at V_LOADED
+        knee = min(pull + 1.0, top)   # above it (loaded, stable, far from the jumps) the tip moves at V_LOADED
         points = [(0.0, 0), (base + start * z0, V_FAST), (base + knee * z0, V_SLOW), (base + top * z0, V_LOADED),
                   (base + knee * z0, V_LOADED), (base + end * z0, V_SLOW)]
         note = (f"{V_FAST:g} m/s to delta = {start:.3f} z0, {V_SLOW:g} m/s to {knee:.3f} z0, {V_LOADED:g} m/s to "
