@@ -51,6 +51,7 @@ RUNS = {
     "mu0.1_h0.6": dict(mu=0.1, h=0.6, fine=5.0),
     "mu0.1_h0.4": dict(mu=0.1, h=0.4, fine=5.0),
     "mu0.1_h0.3": dict(mu=0.1, h=0.3, fine=5.0),
+    "mu0.1_h0.4_v2": dict(mu=0.1, h=0.4, fine=5.0, speed=0.5),   # the drive at half speed (quasi-static test)
     "mu0.3_h0.5": dict(mu=0.3, h=0.5, fine=6.0),
     "mu0.3_h0.35": dict(mu=0.3, h=0.35, fine=6.0),
     "mu1_h0.4": dict(mu=1.0, h=0.4, fine=8.5),
@@ -182,10 +183,11 @@ def write(name, run, summary, rows, twin):
         body = ""
     else:
         knee = min(pull + 1.0, top)   # above it (loaded, stable, far from the jumps) the tip moves at V_LOADED
-        points = [(0.0, 0), (base + start * z0, V_FAST), (base + knee * z0, V_SLOW), (base + top * z0, V_LOADED),
-                  (base + knee * z0, V_LOADED), (base + end * z0, V_SLOW)]
-        note = (f"{V_FAST:g} m/s to delta = {start:.3f} z0, {V_SLOW:g} m/s to {knee:.3f} z0, {V_LOADED:g} m/s to "
-                f"{top:.3f} z0 (P = {P_MAX:g} pi W_c R on the reference) and back to {knee:.3f} z0, {V_SLOW:g} m/s "
+        k = run.get("speed", 1.0)
+        points = [(0.0, 0), (base + start * z0, V_FAST), (base + knee * z0, k * V_SLOW), (base + top * z0, k * V_LOADED),
+                  (base + knee * z0, k * V_LOADED), (base + end * z0, k * V_SLOW)]
+        note = (f"{V_FAST:g} m/s to delta = {start:.3f} z0, {k * V_SLOW:g} m/s to {knee:.3f} z0, {k * V_LOADED:g} m/s to "
+                f"{top:.3f} z0 (P = {P_MAX:g} pi W_c R on the reference) and back to {knee:.3f} z0, {k * V_SLOW:g} m/s "
                 f"to {end:.3f} z0.")
         body = (f"          model = adhesion\n          work of adhesion = {W:g} J/m^2\n"
                 f"          equilibrium separation = {z0:g} nm\n          adhesion cutoff = {HC_NM:g} nm\n")
@@ -220,9 +222,9 @@ def main():
     for name, run in RUNS.items():
         if run["mu"] not in refs:
             refs[run["mu"]] = reference(tribex, run["mu"])
-        for twin in (False, True):
+        for twin in (False, True) if "speed" not in run else (False,):   # a speed variant shares the twin
             write(name, run, *refs[run["mu"]], twin)
-    print(f"wrote {2 * len(RUNS)} decks to {HERE / 'decks'}, {len(refs)} references to {HERE / 'reference'}")
+    print(f"wrote the decks of {len(RUNS)} runs to {HERE / 'decks'}, {len(refs)} references to {HERE / 'reference'}")
 
 
 if __name__ == "__main__":
