@@ -56,7 +56,6 @@ RUNS = {
     "mu0.3_h0.35": dict(mu=0.3, h=0.35, fine=6.0),
     "mu1_h0.4": dict(mu=1.0, h=0.4, fine=8.5),
     "mu1_h0.3": dict(mu=1.0, h=0.3, fine=8.5),
-    "mu1_h0.25": dict(mu=1.0, h=0.25, fine=8.5),
 }
 
 
