@@ -38,6 +38,7 @@ import json
 import math
 import pathlib
 import sys
+from types import SimpleNamespace
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[1] / "tools" / "python"))
@@ -130,6 +131,82 @@ def fe_jumps(p, raw, deepest, unit, steepest, z0):
     return jin, first(pull, len(p), +1)
 
 
+def check_jumps(a, fe, rf, figures, failures):
+    """Jump-in and jump-out against the reference (module doc); returns the jump windows (s, s)."""
+    windows, t, z0, unit = [], fe.t, rf.z0, rf.unit
+    for name, ri, fi, forward in (("jump-in", rf.jin, fe.jin, True), ("jump-out", rf.jout, fe.jout, False)):
+        if ri is None and fi is None:
+            print(f"{name}: none in the reference (with the frame in series) and none in the FE")
+            continue
+        if ri is None or fi is None:
+            print(f"{name}: reference {'none' if ri is None else f'at {rf.raw[ri] / z0:.3f} z0'}, FE "
+                  f"{'none' if fi is None else f'at {fe.raw[fi] / z0:.3f} z0'}: FAIL")
+            failures.append(name)
+            continue
+        diff = (fe.raw[fi] - rf.raw[ri]) / z0
+        windows.append((t[fi], t[fi] + a.settle * 1e-12))
+        released = jump_energy(rf.raw, rf.p, ri, forward)
+        damping = [r["damping_dissipation"] for r in fe.rows]
+        k_end = max(k for k in range(len(t)) if t[k] <= t[fi] + a.settle * 1e-12)
+        k0 = max(fi - 10, 0)   # less the quasi-static drag: the damping rate over the 10 rows before the jump
+        rate = (damping[fi] - damping[k0]) / max(t[fi] - t[k0], 1e-30)
+        damped = QUARTER * (damping[k_end] - damping[fi] - rate * (t[k_end] - t[fi]))
+        figures[name.replace("-", "_")] = dict(fe_raw_over_z0=fe.raw[fi] / z0, ref_raw_over_z0=rf.raw[ri] / z0,
+                                               error_z0=diff, released_J=released, damping_over_window_J=damped)
+        print(f"{name}: FE at delta_raw = {fe.raw[fi] / z0:.3f} z0 (P {fe.p[fi] / unit:.3f}), reference "
+              f"{rf.raw[ri] / z0:.3f} z0 (P {rf.p[ri] / unit:.3f}; {rf.d[ri] / z0:.3f} z0 without the frame): "
+              f"{diff:+.3f} z0 (tol {a.jump_tolerance:g}); released "
+              f"{released if released is None else f'{released:.3g} J'}, damping over the {a.settle:g} ps window "
+              f"above the drag before it {damped:.3g} J")
+        if abs(diff) > a.jump_tolerance:
+            failures.append(name)
+    return windows
+
+
+def curve_errors(fe, rf, in_window):
+    """(|dP|/|P_pull-off|, row) on the stable branches and the same errors read along delta (in z0)."""
+    rin0, rout0 = path_extrema(rf.d)   # branches in delta (the FE delta is corrected by C P)
+    out_branch = rf.pts[: (rin0 if rin0 is not None else len(rf.pts)) + 1]
+    contact_branch = rf.pts[(rout0 if rout0 is not None else 0):]
+    errs, shifts, z0 = [], [], rf.z0
+    for i in range(len(fe.rows)):
+        if in_window(i) or fe.p[i] == 0 and i < fe.deepest and (fe.jin is None or i < fe.jin) and fe.d[i] < -3 * z0:
+            continue
+        out = (i <= fe.deepest and fe.jin is not None and i < fe.jin) or (
+            i > fe.deepest and fe.jout is not None and i > fe.jout)
+        branch = rf.pts if rin0 is None and rout0 is None else (out_branch if out else contact_branch)
+        pr = interp_branch(branch, fe.d[i])
+        if pr is None:
+            continue
+        errs.append((abs(fe.p[i] - pr) / abs(rf.pull), i))
+        dz = 0.01 * z0   # the same error read along delta: |dP| / |dP_ref/d(delta)| (informative, not checked)
+        lo, hi = interp_branch(branch, fe.d[i] - dz), interp_branch(branch, fe.d[i] + dz)
+        if lo is not None and hi is not None and hi != lo:
+            shifts.append(abs(fe.p[i] - pr) / abs((hi - lo) / (2 * dz)) / z0)
+    return errs, sorted(shifts)
+
+
+def check_curve(a, fe, rf, in_window, figures, failures):
+    errs, shifts = curve_errors(fe, rf, in_window)
+    worst, wi = max(errs)
+    # informative: the same without the rows within the jump tolerance (in delta_raw) of a jump start,
+    # where the branch turns vertical and a vertical distance says little
+    starts = [fe.raw[j] for j in (fe.jin, fe.jout) if j is not None]
+    away = [e for e, i in errs if all(abs(fe.raw[i] - x) > a.jump_tolerance * rf.z0 for x in starts)]
+    mean, median, p90 = sum(e for e, _ in errs) / len(errs), shifts[len(shifts) // 2], shifts[int(0.9 * len(shifts))]
+    figures.update(curve_max=worst, curve_mean=mean, curve_points=len(errs), curve_worst_delta_over_z0=fe.d[wi] / rf.z0,
+                   curve_worst_p_bar=fe.p[wi] / rf.unit, curve_p90_shift_z0=p90, curve_median_shift_z0=median,
+                   curve_max_away_from_jumps=max(away) if away else None)
+    print(f"curve: {len(errs)} rows on the stable branches, max |dP| = {100 * worst:.2f} % of the pull-off (at delta "
+          f"{fe.d[wi] / rf.z0:.3f} z0, P {fe.p[wi] / rf.unit:.3f}, {'withdrawal' if wi > fe.deepest else 'approach'}), "
+          f"mean {100 * mean:.2f} % (tol {100 * a.curve_tolerance:g} %); read along delta (not near the pull-off, "
+          f"where the slope vanishes): median {median:.4f} z0, 90th percentile {p90:.4f} z0"
+          + (f"; max beyond {a.jump_tolerance:g} z0 of the jump starts {100 * max(away):.2f} % (not checked)"
+             if starts and away else ""))
+    if worst > a.curve_tolerance:
+        failures.append("curve")
+
+
 def main():
     ap = history_parser(__doc__, "P/(pi W_c R) against delta/z0, FE and reference", positional="output")
     ap.add_argument("--twin", required=True, help="output folder of the W = 0 twin (*_w0.i)")
@@ -142,109 +219,38 @@ def main():
     ap.add_argument("--json", help="write the measured figures here")
     a = ap.parse_args()
 
-    summary, ref = read_reference(a.reference)
-    z0, R, wc = summary["z0_m"], summary["radius_m"], summary["captured_work_J_m2"]
-    unit = math.pi * wc * R
+    summary, pts = read_reference(a.reference)
+    z0 = summary["z0_m"]
+    unit = math.pi * summary["captured_work_J_m2"] * summary["radius_m"]
     c, rms, twin_top = frame_compliance(read_history(a.twin), summary)
     rows = read_history(a.output)
-    t = [r["time"] for r in rows]
-    p = [QUARTER * r["contact_normal_force"] for r in rows]
-    raw = [-r["tip_top_displacement_z"] - GAP_NM * 1e-9 for r in rows]
-    delta = [x - c * f for x, f in zip(raw, p)]
-    deepest = max(range(len(rows)), key=lambda i: raw[i])
+    fe = SimpleNamespace(rows=rows, t=[r["time"] for r in rows], p=[QUARTER * r["contact_normal_force"] for r in rows],
+                         raw=[-r["tip_top_displacement_z"] - GAP_NM * 1e-9 for r in rows])
+    fe.d = [x - c * f for x, f in zip(fe.raw, fe.p)]
+    fe.deepest = max(range(len(rows)), key=lambda i: fe.raw[i])
+    rf = SimpleNamespace(pts=pts, d=[d for d, _ in pts], p=[f for _, f in pts], raw=[d + c * f for d, f in pts], z0=z0,
+                         unit=unit, pull=summary["pull_off_load_control"]["load_N"])
+    rf.jin, rf.jout = path_extrema(rf.raw)
+    fe.jin, fe.jout = fe_jumps(fe.p, fe.raw, fe.deepest, unit, stable_slope(rf.raw, rf.p, (rf.jin, rf.jout), z0), z0)
     print(f"frame compliance C = {c:.4g} m/N from the W = 0 twin (rms residual {rms / z0:.3g} z0; at the set load "
-          f"C P = {c * twin_top / z0:.3f} z0); largest FE load {p[deepest] / unit:.3f} pi W_c R")
-
-    ref_d = [d for d, _ in ref]
-    ref_p = [f for _, f in ref]
-    ref_raw = [d + c * f for d, f in ref]
-    rin, rout = path_extrema(ref_raw)
-    steepest = stable_slope(ref_raw, ref_p, (rin, rout), z0)
-    fin, fout = fe_jumps(p, raw, deepest, unit, steepest, z0)
+          f"C P = {c * twin_top / z0:.3f} z0); largest FE load {fe.p[fe.deepest] / unit:.3f} pi W_c R")
     failures, figures = [], {"tabor": summary["tabor"], "frame_compliance_m_per_N": c, "twin_rms_over_z0": rms / z0}
 
-    # pull-off
-    pull_fe, pull_ref = min(p[deepest:]), summary["pull_off_load_control"]["load_N"]
-    err = pull_fe / pull_ref - 1
-    figures.update(pull_off_bar=pull_fe / unit, pull_off_ref_bar=pull_ref / unit, pull_off_error=err)
-    print(f"pull-off: FE {pull_fe / unit:.4f} pi W_c R ({pull_fe * 1e9:.3f} nN), reference {pull_ref / unit:.4f}: "
+    pull_fe = min(fe.p[fe.deepest:])
+    err = pull_fe / rf.pull - 1
+    figures.update(pull_off_bar=pull_fe / unit, pull_off_ref_bar=rf.pull / unit, pull_off_error=err)
+    print(f"pull-off: FE {pull_fe / unit:.4f} pi W_c R ({pull_fe * 1e9:.3f} nN), reference {rf.pull / unit:.4f}: "
           f"{100 * err:+.2f} % (tol {100 * a.pull_off_tolerance:g} %)")
     if abs(err) > a.pull_off_tolerance:
         failures.append("pull-off")
 
-    # jumps
-    windows = []
-    for name, ri, fi, forward in (("jump-in", rin, fin, True), ("jump-out", rout, fout, False)):
-        if ri is None and fi is None:
-            print(f"{name}: none in the reference (with the frame in series) and none in the FE")
-            continue
-        if ri is None or fi is None:
-            print(f"{name}: reference {'none' if ri is None else f'at {ref_raw[ri] / z0:.3f} z0'}, FE "
-                  f"{'none' if fi is None else f'at {raw[fi] / z0:.3f} z0'}: FAIL")
-            failures.append(name)
-            continue
-        diff = (raw[fi] - ref_raw[ri]) / z0
-        windows.append((t[fi], t[fi] + a.settle * 1e-12))
-        released = jump_energy(ref_raw, ref_p, ri, forward)
-        k_end = max(k for k in range(len(t)) if t[k] <= t[fi] + a.settle * 1e-12)
-        damped = rows[k_end]["damping_dissipation"] - rows[fi]["damping_dissipation"]
-        k0 = max(fi - 10, 0)   # less the quasi-static drag: the damping rate over the 10 rows before the jump
-        rate = (rows[fi]["damping_dissipation"] - rows[k0]["damping_dissipation"]) / max(t[fi] - t[k0], 1e-30)
-        damped -= rate * (t[k_end] - t[fi])
-        figures[name.replace("-", "_")] = dict(fe_raw_over_z0=raw[fi] / z0, ref_raw_over_z0=ref_raw[ri] / z0, error_z0=diff,
-                                               released_J=released, damping_over_window_J=QUARTER * damped)
-        print(f"{name}: FE at delta_raw = {raw[fi] / z0:.3f} z0 (P {p[fi] / unit:.3f}), reference {ref_raw[ri] / z0:.3f} z0 "
-              f"(P {ref_p[ri] / unit:.3f}; {ref_d[ri] / z0:.3f} z0 without the frame): {diff:+.3f} z0 "
-              f"(tol {a.jump_tolerance:g}); released {released if released is None else f'{released:.3g} J'}, "
-              f"damping over the {a.settle:g} ps window above the drag before it {QUARTER * damped:.3g} J")
-        if abs(diff) > a.jump_tolerance:
-            failures.append(name)
+    windows = check_jumps(a, fe, rf, figures, failures)
 
     def in_window(i):
-        return any(lo <= t[i] <= hi for lo, hi in windows)
+        return any(lo <= fe.t[i] <= hi for lo, hi in windows)
 
-    # curve: reference branches in delta (without the frame: the FE delta is corrected by C P)
-    rin0, rout0 = path_extrema(ref_d)
-    out_branch = ref[: (rin0 if rin0 is not None else len(ref)) + 1]
-    contact_branch = ref[(rout0 if rout0 is not None else 0):]
-    errs, shifts = [], []
-    fe_in = fin if fin is not None else None
-    fe_out = fout if fout is not None else None
-    for i in range(len(rows)):
-        if in_window(i) or p[i] == 0 and i < deepest and (fe_in is None or i < fe_in) and delta[i] < -3 * z0:
-            continue
-        approach_out = i <= deepest and fe_in is not None and i < fe_in
-        withdraw_out = i > deepest and fe_out is not None and i > fe_out
-        if rin0 is None and rout0 is None:
-            branch = ref
-        else:
-            branch = out_branch if (approach_out or withdraw_out) else contact_branch
-        pr = interp_branch(branch, delta[i])
-        if pr is None:
-            continue
-        errs.append((abs(p[i] - pr) / abs(pull_ref), i))
-        dz = 0.01 * z0   # the same error read along delta: |dP| / |dP_ref/d(delta)| (informative, not checked)
-        lo, hi = interp_branch(branch, delta[i] - dz), interp_branch(branch, delta[i] + dz)
-        if lo is not None and hi is not None and hi != lo:
-            shifts.append(abs(p[i] - pr) / abs((hi - lo) / (2 * dz)) / z0)
-    worst, wi = max(errs)
-    # informative: the same without the rows within the jump tolerance (in delta_raw) of a jump start,
-    # where the branch turns vertical and a vertical distance says little
-    starts = [raw[j] for j in (fin, fout) if j is not None]
-    away = [e for e, i in errs if all(abs(raw[i] - x) > a.jump_tolerance * z0 for x in starts)]
-    figures["curve_max_away_from_jumps"] = max(away) if away else None
-    mean = sum(e for e, _ in errs) / len(errs)
-    figures.update(curve_max=worst, curve_mean=mean, curve_points=len(errs), curve_worst_delta_over_z0=delta[wi] / z0,
-                   curve_worst_p_bar=p[wi] / unit, curve_p90_shift_z0=sorted(shifts)[int(0.9 * len(shifts))], curve_median_shift_z0=sorted(shifts)[len(shifts) // 2])
-    print(f"curve: {len(errs)} rows on the stable branches, max |dP| = {100 * worst:.2f} % of the pull-off (at delta "
-          f"{delta[wi] / z0:.3f} z0, P {p[wi] / unit:.3f}, {'withdrawal' if wi > deepest else 'approach'}), mean "
-          f"{100 * mean:.2f} % (tol {100 * a.curve_tolerance:g} %); read along delta (not near the pull-off, where the slope vanishes): median "
-          f"{sorted(shifts)[len(shifts) // 2]:.4f} z0, 90th percentile {sorted(shifts)[int(0.9 * len(shifts))]:.4f} z0"
-          + (f"; max beyond {a.jump_tolerance:g} z0 of the jump starts {100 * max(away):.2f} % (not checked)" if starts and away else ""))
-    if worst > a.curve_tolerance:
-        failures.append("curve")
+    check_curve(a, fe, rf, in_window, figures, failures)
 
-    # energy
     e_all = max(abs(r["energy_error"]) for r in rows)
     e_out = max(abs(r["energy_error"]) for i, r in enumerate(rows) if not in_window(i))
     figures.update(energy_max=e_all, energy_outside_jumps=e_out)
@@ -256,7 +262,7 @@ def main():
     if a.json:
         pathlib.Path(a.json).write_text(json.dumps(figures, indent=1))
     if a.plot:
-        plot(a.plot, summary, ref, delta, p, deepest, unit, z0)
+        plot(a.plot, summary, pts, fe.d, fe.p, fe.deepest, unit, z0)
     print("FAIL: " + ", ".join(failures) if failures else "PASS")
     return 1 if failures else 0
 

@@ -28,7 +28,6 @@ load and compared with Hertz).
 import csv
 import json
 import math
-import os
 import pathlib
 import subprocess
 import sys
