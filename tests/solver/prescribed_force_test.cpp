@@ -30,7 +30,7 @@ TEST(PrescribedForce, UniaxialBlockReachesTheStaticSolution) {
   region.fixed_displacements.push_back({"b_zmin", {C::z}, {}});
   // F(t): ramp over 20 ps, then held; scale -1: pulling down (compression).
   deck.functions.push_back({"load", {0.0, 20e-12, 1.0}, {0.0, F, F}, {}});
-  region.prescribed_forces.push_back({"b_zmax", C::z, "load", -1.0, {}});
+  region.prescribed_forces.push_back({"b_zmax", C::z, "load", -1.0, {}, {}});
   region.mass_damping_coefficient = 2e12;  // 1/s, about critical for the block's axial mode
   deck.procedure.time_control.termination_time = 200e-12;
   solver::Model model = solver::build_model(deck);
@@ -62,7 +62,7 @@ TEST(PrescribedForce, RefusesAConstrainedComponent) {
   using C = inputs::Component;
   deck.procedure.region.fixed_displacements.push_back({"b_zmax", {C::z}, {}});
   deck.functions.push_back({"load", {0.0, 1.0}, {0.0, 1.0}, {}});
-  deck.procedure.region.prescribed_forces.push_back({"b_zmax", C::z, "load", 1.0, {}});
+  deck.procedure.region.prescribed_forces.push_back({"b_zmax", C::z, "load", 1.0, {}, {}});
   try {
     solver::build_model(deck);
     FAIL() << "expected a SetupError";

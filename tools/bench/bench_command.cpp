@@ -63,7 +63,7 @@ inputs::Deck block_deck(int n, inputs::ElementFormulation formulation, inputs::M
   proc.time_control.time_step_scale_factor = 0.5;
   proc.region.fixed_displacements.push_back({"cube_xmin", {inputs::Component::x, inputs::Component::y, inputs::Component::z}, {}});
   proc.region.prescribed_motions.push_back(
-      {inputs::PrescribedMotionSpec::Kind::velocity, "cube_xmax", inputs::Component::x, "pull", 1.0, {}});
+      {inputs::PrescribedMotionSpec::Kind::velocity, "cube_xmax", inputs::Component::x, "pull", 1.0, {}, {}});
   return deck;
 }
 
