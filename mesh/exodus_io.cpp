@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mesh/exodus_prescan.hpp"
+#include "mesh/exodus_shapes.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/output_target.hpp"
 
@@ -155,6 +156,7 @@ Mesh read_exodus(const std::string& path) {
                    " bytes); give a .exo/.g file written by Cubit, SEACAS or tribex, or a gmsh .msh file");
   // Every size the header states, checked against the file before the library allocates for it.
   if (kind != "netCDF-4") prescan_exodus_file(path);
+  else check_netcdf4_exodus(path);
   quiet_exodus();
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0;

@@ -4,7 +4,7 @@
 // items 11 and 16): every size the header states is checked against the file's size before anything
 // is allocated for it, so a cut file says "truncated", a netCDF file that is not Exodus says so, and
 // a header that claims 2e9 elements is refused naming the size. netCDF-4 (HDF5) files are not walked:
-// their counts are checked against the stated limits only (read_exodus).
+// their counts are checked against the stated limits, their structure by check_netcdf4_exodus (exodus_shapes.hpp).
 #pragma once
 
 #include <cstdint>

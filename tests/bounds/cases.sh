@@ -133,6 +133,11 @@ item11_exodus_header_sizes)
   craft name_length "the header states names of up to 2000000000 characters (maximum_name_length); Exodus II allows 256"
   craft attribute_values "its global attribute 'int64_status' holds 141 values where Exodus II has one: a damaged or crafted file"
   craft coord_dimension "variable 'coordx' has the dimensions (num_nodes_wide) where Exodus II has (num_nodes): a damaged or crafted file"
+  # The same two as netCDF-4 (HDF5) files, checked through the netCDF library; the unchanged mesh as netCDF-4 reads.
+  craft coord_dimension_nc4 "variable 'coordx' has the dimensions (num_nodes_wide) where Exodus II has (num_nodes): a damaged or crafted file"
+  craft attribute_values_nc4 "its global attribute 'int64_status' holds 141 values where Exodus II has one: a damaged or crafted file"
+  $PY "$SRC/tests/bounds/craft_exodus.py" E/results.exo copy_nc4.exo copy_nc4 || fail "cannot write copy_nc4.exo"
+  expect_rc 0 "$T" mesh convert copy_nc4.exo copy_nc4.msh
   ;;
 item16_exodus_messages)
   # A cut Exodus file says truncated; a netCDF file that is not Exodus says so.

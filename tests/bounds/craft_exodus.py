@@ -15,6 +15,9 @@ usage: craft_exodus.py SRC DST elements|name_length|cut|not_exodus
                from it: a segmentation fault before the header walk checked the variables' dimensions)
   attribute_values: the global attribute int64_status with 141 values (ex_open reads it into one int on its
                stack: "stack smashing detected", the third fuzz finding)
+  copy:        SRC unchanged (with _nc4: the same mesh as a netCDF-4 file)
+  KIND_nc4:    coord_dimension, attribute_values or copy written as netCDF-4 (HDF5), which the classic walk does
+               not read: checked through the netCDF library (mesh/exodus_shapes.cpp check_netcdf4_exodus)
   not_exodus:  a netCDF classic file with one dimension and variable, no Exodus structure (SRC unused)
 """
 import struct
@@ -36,12 +39,13 @@ if kind == "not_exodus":
         f.createDimension("x", 4)
         f.createVariable("temperature", "f8", ("x",))[:] = [1.0, 2.0, 3.0, 4.0]
     sys.exit(0)
-def rewrite(src, dst, wide_coordx=False, attributes=None):
+def rewrite(src, dst, wide_coordx=False, attributes=None, file_format=None):
     """A copy of the netCDF file SRC through the netCDF library, coordx declared over a new dimension of
-    100 x num_nodes values (wide_coordx), global attributes replaced by `attributes`."""
+    100 x num_nodes values (wide_coordx), global attributes replaced by `attributes`, in `file_format`
+    (default: SRC's)."""
     import netCDF4
     import numpy
-    with netCDF4.Dataset(src) as f, netCDF4.Dataset(dst, "w", format=f.file_format) as g:
+    with netCDF4.Dataset(src) as f, netCDF4.Dataset(dst, "w", format=file_format or f.file_format) as g:
         wide = 100 * len(f.dimensions["num_nodes"])
         for name, d in f.dimensions.items():
             g.createDimension(name, None if d.isunlimited() else len(d))
@@ -57,12 +61,13 @@ def rewrite(src, dst, wide_coordx=False, attributes=None):
                 w[:] = values
 
 
-if kind == "coord_dimension":
-    rewrite(src, dst, wide_coordx=True)
-    sys.exit(0)
-if kind == "attribute_values":
+netcdf4 = kind.endswith("_nc4")
+kind = kind.removesuffix("_nc4")
+if kind in ("coord_dimension", "attribute_values", "copy"):
     import numpy
-    rewrite(src, dst, attributes={"int64_status": numpy.arange(141, dtype="i4")})
+    rewrite(src, dst, wide_coordx=kind == "coord_dimension",
+            attributes={"int64_status": numpy.arange(141, dtype="i4")} if kind == "attribute_values" else None,
+            file_format="NETCDF4" if netcdf4 else None)
     sys.exit(0)
 data = open(src, "rb").read()
 if kind == "elements":
