@@ -15,7 +15,7 @@
 
 namespace tribex::solver {
 
-class StateArchive;
+struct StateArchive;
 
 /// What the messages name beside a warning's numbers (SetupFindings' texts).
 struct WarningContext {
