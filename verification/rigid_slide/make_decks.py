@@ -8,6 +8,11 @@ driven through a rigid body (rigid_slide_rigid.i) or with the node-set load cont
 """
 import math
 import os
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
+from deck_templates import fixed_displacement, prescribed, rigid_body  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LOAD_NN = 100.0          # normal load, nN
@@ -36,42 +41,14 @@ def values(rows):
 
 
 def tip_top_conditions(rigid):
-    if rigid:
-        return """      begin rigid body tip_body   # the tip top moves as one body: no rocking (rotation fixed)
-        node set = tip_top
-      end rigid body tip_body
-      begin fixed displacement
-        node set = tip_body        # the body's node set: y of the whole body (its reference point)
-        components = y
-      end fixed displacement
-      begin prescribed force
-        rigid body = tip_body
-        component = z
-        function = load
-        scale factor = -{load} nN
-      end prescribed force
-      begin prescribed displacement
-        rigid body = tip_body
-        component = x
-        function = slide
-      end prescribed displacement
-""".format(load=LOAD_NN)
-    return """      begin fixed displacement
-        node set = tip_top
-        components = y
-      end fixed displacement
-      begin prescribed force      # the force shared equally by the nodes of tip_top: the tip may rock
-        node set = tip_top
-        component = z
-        function = load
-        scale factor = -{load} nN
-      end prescribed force
-      begin prescribed displacement
-        node set = tip_top
-        component = x
-        function = slide
-      end prescribed displacement
-""".format(load=LOAD_NN)
+    """The tip top's loading: a rigid body (tip_body, rotation fixed: no rocking) or the node set, whose
+    `prescribed force` is shared equally by its nodes (the tip may rock). y held, z loaded, x driven."""
+    target, name = ("rigid body", "tip_body") if rigid else ("node set", "tip_top")
+    blocks = [rigid_body("tip_body", "tip_top")] if rigid else []
+    blocks += [fixed_displacement(name, "y"),  # a rigid body's node set holds the body's y
+               prescribed("force", name, "z", "load", f"-{LOAD_NN} nN", target),
+               prescribed("displacement", name, "x", "slide", target=target)]
+    return "\n".join(blocks) + "\n"
 
 
 def deck(rigid):

@@ -101,7 +101,7 @@ begin sierra rigid_slide_nodeset
         node set = tip_top
         components = y
       end fixed displacement
-      begin prescribed force      # the force shared equally by the nodes of tip_top: the tip may rock
+      begin prescribed force
         node set = tip_top
         component = z
         function = load

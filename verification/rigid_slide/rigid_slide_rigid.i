@@ -97,11 +97,11 @@ begin sierra rigid_slide_rigid
         node set = substrate_bottom
         components = x y z
       end fixed displacement
-      begin rigid body tip_body   # the tip top moves as one body: no rocking (rotation fixed)
+      begin rigid body tip_body
         node set = tip_top
       end rigid body tip_body
       begin fixed displacement
-        node set = tip_body        # the body's node set: y of the whole body (its reference point)
+        node set = tip_body
         components = y
       end fixed displacement
       begin prescribed force
