@@ -17,6 +17,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from history_checks import report_failures  # noqa: E402
@@ -40,6 +41,7 @@ def main():
             r = subprocess.run(["bash", "-e", "-c", block], cwd=work, capture_output=True, text=True)
             if r.returncode == 0:
                 break
+            time.sleep(2 * (attempt + 1))  # let a display that is going away go before xvfb-run -a picks one
         print(f"--- block {k + 1} (exit {r.returncode}):\n{block}{r.stdout}{r.stderr}")
         printed += r.stdout
         if r.returncode != 0:
