@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "contact/rough/gw_integrals.hpp"
 
-#include <array>
+#include "contact/rough/gauss_legendre.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -10,33 +11,9 @@ namespace {
 
 constexpr int gl_order = 20;
 
-struct GaussLegendreRule {
-  std::array<double, gl_order> x{}, w{};
-  GaussLegendreRule() {
-    // Newton on P_n from the Chebyshev-like initial guesses; P_n by the three-term recurrence.
-    for (int i = 0; i < gl_order; ++i) {
-      double z = std::cos(M_PI * (i + 0.75) / (gl_order + 0.5));
-      double dp = 0.0;
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1.0, p1 = z;
-        for (int k = 2; k <= gl_order; ++k) {
-          const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = gl_order * (z * p1 - p0) / (z * z - 1.0);
-        const double dz = p1 / dp;
-        z -= dz;
-        if (std::fabs(dz) < 1e-16) break;
-      }
-      x[static_cast<std::size_t>(i)] = z;
-      w[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - z * z) * dp * dp);
-    }
-  }
-};
-
-const GaussLegendreRule& rule() {
-  static const GaussLegendreRule r;
+// The 20-point rule on [-1, 1], built once.
+const QuadratureRule& rule() {
+  static const QuadratureRule r = gauss_legendre_rule(gl_order, -1.0, 1.0);
   return r;
 }
 

@@ -167,7 +167,7 @@ TEST(LayeredContact, ConvergedInNodesAndHankelPoints) {
   // and p >= 0 inside the contact, integrating to the load
   const auto sol = c.sphere_at_load(1.59 * scale, 3e-9);
   std::vector<double> r;
-  const Rule q = gauss_legendre(40, 0.0, sol.radius);
+  const gw::QuadratureRule q = gw::gauss_legendre_rule(40, 0.0, sol.radius);
   const auto p = c.pressure(sol, q.x);
   double load = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {

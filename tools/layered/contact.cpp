@@ -32,7 +32,7 @@ void Contact::ensure_grid(double a) {
   // oscillation of cos(xi x) cos(xi t), x + t <= 2a (period pi/a).
   const double width = std::min(1.0 / stack_.total_thickness(), 1.0 / (settings_.panels_per_radius * grid_radius_));
   const int panels = std::max(1, static_cast<int>(std::ceil(xi_max / width)));
-  const Rule rule = composite_gauss_legendre(panels, settings_.hankel_per_panel, 0.0, xi_max);
+  const gw::QuadratureRule rule = gw::composite_gauss_legendre_rule(panels, settings_.hankel_per_panel, 0.0, xi_max);
   const double c_top = 1.0 / stack_.top().plane_strain();
   for (std::size_t q = 0; q < rule.x.size(); ++q) {
     const double dc = surface_compliance(stack_, rule.x[q]) - c_top;
@@ -42,7 +42,7 @@ void Contact::ensure_grid(double a) {
   }
 }
 
-void Contact::operator_on(const Rule& nodes, double a, std::vector<double>& matrix, std::vector<double>& edge_row) const {
+void Contact::operator_on(const gw::QuadratureRule& nodes, double a, std::vector<double>& matrix, std::vector<double>& edge_row) const {
   const std::size_t n = nodes.x.size();
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd edge = Eigen::VectorXd::Zero(n);
@@ -83,7 +83,7 @@ SphereSolution Contact::sphere(double a) {
   ensure_grid(a);
   SphereSolution s;
   s.radius = a;
-  s.nodes = gauss_legendre(node_count(a), 0.0, a);
+  s.nodes = gw::gauss_legendre_rule(node_count(a), 0.0, a);
   const std::size_t n = s.nodes.x.size();
   std::vector<double> k, edge;
   operator_on(s.nodes, a, k, edge);
@@ -113,7 +113,7 @@ SphereSolution Contact::sphere(double a) {
 
 double Contact::flat_punch_stiffness(double a) {
   ensure_grid(a);
-  const Rule nodes = gauss_legendre(node_count(a), 0.0, a);
+  const gw::QuadratureRule nodes = gw::gauss_legendre_rule(node_count(a), 0.0, a);
   const std::size_t n = nodes.x.size();
   std::vector<double> k, edge;
   operator_on(nodes, a, k, edge);
@@ -169,7 +169,7 @@ std::vector<double> Contact::pressure(const SphereSolution& s, const std::vector
       out.push_back(0.0);
       continue;
     }
-    const Rule rule = gauss_legendre(settings_.nodes, 0.0, std::sqrt(s.radius * s.radius - r * r));
+    const gw::QuadratureRule rule = gw::gauss_legendre_rule(settings_.nodes, 0.0, std::sqrt(s.radius * s.radius - r * r));
     double integral = 0.0;
     for (std::size_t i = 0; i < rule.x.size(); ++i) {
       const double t = std::sqrt(r * r + rule.x[i] * rule.x[i]);

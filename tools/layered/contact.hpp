@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "tools/layered/quadrature.hpp"
+#include "contact/rough/gauss_legendre.hpp"
 #include "tools/layered/stack.hpp"
 
 namespace tribex::layered {
@@ -29,7 +29,7 @@ struct SphereSolution {
   double radius = 0;   // contact radius a (m)
   double approach = 0; // delta (m): indenter plus layered body
   double load = 0;     // P (N)
-  Rule nodes;          // Nystrom nodes t_j on [0, a]
+  gw::QuadratureRule nodes;          // Nystrom nodes t_j on [0, a]
   std::vector<double> g;  // g(t_j) (N/m)
 };
 
@@ -57,7 +57,7 @@ class Contact {
   void ensure_grid(double a);
   int node_count(double a) const;
   /// Nystrom operator (E_eff/2) B(x_i, t_j) w_j on the nodes of [0, a], and its row at x = a.
-  void operator_on(const Rule& nodes, double a, std::vector<double>& matrix, std::vector<double>& edge_row) const;
+  void operator_on(const gw::QuadratureRule& nodes, double a, std::vector<double>& matrix, std::vector<double>& edge_row) const;
   SphereSolution sphere_at(double target, bool by_load, double guess);
 
   Stack stack_;
