@@ -18,48 +18,37 @@ HeightMap read_gwyddion_matrix(const std::string& path) {
   m.channel = "matrix";
   double width = -1.0, height = -1.0, zunit = 1.0;
   std::size_t row_len = 0;
-  LineReader lines(text);
-  std::string line;
-  int line_no = 0;
-  while (lines.next(line, line_no)) {
-    const std::string where = path + ":" + std::to_string(line_no);
-    if (line.empty()) continue;
-    if (line[0] == '#') {
-      const auto colon = line.find(':');
-      if (colon == std::string::npos) continue;
-      const std::string key = trim(line.substr(1, colon - 1));
-      const std::string value = trim(line.substr(colon + 1));
-      if (key == "Channel") m.channel = value;
-      if (key == "Width" || key == "Height") {
-        const auto f = split_fields(value);
-        auto v = f.size() == 2 ? to_number(f[0]) : std::nullopt;
-        auto u = f.size() == 2 ? metres_per(f[1]) : std::nullopt;
-        if (!v || !u || !(*v > 0.0))
-          throw MeshError(where + ": expected '# " + key + ": VALUE UNIT' with a positive value and a length unit, got '" +
-                          value + "'");
-        (key == "Width" ? width : height) = *v * *u;
-      }
-      if (key == "Value units") {
-        auto u = metres_per(value);
-        if (!u) throw MeshError(where + ": value units '" + value + "' are not a length (m, um, nm, pm); not a height map");
-        zunit = *u;
-      }
-      continue;
+  auto header = [&](const TextLine& line) {
+    const auto colon = line.text.find(':');
+    if (colon == std::string::npos) return;
+    const std::string key = trim(line.text.substr(1, colon - 1));
+    const std::string value = trim(line.text.substr(colon + 1));
+    if (key == "Channel") m.channel = value;
+    if (key == "Width" || key == "Height") {
+      const auto f = split_fields(value);
+      auto v = f.size() == 2 ? to_number(f[0]) : std::nullopt;
+      auto u = f.size() == 2 ? metres_per(f[1]) : std::nullopt;
+      if (!v || !u || !(*v > 0.0))
+        throw MeshError(line.where + ": expected '# " + key + ": VALUE UNIT' with a positive value and a length unit, got '" +
+                        value + "'");
+      (key == "Width" ? width : height) = *v * *u;
     }
-    const auto fields = split_fields(line);
+    if (key == "Value units") {
+      auto u = metres_per(value);
+      if (!u) throw MeshError(line.where + ": value units '" + value + "' are not a length (m, um, nm, pm); not a height map");
+      zunit = *u;
+    }
+  };
+  auto row = [&](const TextLine& line) {
+    const auto fields = split_fields(line.text);
     if (row_len == 0) row_len = fields.size();
     if (fields.size() != row_len)
-      throw MeshError(where + ": expected " + std::to_string(row_len) + " values like the first data row, got " +
+      throw MeshError(line.where + ": expected " + std::to_string(row_len) + " values like the first data row, got " +
                       std::to_string(fields.size()) + " (truncated or ragged matrix)");
-    for (std::size_t i = 0; i < fields.size(); ++i) {
-      auto v = to_number(fields[i]);
-      if (!v || !std::isfinite(*v))
-        throw MeshError(where + ": column " + std::to_string(i + 1) + ": expected a finite number, got '" +
-                        fields[i].substr(0, 30) + "'");
-      m.heights.push_back(*v * zunit);
-    }
+    for (std::size_t i = 0; i < fields.size(); ++i) m.heights.push_back(finite_field(fields, i, line.where) * zunit);
     ++m.ny;
-  }
+  };
+  const int line_no = for_each_line(text, path, header, row);
   m.nx = row_len;
   if (width <= 0.0 || height <= 0.0)
     throw MeshError(path + ":1: expected '# Width:' and '# Height:' header lines giving the physical size");

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_error.hpp"
+
 namespace tribex::mesh::afm::detail {
 
 inline std::string trim(const std::string& s) {
@@ -66,6 +68,38 @@ class LineReader {
   std::size_t pos_ = 0;
   int line_no_ = 0;
 };
+
+/// A non-empty line of a text export, with "path:LINE" for the messages.
+struct TextLine {
+  std::string text, where;
+  int number = 0;
+};
+
+/// Every non-empty line of a text export whose header lines start with '#': `comment(TextLine)` for
+/// those, `data(TextLine)` for the others. Returns the number of the last line read.
+template <class Comment, class Data>
+int for_each_line(const std::string& text, const std::string& path, Comment comment, Data data) {
+  LineReader lines(text);
+  TextLine line;
+  while (lines.next(line.text, line.number)) {
+    if (line.text.empty()) continue;
+    line.where = path + ":" + std::to_string(line.number);
+    if (line.text[0] == '#')
+      comment(line);
+    else
+      data(line);
+  }
+  return line.number;
+}
+
+/// Field `i` of a data row as a finite number; a MeshError naming the row and the column otherwise.
+inline double finite_field(const std::vector<std::string>& fields, std::size_t i, const std::string& where) {
+  const auto v = to_number(fields[i]);
+  if (!v || !std::isfinite(*v))
+    throw MeshError(where + ": column " + std::to_string(i + 1) + ": expected a finite number, got '" +
+                    fields[i].substr(0, 30) + "'");
+  return *v;
+}
 
 /// Metres per unit for the SI-prefixed length units text exports use ("m", "nm", "um", "µm", "pm", "mm").
 inline std::optional<double> metres_per(const std::string& unit_text) {

@@ -18,35 +18,22 @@ HeightMap read_xyz_text(const std::string& path) {
   struct P { double x, y, z; int line; };
   std::vector<P> pts;
   double unit = 1.0;
-  LineReader lines(text);
-  std::string line;
-  int line_no = 0;
-  while (lines.next(line, line_no)) {
-    const std::string where = path + ":" + std::to_string(line_no);
-    if (line.empty()) continue;
-    if (line[0] == '#') {
-      const auto k = line.find("units:");
-      if (k != std::string::npos) {
-        auto u = metres_per(line.substr(k + 6));
-        if (!u) throw MeshError(where + ": unknown length unit in '" + line + "' (use m, mm, um, nm or pm)");
-        unit = *u;
-      }
-      continue;
-    }
-    const auto f = split_fields(line, true);
+  auto units = [&](const TextLine& line) {
+    const auto k = line.text.find("units:");
+    if (k == std::string::npos) return;
+    auto u = metres_per(line.text.substr(k + 6));
+    if (!u) throw MeshError(line.where + ": unknown length unit in '" + line.text + "' (use m, mm, um, nm or pm)");
+    unit = *u;
+  };
+  auto point = [&](const TextLine& line) {
+    const auto f = split_fields(line.text, true);
     if (f.size() != 3)
-      throw MeshError(where + ": expected 3 columns 'x y z', got " + std::to_string(f.size()) +
+      throw MeshError(line.where + ": expected 3 columns 'x y z', got " + std::to_string(f.size()) +
                       " (is this really an XYZ text file?)");
-    double v[3];
-    for (int i = 0; i < 3; ++i) {
-      auto n = to_number(f[static_cast<std::size_t>(i)]);
-      if (!n || !std::isfinite(*n))
-        throw MeshError(where + ": column " + std::to_string(i + 1) + ": expected a finite number, got '" +
-                        f[static_cast<std::size_t>(i)].substr(0, 30) + "'");
-      v[i] = *n * unit;
-    }
-    pts.push_back({v[0], v[1], v[2], line_no});
-  }
+    pts.push_back({finite_field(f, 0, line.where) * unit, finite_field(f, 1, line.where) * unit,
+                   finite_field(f, 2, line.where) * unit, line.number});
+  };
+  for_each_line(text, path, units, point);
   if (pts.size() < 4) throw MeshError(path + ": expected at least 4 'x y z' points (a 2 x 2 grid), got " + std::to_string(pts.size()));
   // Distinct coordinates with a tolerance relative to the extent (text rounding).
   auto distinct = [](std::vector<double> c) {
