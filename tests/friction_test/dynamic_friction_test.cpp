@@ -75,9 +75,9 @@ TEST(DynamicFriction, LoadLineRecoversMuDAndAPositiveIntercept) {
     fd.push_back(f.friction_force);
     fd_sigma.push_back(f.friction_force_sigma);
   }
-  const LoadLine line = fit_load_line(loads, fd, fd_sigma);
-  EXPECT_NEAR(line.mu_d, mu_d, 3 * line.mu_d_sigma);
-  EXPECT_LT(line.mu_d_sigma, 0.01);
+  const FrictionLine line = fit_load_line(loads, fd, fd_sigma);
+  EXPECT_NEAR(line.mu, mu_d, 3 * line.mu_sigma);
+  EXPECT_LT(line.mu_sigma, 0.01);
   EXPECT_NEAR(line.adhesion_force, adhesion, 3 * line.adhesion_force_sigma);
   EXPECT_GT(line.intercept, 5 * line.intercept_sigma);  // clearly positive
 }

@@ -50,10 +50,10 @@ TEST_P(StaticRecovery, RecoversMuSAndAdhesionWithinUncertainty) {
   const StaticFit f = fit_static(detect_slips(x, fn, s.stiffness, 0.0, 0.5e-6), c.name, 0.5e-6);
   EXPECT_GE(f.events.size(), 5u);
   // 3 sigma with fixed seeds; sigma itself must be at or below the report's +-0.01.
-  EXPECT_NEAR(f.mu_s, c.mu_s, 3 * f.mu_s_sigma);
-  EXPECT_LT(f.mu_s_sigma, 0.01);
-  EXPECT_NEAR(f.adhesion_force, c.adhesion_force, 3 * f.adhesion_force_sigma);
-  EXPECT_LT(f.adhesion_force_sigma, 0.1 * c.adhesion_force);
+  EXPECT_NEAR(f.line.mu, c.mu_s, 3 * f.line.mu_sigma);
+  EXPECT_LT(f.line.mu_sigma, 0.01);
+  EXPECT_NEAR(f.line.adhesion_force, c.adhesion_force, 3 * f.line.adhesion_force_sigma);
+  EXPECT_LT(f.line.adhesion_force_sigma, 0.1 * c.adhesion_force);
   for (const auto& e : f.events) EXPECT_LT(e.jump, 0.0);  // slips go back toward the spring zero
 }
 

@@ -197,6 +197,17 @@ int calibrate(const std::vector<std::string>& argv) {
   return tools::exit_ok;
 }
 
+// The intercept, F_adh = intercept / slope and, given the foot area, the adhesion pressure F_adh / A of a load
+// line (the static and the dynamic report).
+void add_adhesion(tools::FitReport& r, const FrictionLine& line, const std::string& intercept_note,
+                  std::optional<double> foot_area) {
+  r.add("intercept", line.intercept, line.intercept_sigma, "N", intercept_note);
+  r.add("adhesion_force", line.adhesion_force, line.adhesion_force_sigma, "N", "intercept / slope");
+  if (foot_area && *foot_area > 0)
+    r.add("adhesion_pressure", line.adhesion_force / *foot_area, line.adhesion_force_sigma / *foot_area, "Pa",
+          "F_adh / foot area (1 nN/um^2 = 1000 Pa)");
+}
+
 // ---------------------------------------------------------------- static
 int static_friction(const std::vector<std::string>& argv) {
   Args a(argv, "tribex friction-test static", static_usage, {"--json"});
@@ -258,19 +269,16 @@ int static_friction(const std::vector<std::string>& argv) {
   }
   StaticFit f = fit_static(std::move(events), file, min_jump);
   // The spring constant scales every F_s: its relative error adds to mu_s (F_adh = intercept/slope is free of it).
-  const double mu_sigma = points ? f.mu_s_sigma : std::hypot(f.mu_s_sigma, f.mu_s * stiffness_sigma / *stiffness);
+  const double mu_sigma =
+      points ? f.line.mu_sigma : std::hypot(f.line.mu_sigma, f.line.mu * stiffness_sigma / *stiffness);
   tools::FitReport r;
   r.command = "static";
   r.text.push_back({"file", file});
   r.add("slip_events", static_cast<double>(f.events.size()), -1, "");
-  r.add("mu_s", f.mu_s, mu_sigma, "", "slope of Eq. 2.2");
-  r.add("adhesion_force", f.adhesion_force, f.adhesion_force_sigma, "N", "intercept / slope");
-  r.add("intercept", f.intercept, f.intercept_sigma, "N", "mu_s F_adh");
-  if (foot_area && *foot_area > 0)
-    r.add("adhesion_pressure", f.adhesion_force / *foot_area, f.adhesion_force_sigma / *foot_area, "Pa",
-          "F_adh / foot area (1 nN/um^2 = 1000 Pa)");
-  r.add("correlation", f.correlation, -1, "", "intercept-slope");
-  r.add("rms_residual", f.rms_residual, -1, "N");
+  r.add("mu_s", f.line.mu, mu_sigma, "", "slope of Eq. 2.2");
+  add_adhesion(r, f.line, "mu_s F_adh", foot_area);
+  r.add("correlation", f.line.correlation, -1, "", "intercept-slope");
+  r.add("rms_residual", f.line.rms_residual, -1, "N");
   std::vector<std::vector<double>> rows;
   for (const auto& e : f.events) rows.push_back({e.normal_force, e.friction_force, e.position, e.jump, e.load_resolution});
   r.tables.push_back({"slip_events_columns_normal_force_friction_force_position_jump_load_resolution", rows});
@@ -289,7 +297,7 @@ int static_friction(const std::vector<std::string>& argv) {
     for (const auto& e : f.events) {
       ev_n.push_back(e.normal_force * 1e6);
       ev_s.push_back(e.friction_force * 1e6);
-      fit_s.push_back((f.intercept + f.mu_s * e.normal_force) * 1e6);
+      fit_s.push_back((f.line.intercept + f.line.mu * e.normal_force) * 1e6);
     }
     // Reduced points have no position record: one panel, the points and the line through them.
     std::vector<tools::PlotPanel> panels;
@@ -302,8 +310,8 @@ int static_friction(const std::vector<std::string>& argv) {
     panels.push_back({"normal force F_N (µN)", points ? "friction force F (µN)" : "static friction F_s (µN)",
                       "Eq. 2.2 fit", {{"F_N", ev_n}, {points ? "points" : "slip events", ev_s}, {"fit mu_s", fit_s}}});
     char title[160];
-    std::snprintf(title, sizeof title, "static friction: mu_s = %.4f ± %.4f, F_adh = %.4g ± %.2g µN", f.mu_s, mu_sigma,
-                  f.adhesion_force * 1e6, f.adhesion_force_sigma * 1e6);
+    std::snprintf(title, sizeof title, "static friction: mu_s = %.4f ± %.4f, F_adh = %.4g ± %.2g µN", f.line.mu, mu_sigma,
+                  f.line.adhesion_force * 1e6, f.line.adhesion_force_sigma * 1e6);
     const std::string png = plot.value_or(tools::default_plot_path(file));
     if (tools::write_plot(png, title, panels)) std::fprintf(stderr, "plot: %s\n", png.c_str());
   }
@@ -389,19 +397,15 @@ int dynamic_friction(const std::vector<std::string>& argv) {
         fd.push_back(f.friction_force);
         fd_sigma.push_back(f.friction_force_sigma);
       }
-      const LoadLine line = fit_load_line(loads, fd, fd_sigma);
-      r.add("mu_d", line.mu_d, line.mu_d_sigma, "", "slope of F_d = mu_d F_N + mu_d F_adh");
-      r.add("intercept", line.intercept, line.intercept_sigma, "N", "F_d at zero applied load");
-      r.add("adhesion_force", line.adhesion_force, line.adhesion_force_sigma, "N", "intercept / slope");
-      if (foot_area && *foot_area > 0)
-        r.add("adhesion_pressure", line.adhesion_force / *foot_area, line.adhesion_force_sigma / *foot_area, "Pa",
-              "F_adh / foot area");
+      const FrictionLine line = fit_load_line(loads, fd, fd_sigma);
+      r.add("mu_d", line.mu, line.mu_sigma, "", "slope of F_d = mu_d F_N + mu_d F_adh");
+      add_adhesion(r, line, "F_d at zero applied load", foot_area);
       r.add("rms_residual", line.rms_residual, -1, "N", "load line");
       std::vector<double> fn_nN, fd_nN, fit_nN;
       for (std::size_t i = 0; i < fits.size(); ++i) {
         fn_nN.push_back(loads[i] * 1e9);
         fd_nN.push_back(fd[i] * 1e9);
-        fit_nN.push_back((line.intercept + line.mu_d * loads[i]) * 1e9);
+        fit_nN.push_back((line.intercept + line.mu * loads[i]) * 1e9);
       }
       panels.insert(panels.begin(), tools::PlotPanel{"applied normal load F_N (nN)", "dynamic friction F_d (nN)",
                                               "load line (Fig. 2.11)", {{"F_N", fn_nN}, {"records", fd_nN}, {"fit mu_d", fit_nN}}});
@@ -437,6 +441,13 @@ int synth(const std::vector<std::string>& argv) {
   const auto out = a.text("-o");
   const double noise = a.quantity("--noise", 10e-9, dim::length);
   const long seed = a.integer("--seed", 1);
+  // Every kind's record takes the noise and the seed; then no option may be left and -o is required.
+  auto finish = [&](auto& setup) {
+    setup.noise = noise;
+    setup.seed = static_cast<std::uint64_t>(seed);
+    a.finish();
+    if (!out) throw BadInput(cmd + ": -o FILE.csv is required");
+  };
   if (kind == "ringdown" || kind == "dynamic") {
     OscillatorSetup s;
     s.mass = a.quantity("--mass", s.mass, dim::mass);
@@ -447,10 +458,7 @@ int synth(const std::vector<std::string>& argv) {
     s.x_release = a.quantity("--release", s.x_release, dim::length);
     s.cycles = a.real("--cycles", s.cycles);
     s.samples_per_cycle = a.real("--samples-per-cycle", s.samples_per_cycle);
-    s.noise = noise;
-    s.seed = static_cast<std::uint64_t>(seed);
-    a.finish();
-    if (!out) throw BadInput(cmd + ": -o FILE.csv is required");
+    finish(s);
     if (s.mass <= 0 || s.stiffness <= 0 || s.damping < 0 || s.cycles <= 0 || s.samples_per_cycle < 4 ||
         s.damping >= 2 * std::sqrt(s.stiffness * s.mass))
       throw BadInput(cmd + ": need mass, stiffness > 0, 0 <= damping < 2 sqrt(k m) (underdamped), cycles > 0, "
@@ -473,10 +481,7 @@ int synth(const std::vector<std::string>& argv) {
     s.x_start = a.quantity("--start-position", s.x_start, dim::length);
     s.volts_start = a.real("--volts-start", s.volts_start);
     s.volts_step = a.real("--volts-step", s.volts_step);
-    s.noise = noise;
-    s.seed = static_cast<std::uint64_t>(seed);
-    a.finish();
-    if (!out) throw BadInput(cmd + ": -o FILE.csv is required");
+    finish(s);
     if (s.stiffness <= 0 || s.mu_s <= 0 || s.mu_d <= 0 || s.mu_d > s.mu_s || s.volts_step <= 0 || s.volts_start <= 0)
       throw BadInput(cmd + ": need stiffness > 0, 0 < mu_d <= mu_s, volts-start and volts-step > 0");
     synth_static(s, *out).write(*out);

@@ -195,10 +195,9 @@ DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& 
   return out;
 }
 
-LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force,
+FrictionLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force,
                        const std::vector<double>& friction_force_sigma) {
   const tools::FitResult line = tools::fit_line(normal_force, friction_force);
-  LoadLine out;
   const double a = line.parameters(0), b = line.parameters(1);
   Eigen::Matrix2d c = line.covariance;
   if (friction_force_sigma.size() == normal_force.size()) {
@@ -211,15 +210,7 @@ LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vecto
     const Eigen::Matrix2d propagated = atwa.inverse();
     if (propagated(1, 1) > c(1, 1)) c = propagated;
   }
-  out.mu_d = b;
-  out.mu_d_sigma = std::sqrt(c(1, 1));
-  out.intercept = a;
-  out.intercept_sigma = std::sqrt(c(0, 0));
-  const AdhesionForce adhesion = adhesion_force_of_line(a, b, c);
-  out.adhesion_force = adhesion.value;
-  out.adhesion_force_sigma = adhesion.sigma;
-  out.rms_residual = line.rms_residual;
-  return out;
+  return friction_line(a, b, c, line.rms_residual);
 }
 
 }  // namespace tribex::friction_test

@@ -21,6 +21,7 @@
 
 #include "tools/common/least_squares.hpp"
 #include "tools/friction_test/oscillator.hpp"
+#include "tools/friction_test/static_friction.hpp"
 
 namespace tribex::friction_test {
 
@@ -51,17 +52,11 @@ struct DynamicFit {
 DynamicFit fit_dynamic(const std::vector<double>& t, const std::vector<double>& x, const Calibration& cal,
                        const std::string& what);
 
-struct LoadLine {
-  double mu_d = 0.0, mu_d_sigma = 0.0;
-  double intercept = 0.0, intercept_sigma = 0.0;            // N, mu_d F_adh
-  double adhesion_force = 0.0, adhesion_force_sigma = 0.0;  // N
-  double rms_residual = 0.0;                                // N
-};
 /// Straight line F_d(F_N) through at least 3 records. With `friction_force_sigma` (one per
 /// record) the parameter uncertainties are the larger of the scatter-based ones and those
 /// propagated from the records' own 1-sigma errors, (A^T W A)^-1 with W = diag(1/sigma_i^2):
 /// a handful of records gives too few degrees of freedom to trust the scatter alone.
-LoadLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force,
+FrictionLine fit_load_line(const std::vector<double>& normal_force, const std::vector<double>& friction_force,
                        const std::vector<double>& friction_force_sigma = {});
 
 }  // namespace tribex::friction_test

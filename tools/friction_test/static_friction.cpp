@@ -33,9 +33,19 @@ std::vector<SlipEvent> detect_slips(const std::vector<double>& position, const s
   return events;
 }
 
-AdhesionForce adhesion_force_of_line(double a, double b, const Eigen::Matrix2d& c) {
+FrictionLine friction_line(double a, double b, const Eigen::Matrix2d& c, double rms_residual) {
+  FrictionLine out;
+  out.mu = b;
+  out.mu_sigma = std::sqrt(c(1, 1));
+  out.intercept = a;
+  out.intercept_sigma = std::sqrt(c(0, 0));
+  const double d = std::sqrt(c(0, 0) * c(1, 1));
+  out.correlation = d > 0 ? c(0, 1) / d : 0.0;
   const double ga = 1 / b, gb = -a / (b * b);
-  return {a / b, std::sqrt(std::max(0.0, ga * ga * c(0, 0) + gb * gb * c(1, 1) + 2 * ga * gb * c(0, 1)))};
+  out.adhesion_force = a / b;
+  out.adhesion_force_sigma = std::sqrt(std::max(0.0, ga * ga * c(0, 0) + gb * gb * c(1, 1) + 2 * ga * gb * c(0, 1)));
+  out.rms_residual = rms_residual;
+  return out;
 }
 
 StaticFit fit_static(std::vector<SlipEvent> events, const std::string& what, double min_jump) {
@@ -56,17 +66,7 @@ StaticFit fit_static(std::vector<SlipEvent> events, const std::string& what, dou
   StaticFit out;
   out.events = std::move(events);
   const tools::FitResult line = tools::fit_line(fn, fs);
-  const double a = line.parameters(0), b = line.parameters(1);
-  const auto& c = line.covariance;
-  out.mu_s = b;
-  out.mu_s_sigma = std::sqrt(c(1, 1));
-  out.intercept = a;
-  out.intercept_sigma = std::sqrt(c(0, 0));
-  out.correlation = line.correlation(0, 1);
-  const AdhesionForce adhesion = adhesion_force_of_line(a, b, c);
-  out.adhesion_force = adhesion.value;
-  out.adhesion_force_sigma = adhesion.sigma;
-  out.rms_residual = line.rms_residual;
+  out.line = friction_line(line.parameters(0), line.parameters(1), line.covariance, line.rms_residual);
   return out;
 }
 

@@ -50,22 +50,23 @@ struct SlipEvent {
 std::vector<SlipEvent> detect_slips(const std::vector<double>& position, const std::vector<double>& normal_force,
                                     double stiffness, double x_zero, double min_jump);
 
-struct StaticFit {
-  std::vector<SlipEvent> events;
-  double mu_s = 0.0, mu_s_sigma = 0.0;
+/// A friction load line F = a + b F_N = mu (F_N + F_adh) (Eq. 2.2 for the static test, F_d(F_N) of Fig. 2.11
+/// for the dynamic one): the slope mu, the intercept a, F_adh = a / b, each with its 1-sigma (F_adh's by the
+/// delta method, gradient (1/b, -a/b^2)), the intercept-slope correlation and the rms residual.
+struct FrictionLine {
+  double mu = 0.0, mu_sigma = 0.0;
+  double intercept = 0.0, intercept_sigma = 0.0;            // N, mu F_adh
   double adhesion_force = 0.0, adhesion_force_sigma = 0.0;  // N
-  double intercept = 0.0, intercept_sigma = 0.0;            // N, mu_s F_adh
   double correlation = 0.0;                                 // between intercept and slope
   double rms_residual = 0.0;                                // N
 };
+/// The line's figures from its fitted parameters (a, b), their covariance c and the fit's rms residual.
+FrictionLine friction_line(double a, double b, const Eigen::Matrix2d& c, double rms_residual);
 
-/// F_adh = a / b of a fitted line F = a + b F_N = mu (F_N + F_adh) (Eq. 2.2) and its 1-sigma from
-/// the covariance c of (a, b) by the delta method, gradient (1/b, -a/b^2): the static load line
-/// (fit_static) and the dynamic one (fit_load_line, Fig. 2.11).
-struct AdhesionForce {
-  double value = 0.0, sigma = 0.0;  // N
+struct StaticFit {
+  std::vector<SlipEvent> events;
+  FrictionLine line;  // mu = mu_s
 };
-AdhesionForce adhesion_force_of_line(double a, double b, const Eigen::Matrix2d& c);
 
 /// Fits Eq. 2.2 to the slip events; throws tools::BadInput naming `what` when fewer than 3 are
 /// found (no slip event at all gets its own message).
