@@ -15,6 +15,9 @@ import sys
 
 import h5py
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
+from history_checks import report_failures  # noqa: E402
+
 
 def main():
     out, err_file, code = sys.argv[1], sys.argv[2], int(sys.argv[3])
@@ -39,12 +42,7 @@ def main():
         failures.append("history.csv is not a header and whole rows")
     else:
         [float(v) for r in body for v in r]
-    if failures:
-        print("FAIL: " + "; ".join(failures))
-        return 1
-    print(f"OK: exit 3 '{said.strip()[:90]}...'; {len(named)} results steps, {len(body)} history rows kept")
-    return 0
-
+    return report_failures(failures, ok=f"OK: exit 3 '{said.strip()[:90]}...'; {len(named)} results steps, {len(body)} history rows kept")
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """The run's identity in summary.json and log.txt (issue 22, scope 5): tribex version with git
 describe, the deck path and the SHA-256 of its bytes (checked against hashlib), the start time in
-ISO 8601 UTC, the host, the rank count and the energy unit. Exit 1 naming the first missing piece.
+ISO 8601 UTC, the host, the rank count and the energy unit. Exit 1 naming every missing piece.
 
 usage: check_identity.py OUTPUT_FOLDER DECK
 """
@@ -11,6 +11,9 @@ import json
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
+from history_checks import report_failures  # noqa: E402
 
 
 def main():
@@ -26,16 +29,11 @@ def main():
         ("ranks", s.get("ranks") == 1),
         ("energy_unit", s.get("energy_unit") == "J"),
     ]
-    for key, ok in checks:
-        if not ok:
-            print(f"FAIL: summary.json {key} = {s.get(key)!r}")
-            return 1
+    failures = [f"summary.json {key} = {s.get(key)!r}" for key, ok in checks if not ok]
     first = open(os.path.join(out, "log.txt")).readline()
-    if f"(sha256 {want})" not in first or "| energies in J" not in first or s["tribex_version"] not in first:
-        print(f"FAIL: log.txt first line lacks the identity: {first.strip()}")
-        return 1
-    print(f"identity OK: {first.strip()}")
-    return 0
+    if f"(sha256 {want})" not in first or "| energies in J" not in first or s.get("tribex_version", "?") not in first:
+        failures.append(f"log.txt first line lacks the identity: {first.strip()}")
+    return report_failures(failures, ok=f"identity OK: {first.strip()}")
 
 
 if __name__ == "__main__":

@@ -14,6 +14,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
+from history_checks import report_failures  # noqa: E402
+
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -56,12 +59,7 @@ def main():
         failures.append(f"closing line {closing[-1:]} lacks '{a.says}' or the warning count")
     for w in summary["warnings"]:
         print(f"  {w['kind']}: {w['message']}")
-    if failures:
-        print("FAIL: " + "; ".join(failures))
-        return 1
-    print(f"OK: exit {a.code}, warnings {kinds}, outputs readable")
-    return 0
-
+    return report_failures(failures, ok=f"OK: exit {a.code}, warnings {kinds}, outputs readable")
 
 if __name__ == "__main__":
     sys.exit(main())

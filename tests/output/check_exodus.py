@@ -36,22 +36,12 @@ import h5py
 import netCDF4
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from tribex_runs import full_and_stopped, run  # noqa: E402
+
 # results.h5 and results.exo hold the coordinates and length fields in the same length unit.
 
 TOL = 1e-12
-
-
-def run(tribex, deck, out, ranks=1, *extra, check=True):
-    cmd = []
-    if ranks > 1:
-        cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
-    cmd += [tribex, "run", deck, "-o", out, "--quiet", *extra]
-    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none")
-    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
-    if check and p.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
-    return p
 
 
 def names(nc, var):
@@ -191,13 +181,7 @@ def all_values(path):
 
 
 def restart(a):
-    full, stopped = os.path.join(a.out, "full"), os.path.join(a.out, "stopped")
-    for d in (full, stopped):
-        shutil.rmtree(d, ignore_errors=True)
-    run(a.tribex, a.deck, full, a.ranks)
-    p = run(a.tribex, a.deck, stopped, a.ranks, "--stop-at-step", str(a.stop), check=False)
-    if p.returncode != 130:
-        sys.exit(f"FAIL: the stopped run exited {p.returncode}, expected 130\n{p.stderr}")
+    full, stopped = full_and_stopped(a.tribex, a.deck, a.out, a.ranks, a.stop, "stopped")
     before = len(all_values(os.path.join(stopped, "results.exo"))["time_whole"])
     run(a.tribex, a.deck, stopped, a.ranks, "--restart", os.path.join(stopped, "restart.h5"))
     want, got = all_values(os.path.join(full, "results.exo")), all_values(os.path.join(stopped, "results.exo"))

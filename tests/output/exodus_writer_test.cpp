@@ -5,7 +5,6 @@
 // resumed run keeping only the steps before its restart time.
 #include <gtest/gtest.h>
 #include <exodusII.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -17,6 +16,8 @@
 #include "sample_case.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/exodus_writer.hpp"
+#include "tests/support/crashed_child.hpp"
+#include "tests/support/setup_errors.hpp"
 
 namespace {
 
@@ -123,16 +124,10 @@ TEST(ExodusWriter, MeshAndThreeStepsReadBack) {
 TEST(ExodusWriter, FileIsReadableAfterACrashMidRun) {
   const fs::path dir = fresh_dir("crash");
   const auto mesh = make_hand_box(2, 1, 1);
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
+  ASSERT_TRUE(tribex::test::ran_in_child_left_unclosed([&] {
     auto* w = new ExodusWriter(dir.string(), mesh, global_names);  // leaked on purpose: never closed
     for (double t : {0.0, 0.25}) write_sample_step(*w, mesh, t);
-    _exit(0);
-  }
-  int status = 0;
-  waitpid(child, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  }));
   Opened f(dir / "results.exo");
   ASSERT_GE(f.id, 0);
   EXPECT_EQ(f.times(), (std::vector<double>{0.0, 0.25}));
@@ -144,26 +139,15 @@ TEST(ExodusWriter, FileIsReadableAfterACrashMidRun) {
 
 TEST(ExodusWriter, UncreatableDirectoryOrFileIsAOneLineSetupError) {
   const fs::path dir = fresh_dir("blocked");
-  fs::create_directories(dir);
-  std::ofstream(dir / "a_file") << "not a directory\n";
-  const std::string bad = (dir / "a_file" / "out").string();
-  try {
-    ExodusWriter w(bad, make_hand_box(1, 1, 1), global_names);
-    FAIL() << "no SetupError";
-  } catch (const SetupError& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find(bad), std::string::npos) << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  }
+  const std::string bad = tribex::test::path_under_a_file(dir);
+  std::string msg = tribex::test::setup_error_of([&] { ExodusWriter w(bad, make_hand_box(1, 1, 1), global_names); });
+  EXPECT_NE(msg.find(bad), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   fs::create_directories(dir / "run" / "results.exo");  // a folder where the file should go
-  try {
-    ExodusWriter w((dir / "run").string(), make_hand_box(1, 1, 1), global_names);
-    FAIL() << "no SetupError";
-  } catch (const SetupError& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find((dir / "run" / "results.exo").string()), std::string::npos) << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  }
+  msg = tribex::test::setup_error_of(
+      [&] { ExodusWriter w((dir / "run").string(), make_hand_box(1, 1, 1), global_names); });
+  EXPECT_NE(msg.find((dir / "run" / "results.exo").string()), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   fs::remove_all(dir);
 }
 

@@ -3,7 +3,6 @@
 // error paths. The ParaView read is the separate CTest check_xdmf_paraview (see CMakeLists.txt).
 #include <gtest/gtest.h>
 #include <hdf5.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -15,6 +14,8 @@
 #include "sample_case.hpp"
 #include "solver/errors.hpp"
 #include "solver/output/results_writer.hpp"
+#include "tests/support/crashed_child.hpp"
+#include "tests/support/setup_errors.hpp"
 
 namespace fs = std::filesystem;
 using tribex::solver::FieldView;
@@ -236,9 +237,7 @@ TEST(ResultsWriter, BeforeAnyStepTheXdmfShowsTheMesh) {
 TEST(ResultsWriter, PairIsReadableAfterACrashMidRun) {
   const fs::path dir = fresh_dir("crash");
   const auto mesh = make_hand_box(2, 1, 1);
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
+  ASSERT_TRUE(tribex::test::ran_in_child_left_unclosed([&] {
     auto* w = new ResultsWriter(dir.string(), mesh);  // leaked on purpose: never closed
     SampleFields f;
     for (double t : {0.0, 0.25}) {
@@ -247,11 +246,7 @@ TEST(ResultsWriter, PairIsReadableAfterACrashMidRun) {
       const auto e = f.element();
       w->write_step(t, n, e);
     }
-    _exit(0);
-  }
-  int status = 0;
-  waitpid(child, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  }));
   const std::string xml = slurp(dir / "results.xdmf");
   EXPECT_EQ(xml_balance_problem(xml), "");
   EXPECT_EQ(count(xml, "<Time Value="), 2);  // a 2 x 1 x 1 box is one block
@@ -267,29 +262,17 @@ TEST(ResultsWriter, PairIsReadableAfterACrashMidRun) {
 
 TEST(ResultsWriter, UncreatableDirectoryIsAOneLineSetupErrorWithPathAndReason) {
   const fs::path dir = fresh_dir("blocked");
-  fs::create_directories(dir);
-  std::ofstream(dir / "a_file") << "not a directory\n";
-  const std::string bad = (dir / "a_file" / "out").string();
-  try {
-    ResultsWriter w(bad, make_hand_box(1, 1, 1));
-    FAIL() << "no SetupError";
-  } catch (const SetupError& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find(bad), std::string::npos) << msg;
-    EXPECT_NE(msg.find("Not a directory"), std::string::npos) << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  }
+  const std::string bad = tribex::test::path_under_a_file(dir);
+  std::string msg = tribex::test::setup_error_of([&] { ResultsWriter w(bad, make_hand_box(1, 1, 1)); });
+  EXPECT_NE(msg.find(bad), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Not a directory"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   // results.h5 exists as a directory: the file itself cannot be created.
   fs::create_directories(dir / "run" / "results.h5");
-  try {
-    ResultsWriter w((dir / "run").string(), make_hand_box(1, 1, 1));
-    FAIL() << "no SetupError";
-  } catch (const SetupError& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find((dir / "run" / "results.h5").string()), std::string::npos) << msg;
-    EXPECT_NE(msg.find("Is a directory"), std::string::npos) << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  }
+  msg = tribex::test::setup_error_of([&] { ResultsWriter w((dir / "run").string(), make_hand_box(1, 1, 1)); });
+  EXPECT_NE(msg.find((dir / "run" / "results.h5").string()), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Is a directory"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   fs::remove_all(dir);
 }
 

@@ -51,23 +51,8 @@ import subprocess
 import re
 import sys
 
-
-def launcher(ranks):
-    if ranks == 1:
-        return []
-    cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"]
-    if os.geteuid() == 0:
-        cmd.append("--allow-run-as-root")
-    return cmd
-
-
-def run(tribex, deck, out, ranks, *extra, check=True, quiet=True, env_extra=None):
-    cmd = launcher(ranks) + [tribex, "run", deck, "-o", out, *(["--quiet"] if quiet else []), *extra]
-    env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1", OMPI_MCA_hwloc_base_binding_policy="none", **(env_extra or {}))
-    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
-    if check and p.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
-    return p
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from tribex_runs import full_and_stopped, launcher, run  # noqa: E402
 
 
 def read(path):
@@ -242,13 +227,7 @@ def agree(a):
 
 
 def restart(a):
-    full, resumed = os.path.join(a.out, "full"), os.path.join(a.out, "resumed")
-    for d in (full, resumed):
-        shutil.rmtree(d, ignore_errors=True)
-    run(a.tribex, a.deck, full, a.ranks)
-    p = run(a.tribex, a.deck, resumed, a.ranks, "--stop-at-step", str(a.stop), check=False)
-    if p.returncode != 130:
-        sys.exit(f"FAIL: the stopped run exited {p.returncode}, expected 130\n{p.stderr}")
+    full, resumed = full_and_stopped(a.tribex, a.deck, a.out, a.ranks, a.stop, "resumed")
     # --remapped: the resume goes through the move onto a partition by global numbers (restart_remap.hpp)
     # although the rank count is the same (test hook TRIBEX_RESTART_REMAP=1): the move must be lossless.
     run(a.tribex, a.deck, resumed, a.ranks, "--restart", os.path.join(resumed, "restart.h5"),

@@ -14,6 +14,8 @@ import json
 import os
 import sys
 
+from history_checks import report_failures
+
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -34,11 +36,8 @@ def main():
     for w in warnings:
         print(f"  {w['kind']}: {w['message']}")
     got, want = {w["kind"] for w in warnings}, set(a.expect)
-    if got != want:
-        print(f"FAIL: warning kinds {sorted(got) or 'none'}, expected {sorted(want) or 'none'}")
-        return 1
-    print(f"OK: warning kinds {sorted(got) or 'none'}, as expected")
-    return 0
+    failures = [f"warning kinds {sorted(got) or 'none'}, expected {sorted(want) or 'none'}"] if got != want else []
+    return report_failures(failures, ok=f"OK: warning kinds {sorted(got) or 'none'}, as expected")
 
 
 if __name__ == "__main__":

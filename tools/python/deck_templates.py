@@ -133,11 +133,11 @@ def history_output(increment_ps, reactions, displacements):
             f"      end history output hist")
 
 
-def results_output(increment_ps, element_variables=None):
-    """The `fields` results output: displacement and contact fields every increment_ps ps."""
+def results_output(increment_ps, element_variables=None, nodal_variables="displacement contact_traction contact_status"):
+    """The `fields` results output every increment_ps ps: by default the displacement and contact fields."""
     element = f"        element variables = {element_variables}\n" if element_variables else ""
     return (f"      begin results output fields\n        time increment = {increment_ps} ps\n"
-            f"        nodal variables = displacement contact_traction contact_status\n{element}"
+            f"        nodal variables = {nodal_variables}\n{element}"
             f"      end results output fields")
 
 

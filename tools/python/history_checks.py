@@ -52,6 +52,15 @@ def relative_errors(measured, reference):
     return [abs(m - r) / r for m, r in zip(measured, reference)]
 
 
+def radius_errors(rows, column, reference):
+    """For the rows a check uses: the loads P (contact_normal_force), the FE radius in `column`, the
+    reference radius `reference(P)` and the relative errors (verification/hertz and dmt compare.py)."""
+    loads = [r["contact_normal_force"] for r in rows]
+    measured = [r[column] for r in rows]
+    expected = [reference(x) for x in loads]
+    return loads, measured, expected, relative_errors(measured, expected)
+
+
 def max_and_mean(errors):
     """(largest, mean) of a list of errors."""
     return max(errors), sum(errors) / len(errors)
@@ -104,11 +113,13 @@ def save_figure(fig, path, announce="plot: "):
         print(f"{announce}{path}")
 
 
-def report_failures(failures, verdict=False):
-    """Prints one `FAIL: ...` line per failure (then PASS or FAIL when `verdict`); returns the exit
-    status, 1 if anything failed."""
+def report_failures(failures, verdict=False, ok=None):
+    """Prints one `FAIL: ...` line per failure (then PASS or FAIL when `verdict`; the line `ok` when
+    nothing failed); returns the exit status, 1 if anything failed."""
     for line in failures:
         print("FAIL:", line)
+    if ok and not failures:
+        print(ok)
     if verdict:
         print("PASS" if not failures else "FAIL")
     return 1 if failures else 0

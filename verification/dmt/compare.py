@@ -29,8 +29,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 from cli_errors import guarded  # noqa: E402
 from contact_theory import (RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius,  # noqa: E402
                             radius_column)
-from history_checks import (deepest_index, finish_axes, max_and_mean, pyplot, read_history,  # noqa: E402
-                            relative_errors, save_figure)
+from history_checks import (deepest_index, finish_axes, max_and_mean, pyplot, radius_errors,  # noqa: E402
+                            read_history, save_figure)
 
 E, NU, R = 161e9, 0.23, 27e-9
 ESTAR = effective_modulus(E, NU)
@@ -98,10 +98,7 @@ def main():
     if len(used) < 5:
         print(f"FAIL: only {len(used)} usable loading rows (need loads whose DMT radius is between 5 element sizes and R/4)")
         return 1
-    P = [r["contact_normal_force"] for r in used]
-    aFE = [r[column] for r in used]
-    aD = [radius(x) for x in P]
-    ea = relative_errors(aFE, aD)
+    P, _, aD, ea = radius_errors(used, column, radius)
     worst = max(range(len(ea)), key=lambda i: ea[i])
     pull_off = min(r["contact_normal_force"] for r in rows[deepest:])
     Pc = -2 * math.pi * W * R

@@ -31,8 +31,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 from cli_errors import guarded  # noqa: E402
 from contact_theory import (RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius,  # noqa: E402
                             radius_column)
-from history_checks import (max_and_mean, max_kinetic_over_stored, pyplot, read_history,  # noqa: E402
-                            relative_errors, save_figure)
+from history_checks import (max_and_mean, max_kinetic_over_stored, pyplot, radius_errors,  # noqa: E402
+                            read_history, relative_errors, save_figure)
 
 
 
@@ -69,14 +69,11 @@ def main():
     if len(used) < 5:
         print(f"FAIL: only {len(used)} usable rows (need loads with a Hertz radius between {min_radius * 1e9:.2f} nm and R/4)")
         return 1
-    P = [r["contact_normal_force"] for r in used]
-    aFE = [r[column] for r in used]
-    aH = [hertz_radius(x) for x in P]
+    P, aFE, aH, ea = radius_errors(used, column, hertz_radius)
     dH = [x * x / R for x in aH]
     dtot = [-r["tip_top_displacement_z"] - r["contact_max_penetration"] for r in used]
     C = sum((dt - dh) * x for dt, dh, x in zip(dtot, dH, P)) / sum(x * x for x in P)
     dFE = [dt - C * x for dt, x in zip(dtot, P)]
-    ea = relative_errors(aFE, aH)
     ed = relative_errors(dFE, dH)
     ke = max_kinetic_over_stored(used)
     ok = max(ea) <= a.tolerance and max(ed) <= a.tolerance and ke < 0.02

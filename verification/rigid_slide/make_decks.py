@@ -12,7 +12,8 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from deck_templates import fixed_displacement, prescribed, rigid_body  # noqa: E402
+from deck_templates import (HEX8_FULLY_INTEGRATED, block_parameters, elastic_material,  # noqa: E402
+                            fixed_displacement, history_output, prescribed, results_output, rigid_body)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LOAD_NN = 100.0          # normal load, nN
@@ -56,8 +57,6 @@ def deck(rigid):
     slide, t_end = slide_rows()
     how = ("the tip top a rigid body (`begin rigid body`) loaded and driven at its reference point" if rigid else
            "the tip top loaded with `prescribed force` on its node set (equal shares per node), as before rigid bodies")
-    history = ("reaction force = substrate_bottom\n        mean displacement = tip_top tip_apex" if rigid else
-               "reaction force = substrate_bottom\n        mean displacement = tip_top tip_apex")
     return f"""# {name}.i -- written by make_decks.py (edit that, not this file).
 # Force-controlled sliding of a silicon sphere (R = 27 nm) on a SAM-coated silicon flat (coating 1.6 nm,
 # E = 8 GPa), junction model (W = 0.05 J/m^2, tau* = 194 MPa): {how}.
@@ -80,23 +79,9 @@ begin sierra {name}
     begin values
 {values(slide)}    end values
   end function slide
-  begin property specification for material silicon
-    density = 2330 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 161 GPa
-      poissons ratio = 0.23
-    end parameters for model elastic
-  end property specification for material silicon
-  begin property specification for material sam
-    density = 1000 kg/m^3
-    begin parameters for model elastic
-      youngs modulus = 8 GPa
-      poissons ratio = 0.4
-    end parameters for model elastic
-  end property specification for material sam
-  begin solid section hex8
-    formulation = fully_integrated
-  end solid section hex8
+{elastic_material("silicon", 2330, 161, 0.23)}
+{elastic_material("sam", 1000, 8, 0.4)}
+{HEX8_FULLY_INTEGRATED}
   begin finite element model asperity
     begin generated asperity
       radius = 27 nm
@@ -111,18 +96,9 @@ begin sierra {name}
       coating thickness = 1.6 nm
       coating layers = 2
     end generated asperity
-    begin parameters for block tip
-      material = silicon
-      section = hex8
-    end parameters for block tip
-    begin parameters for block substrate
-      material = silicon
-      section = hex8
-    end parameters for block substrate
-    begin parameters for block coating
-      material = sam
-      section = hex8
-    end parameters for block coating
+{block_parameters("tip", "silicon")}
+{block_parameters("substrate", "silicon")}
+{block_parameters("coating", "sam")}
   end finite element model asperity
   begin presto procedure load_and_slide
     begin time control
@@ -150,14 +126,8 @@ begin sierra {name}
           junction gap tolerance = 0 nm
         end interaction sphere_flat
       end contact definition tip_on_flat
-      begin history output hist
-        time increment = 2 ps
-        {history}
-      end history output hist
-      begin results output fields
-        time increment = 20 ps
-        nodal variables = displacement
-      end results output fields
+{history_output(2, "substrate_bottom", "tip_top tip_apex")}
+{results_output(20, nodal_variables="displacement")}
     end presto region main
   end presto procedure load_and_slide
 end sierra {name}
