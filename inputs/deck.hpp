@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "contact/laws/law_key.hpp"
-#include "keys/key_decl.hpp"
+#include "inputs/keys/key_decl.hpp"
 
 namespace tribex::inputs {
 

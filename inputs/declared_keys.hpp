@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "contact/laws/contact_law.hpp"
-#include "keys/key_decl.hpp"
+#include "inputs/keys/key_decl.hpp"
 #include "materials/material.hpp"
 
 namespace tribex::inputs {

@@ -10,7 +10,7 @@
 #include <array>
 #include <string_view>
 
-#include "keys/key_decl.hpp"
+#include "inputs/keys/key_decl.hpp"
 
 namespace tribex::materials {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-#include "keys/key_decl.hpp"
+#include "inputs/keys/key_decl.hpp"
 
 namespace tribex::contact {
 
