@@ -191,7 +191,7 @@ class Builder {
     return w;
   }
 
-  // The values of the keys model `index` of `list` declares (keys/key_decl.hpp), by name: what the
+  // The values of the keys model `index` of `list` declares (inputs/keys/key_decl.hpp), by name: what the
   // block gives (SI; a path relative to the deck's folder) and the declared defaults. A key that only
   // other models of the list declare is an error naming them; so is a missing required key.
   keys::KeyValues declared_values(const Scope& s, const ModelList& list, int index, const ListWording& w) {

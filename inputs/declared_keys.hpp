@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The two lists whose members declare their own deck keys (keys/key_decl.hpp): the material models
+// The two lists whose members declare their own deck keys (inputs/keys/key_decl.hpp): the material models
 // (materials/material.hpp, `begin parameters for model NAME`) and the contact laws
 // (contact/laws/contact_law.hpp, `model = NAME` in `begin interaction`). The schema (schema.cpp
 // add_declared_keys) and the builder (deck_builder.cpp declared_values) treat both the same way

@@ -87,7 +87,7 @@ const std::vector<std::string> faces{"xmin", "xmax", "ymin", "ymax", "zmin", "zm
 const std::vector<std::string> models = materials::model_names();
 const std::vector<std::pair<std::string, std::string>> model_aliases = materials::model_aliases();
 
-// After a block's own keys, every model's declared keys (keys/key_decl.hpp) from one list
+// After a block's own keys, every model's declared keys (inputs/keys/key_decl.hpp) from one list
 // (declared_keys.hpp): a key several models declare appears once, its help naming them; no schema
 // default, so that the resolved text of one model never carries another's key (the builder fills the
 // model's defaults and rejects the keys of other models, deck_builder.cpp declared_values).

@@ -7,7 +7,7 @@
 //
 // Every model provides (README.md, "Adding a material"):
 //   static constexpr std::string_view deck_name, alias ("" for none);
-//   static constexpr std::array<KeyDecl, N> keys;   // its deck keys beyond E and nu (keys/key_decl.hpp)
+//   static constexpr std::array<KeyDecl, N> keys;   // its deck keys beyond E and nu (inputs/keys/key_decl.hpp)
 //   static constexpr bool finite_strain;             // S is P (objective); false: small-strain Cauchy
 //   static constexpr int state_size;                 // doubles per material point
 //   static constexpr bool dissipates;                // returns plastic work

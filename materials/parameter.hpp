@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // How a material model declares the deck keys of its own parameters (beyond the elastic constants
 // every model takes): `static constexpr std::array<KeyDecl, N> keys`, the declaration shared with the
-// contact laws (keys/key_decl.hpp). The deck schema, the builder and the key reference are made from
+// contact laws (inputs/keys/key_decl.hpp). The deck schema, the builder and the key reference are made from
 // these (inputs/schema.cpp add_declared_keys, inputs/deck_builder.cpp declared_values), so a model
 // declares its keys once, beside its law, and reads the deck's values by name in make() (KeyValues:
 // the builder has filled in every declared default).

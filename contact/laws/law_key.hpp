@@ -18,7 +18,7 @@
 namespace tribex::contact {
 
 // The deck keys of a law and the values the deck gives them: the declaration shared with the material
-// models (keys/key_decl.hpp).
+// models (inputs/keys/key_decl.hpp).
 using keys::KeyDecl;
 using keys::KeyValues;
 using keys::optional_key;
