@@ -1,6 +1,13 @@
-# expect: 25: 'rotation = free' is not supported yet
-# a rigid body asked to rotate freely: refused with the fix
+# expect: 37: an axis its rotation is free about
+# a prescribed rotation about an axis the body turns freely about: refused with the fix
 begin sierra bad
+  begin function spin
+    type is piecewise linear
+    begin values
+      0 0
+      1e-6 1
+    end
+  end function spin
   begin property specification for material m
     density = 1000
     begin parameters for model elastic
@@ -25,6 +32,11 @@ begin sierra bad
         rotation = free
         node set = b_zmax
       end rigid body top
+      begin prescribed rotation
+        rigid body = top
+        component = z
+        function = spin
+      end prescribed rotation
     end presto region r
   end presto procedure p
 end sierra bad
