@@ -456,11 +456,12 @@ class Builder {
       b.reference_point = std::array<double, 3>{p->numbers[0], p->numbers[1], p->numbers[2]};
     b.rotation_free = word(c, "rotation") == "free";
     if (c.find("rotation axes")) {
-      if (!b.rotation_free)
-        error(where(c, "rotation axes"), c,
-              "'rotation axes' names the axes a 'rotation = free' body turns about; add 'rotation = free' or remove it");
       b.free_axes = {false, false, false};
       for (const auto& w : words(c, "rotation axes")) b.free_axes[static_cast<int>(component(w))] = true;
+      // The default, x y z, stands in every resolved deck (log.txt), fixed bodies' included.
+      if (!b.rotation_free && !(b.free_axes[0] && b.free_axes[1] && b.free_axes[2]))
+        error(where(c, "rotation axes"), c,
+              "'rotation axes' names the axes a 'rotation = free' body turns about; add 'rotation = free' or remove it");
     }
     return b;
   }

@@ -1,4 +1,4 @@
-# expect: 2: add 'rotation = free'
+# expect: 39: add 'rotation = free'
 # 'rotation axes' on a body whose rotation is fixed: refused with the fix
 begin sierra bad
   begin function spin
@@ -15,12 +15,18 @@ begin sierra bad
       poissons ratio = 0.3
     end parameters for model elastic
   end property specification for material m
+  begin solid section s
+  end solid section s
   begin finite element model fem
     begin generated box b
       origin = 0 0 0
       size = 1 1 1
       intervals = 2 2 2
     end generated box b
+    begin parameters for block b
+      material = m
+      section = s
+    end parameters for block b
   end finite element model fem
   begin presto procedure p
     begin time control

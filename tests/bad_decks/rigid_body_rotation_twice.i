@@ -1,4 +1,4 @@
-# expect: 41: already driven about x
+# expect: 47: already driven about x
 # one axis of a body driven twice (an angle and an angular velocity)
 begin sierra bad
   begin function spin
@@ -15,12 +15,18 @@ begin sierra bad
       poissons ratio = 0.3
     end parameters for model elastic
   end property specification for material m
+  begin solid section s
+  end solid section s
   begin finite element model fem
     begin generated box b
       origin = 0 0 0
       size = 1 1 1
       intervals = 2 2 2
     end generated box b
+    begin parameters for block b
+      material = m
+      section = s
+    end parameters for block b
   end finite element model fem
   begin presto procedure p
     begin time control

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "solver/errors.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/model.hpp"
 #include "solver/output/rigid_body_history.hpp"
@@ -261,6 +262,18 @@ TEST(RigidRotation, OneFreeAxisUnderAConstantMomentTurnsAsMtSquaredOverTwoI) {
   std::printf("energy balance up to %.3g J (floor mu V eps %.3g J), work %.3g J\n", max_error, floor,
               cd.energies().external_work);
   EXPECT_LT(max_error, 2.0 * floor);
+}
+
+// A node-set condition on a turning body's nodes would fight its rotation: refused at set-up, naming the fix.
+TEST(RigidRotation, RefusesANodeSetConditionOnATurningBody) {
+  auto deck = rigid_box({6e-9, 6e-9, 6e-9}, {2, 2, 2}, true);
+  deck.procedure.region.fixed_displacements.push_back({"b_zmin", {C::z}, {}});
+  try {
+    solver::build_model(deck);
+    FAIL() << "expected a SetupError";
+  } catch (const solver::SetupError& e) {
+    EXPECT_NE(std::string(e.what()).find("drive the body instead ('rigid body = body'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
