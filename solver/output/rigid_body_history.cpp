@@ -27,7 +27,8 @@ std::vector<ColumnInfo> describe_rigid_body_columns(const std::vector<std::strin
     for (const char* i : {"x", "y", "z"})
       out.push_back({b + "_moment_" + i, "N m",
                      "moment of the coupling forces about the reference point of rigid body '" + b +
-                     "' (what holds its rotation fixed, or drives it), " + i});
+                     "' (" + (turning ? "what drives its rotation or holds its held axes" : "what holds its rotation fixed") +
+                         "), " + i});
     if (!turning) continue;
     for (const char* i : {"x", "y", "z"})
       out.push_back({b + "_rotation_" + i, "rad",
