@@ -7,9 +7,9 @@
 // fixing the rest (eq. 1.6.2), with A at the mid-step rotation Q^{n+1/2} = R(dt omega / 2) Q^n (a few
 // fixed-point passes): the implicit midpoint rule, whose torque-free spin keeps L exactly and the kinetic
 // energy without drift. The body then moves to U^{n+1} = U^n + dt V, Q^{n+1} = R(dt omega) Q^n (eq. 1.6.3,
-// Rodrigues' R, eq. 1.6.4), and each node gets the chord velocity to its place there,
-// v_i = (U^{n+1} + (Q^{n+1} - 1)(X_i - X_ref) - u_i^n) / dt^{n+1/2}: the positions stay rigid to round-off
-// (no drift), where the tangent V + omega x r_i would stretch the body by (dt |omega|)^2 / 2 a step.
+// Rodrigues' R, eq. 1.6.4), and each node gets the chord velocity of that motion,
+// v_i = V + (R(dt omega) - 1) Q^n (X_i - X_ref) / dt^{n+1/2}: the positions stay rigid to round-off, where
+// the tangent V + omega x r_i would stretch the body by (dt |omega|)^2 / 2 a step.
 #include <algorithm>
 #include <cmath>
 
@@ -53,6 +53,19 @@ void mass_geometry(const RigidBodies& rb, std::size_t b, const double* Q, double
   rotate(Q, d0, d);
   multiply(Q, J0c, QJ);
   multiply(QJ, Qt, Jc);
+}
+
+// (R(dt omega) - 1) / dt = (sin a / a) [omega]x + ((1 - cos a) / a^2) dt [omega]x^2, a = dt |omega| (eq. 1.6.4
+// over dt): the chord velocity's rotation part without the difference of two positions, so a short step
+// (the last, shortened to land on the end) does not divide their round-off by its length.
+void chord_rate(const double omega[3], double dt, double G[9]) {
+  const double a2 = dt * dt * (omega[0] * omega[0] + omega[1] * omega[1] + omega[2] * omega[2]), a = std::sqrt(a2);
+  const double s = a < 1e-4 ? 1.0 - a2 / 6.0 : std::sin(a) / a;
+  const double c = a < 1e-4 ? 0.5 - a2 / 24.0 : (1.0 - std::cos(a)) / a2;
+  const double W[9] = {0.0, -omega[2], omega[1], omega[2], 0.0, -omega[0], -omega[1], omega[0], 0.0};
+  double W2[9];
+  multiply(W, W, W2);
+  for (int j = 0; j < 9; ++j) G[j] = s * W[j] + c * dt * W2[j];
 }
 
 }  // namespace
@@ -176,17 +189,22 @@ void CentralDifference::move_turning_bodies(bool record) {
       store_momentum(rb, b, now + RigidMotion::Q, 0.0, q, next);
       std::copy(next + RigidMotion::P, next + N, now + RigidMotion::P);
     }
-    const double* Qn = &next[RigidMotion::Q];
+    // record: the chord V + (R - 1) r_i^n / dt (chord_rate); t = 0: V + omega x r_i (Q = 1).
+    double G[9], GQ[9];
+    if (record) {
+      chord_rate(q + 3, h, G);
+      multiply(G, now + RigidMotion::Q, GQ);
+    } else {
+      const double W[9] = {0.0, -q[5], q[4], q[5], 0.0, -q[3], -q[4], q[3], 0.0};
+      std::copy(W, W + 9, GQ);
+    }
     for (int k = rb.first[b]; k < rb.first[b + 1]; ++k) {
       const auto n = static_cast<std::size_t>(rb.node[k]);
-      const double* arm = &rb.arm[3 * static_cast<std::size_t>(k)];
-      double target[3], wr[3];
-      rotate(Qn, arm, target);
-      cross(q + 3, arm, wr);
+      double turn[3];
+      rotate(GQ, &rb.arm[3 * static_cast<std::size_t>(k)], turn);
       for (int i = 0; i < 3; ++i) {
         double& v = v_[3 * n + i];
-        // record: the chord to x_i^{n+1}; t = 0: V + omega x r_i (Q = 1).
-        const double v_new = record ? (next[RigidMotion::U + i] + (target[i] - arm[i]) - u_[3 * n + i]) / h : q[i] + wr[i];
+        const double v_new = q[i] + turn[i];
         rigid_coupling_[3 * static_cast<std::size_t>(k) + i] = model_.mass[n] * (v_new - v) * inverse_dt;
         v = v_new;
       }
