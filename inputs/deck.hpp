@@ -241,12 +241,27 @@ struct PrescribedForceSpec {
 /// *CONSTRAINED_NODAL_RIGID_BODY): the nodes of a node set or a block move as one rigid body whose
 /// reference point takes the boundary conditions that name it (`rigid body = NAME` in `begin prescribed
 /// displacement | velocity | force`) and reports its reaction force and moment (solver/setup/rigid_bodies.hpp).
-/// Rotation is fixed (the body translates only), the one mode supported.
+/// Rotation fixed (the default: the body translates only, or turns as a `prescribed rotation | angular
+/// velocity` drives it about its reference point) or free about some global axes (docs/theory.md 1.6).
 struct RigidBodySpec {
   std::string name;
   std::string node_set;  // exactly one of node_set / block is non-empty
   std::string block;
   std::optional<std::array<double, 3>> reference_point;  // m; default: the centroid of the body's nodes
+  SourceLocation where;
+  bool rotation_free = false;                         // `rotation = free`
+  std::array<bool, 3> free_axes{true, true, true};   // `rotation axes`: the axes a free body turns about
+};
+
+/// `begin prescribed rotation` / `begin prescribed angular velocity` with `rigid body = NAME`: the angle
+/// theta_c(t) (rad) or the angular velocity omega_c(t) (rad/s) of the body about the global axis c through
+/// its reference point, scale_factor * function(t) (`angle unit = deg` folded into scale_factor).
+struct PrescribedRotationSpec {
+  enum class Kind { angle, angular_velocity } kind = Kind::angle;
+  std::string rigid_body;
+  Component component = Component::x;  // the axis
+  std::string function;
+  double scale_factor = 1.0;  // rad (or rad/s) per unit of the function value
   SourceLocation where;
 };
 
@@ -388,6 +403,7 @@ struct RegionSpec {
   std::vector<PressureSpec> pressures;
   std::vector<PrescribedForceSpec> prescribed_forces;
   std::vector<RigidBodySpec> rigid_bodies;
+  std::vector<PrescribedRotationSpec> prescribed_rotations;
   std::vector<SilentBoundarySpec> silent_boundaries;
   double mass_damping_coefficient = 0.0;  // 1/s: f_damp = -c m v (`mass damping coefficient`)
   GuardSpec guards;

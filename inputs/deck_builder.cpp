@@ -454,11 +454,52 @@ class Builder {
       error(c.where, c, "'begin rigid body " + c.name + "' needs 'node set = NAME' or 'block = NAME' (its nodes)");
     if (auto p = get(c, "reference point"); p && p->numbers.size() == 3)
       b.reference_point = std::array<double, 3>{p->numbers[0], p->numbers[1], p->numbers[2]};
-    if (word(c, "rotation") == "free")
-      error(where(c, "rotation"), c,
-            "'rotation = free' is not supported yet: a rigid body translates only; write 'rotation = fixed' (or "
-            "remove the line), or model the part as an elastic block with a stiff material");
+    b.rotation_free = word(c, "rotation") == "free";
+    if (c.find("rotation axes")) {
+      b.free_axes = {false, false, false};
+      for (const auto& w : words(c, "rotation axes")) b.free_axes[static_cast<int>(component(w))] = true;
+      // The default, x y z, stands in every resolved deck (log.txt), fixed bodies' included.
+      if (!b.rotation_free && !(b.free_axes[0] && b.free_axes[1] && b.free_axes[2]))
+        error(where(c, "rotation axes"), c,
+              "'rotation axes' names the axes a 'rotation = free' body turns about; add 'rotation = free' or remove it");
+    }
     return b;
+  }
+
+  // `begin prescribed rotation | angular velocity`: a body of the region, about an axis its rotation is
+  // not free about, one drive per body and axis.
+  PrescribedRotationSpec prescribed_rotation(const Scope& c, const std::string& t, const RegionSpec& r,
+                                             const Deck& deck) {
+    PrescribedRotationSpec p;
+    const bool angle = t == "prescribed rotation";
+    p.kind = angle ? PrescribedRotationSpec::Kind::angle : PrescribedRotationSpec::Kind::angular_velocity;
+    p.rigid_body = word(c, "rigid body");
+    p.component = component(word(c, "component"));
+    p.function = word(c, "function");
+    p.scale_factor = real(c, "scale factor", 1.0) * (word(c, "angle unit") == "deg" ? 3.14159265358979323846 / 180.0 : 1.0);
+    p.where = c.where;
+    check_function_use(c, angle ? dim::none : dim::rate, "'begin " + t + "'", deck);
+    const auto body = std::find_if(r.rigid_bodies.begin(), r.rigid_bodies.end(),
+                                   [&](const RigidBodySpec& b) { return b.name == p.rigid_body; });
+    const int axis = static_cast<int>(p.component);
+    if (body == r.rigid_bodies.end()) {
+      if (c.find("rigid body"))
+        error(where(c, "rigid body"), c,
+              "rigid body '" + p.rigid_body + "' is not defined in the region; add 'begin rigid body " + p.rigid_body +
+                  "' (with 'node set' or 'block') to it" + did_you_mean_body(r, p.rigid_body));
+    } else if (body->rotation_free && body->free_axes[axis]) {
+      error(where(c, "component"), c,
+            "'begin " + t + "' drives rigid body '" + p.rigid_body + "' about " + "xyz"[axis] +
+                ", an axis its rotation is free about ('rotation = free' at " + line_of(body->where) +
+                "); drive a held axis, or hold this one ('rotation axes' without " + "xyz"[axis] +
+                ", or 'rotation = fixed')");
+    }
+    for (const auto& q : r.prescribed_rotations)
+      if (q.rigid_body == p.rigid_body && q.component == p.component)
+        error(where(c, "component"), c,
+              "rigid body '" + p.rigid_body + "' is already driven about " + "xyz"[axis] + " at " + line_of(q.where) +
+                  "; drive each axis once");
+    return p;
   }
 
   static std::string did_you_mean_body(const RegionSpec& r, const std::string& name) {
@@ -556,6 +597,8 @@ class Builder {
         p.where = c.where;
         check_function_use(c, dim::force, "'begin prescribed force'", deck);
         r.prescribed_forces.push_back(p);
+      } else if (t == "prescribed rotation" || t == "prescribed angular velocity") {
+        r.prescribed_rotations.push_back(prescribed_rotation(c, t, r, deck));
       } else if (t == "rigid body") {
         // read before the loop (a boundary condition may name a body defined below it)
       } else if (t == "silent boundary") {

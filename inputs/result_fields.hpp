@@ -55,6 +55,11 @@ inline constexpr auto result_field_table = std::make_tuple(
                 [](auto& s) { return s.nodal(s.integrator.acceleration(), 3); }},
     ResultField{"force", FieldKind::nodal, 3, "N", "nodal force f^n: internal + applied loads + contact",
                 [](auto& s) { return s.nodal(s.integrator.force(), 3); }},
+    ResultField{"rigid_body_force", FieldKind::nodal, 3, "N",
+                "force a rigid body's reference point applies to a node of the body (coupling force, constraint "
+                "reaction, share of a prescribed force on the body; docs/theory.md 1.6); at rest, the force the body "
+                "puts into the rest of the model there; 0 off rigid bodies (not written without one)",
+                [](auto& s) { return s.rigid_body_force(); }},
     ResultField{"contact_traction", FieldKind::nodal, 3, "Pa",
                 "contact force on a slave node over its tributary area (normal + tangential; a symmetric "
                 "interaction's pass gives half; 0 off the slave surfaces)",

@@ -309,6 +309,8 @@ std::vector<BlockSchema> build_table() {
                 {"pressure"},
                 {"prescribed force"},
                 {"rigid body"},
+                {"prescribed rotation"},
+                {"prescribed angular velocity"},
                 {"silent boundary"},
                 {"contact definition", 0, 1},
                 {"results output", 0, 1},
@@ -419,10 +421,32 @@ std::vector<BlockSchema> build_table() {
                       "x y z: the point the body's loads and motion refer to, its moment is taken about (default: the "
                       "centroid of its nodes)"),
                 choice("rotation", ValueKind::enumeration, {"fixed", "free"}, false, "fixed",
-                       "fixed: the body translates only (the one mode supported; free is refused)")},
+                       "fixed: the body turns only as a prescribed rotation or angular velocity drives it; free: it "
+                       "turns under the moments of the forces on it (about the axes of 'rotation axes')"),
+                choice("rotation axes", ValueKind::enumerations, components, false, "x y z",
+                       "with rotation = free: the global axes (through the reference point) the body turns about "
+                       "freely; the others are held")},
                {},
                false, "nodes moving as one rigid body, loaded and reported at a reference point "
                       "(`rigid body = NAME` in prescribed displacement/velocity/force; solver/setup/rigid_bodies.hpp)"});
+
+  for (const char* kind : {"prescribed rotation", "prescribed angular velocity"}) {
+    const bool angle = std::string(kind) == "prescribed rotation";
+    t.push_back({kind, NameRule::none, {}, {}, false,
+                 {text("rigid body", ValueKind::string, true,
+                       "a rigid body of the region (its rotation not free about this axis)"),
+                  choice("component", ValueKind::enumeration, components, true, "",
+                         "the global axis, through the body's reference point, it turns about (right-handed)"),
+                  text("function", ValueKind::string, true,
+                       angle ? "a function name (ordinate: the angle)" : "a function name (ordinate: the angular velocity)"),
+                  quantity("scale factor", "1", angle ? "angle per unit of the function" : "angular velocity per unit of the function"),
+                  choice("angle unit", ValueKind::enumeration, {"rad", "deg"}, false, "rad",
+                         angle ? "the unit of the angle (function times scale factor)"
+                               : "the angle's unit in the angular velocity (rad/s or deg/s)")},
+                 {},
+                 false, angle ? "a rigid body's rotation angle about an axis, a function of time"
+                              : "a rigid body's angular velocity about an axis, a function of time"});
+  }
 
   t.push_back({"silent boundary", NameRule::none, {}, {}, false,
                {text("side set", ValueKind::string, true, "a side set of the mesh"),

@@ -99,6 +99,8 @@ CentralDifference::CentralDifference(Model& model, const inputs::TimeControlSpec
   }
   rigid_momentum_.assign(3 * model.rigid_bodies.size(), 0.0);
   rigid_coupling_.assign(3 * model.rigid_bodies.node.size(), 0.0);
+  rigid_turning_sums_.assign(6 * model.rigid_bodies.size(), 0.0);
+  rigid_motion_.init(model.rigid_bodies.size());
   for (const auto& load : model.nodal_forces) loaded_dofs_.insert(loaded_dofs_.end(), load.dof.begin(), load.dof.end());
   for (const auto& load : model.pressures)
     for (int node : load.face_nodes)
@@ -366,9 +368,10 @@ void CentralDifference::update_velocity() {
 void CentralDifference::move_rigid_bodies(bool record) {
   const RigidBodies& rb = model_.rigid_bodies;
   if (rb.empty()) return;
+  if (rb.any_rotating()) move_turning_bodies(record);
   std::fill(rigid_momentum_.begin(), rigid_momentum_.end(), 0.0);
   for (std::size_t b = 0; b < rb.size(); ++b)
-    for (int k = rb.first[b]; k < rb.first[b + 1]; ++k) {
+    for (int k = rb.first[b]; k < rb.first[b + 1] && !rb.rotating[b]; ++k) {
       const int n = rb.node[k];
       const double w = rb.owned[k] * model_.mass[n];
       for (int i = 0; i < 3; ++i) rigid_momentum_[3 * b + i] += w * v_[3 * n + i];
@@ -376,7 +379,7 @@ void CentralDifference::move_rigid_bodies(bool record) {
   if (!model_.domain.serial()) parallel::sum(rigid_momentum_.data(), static_cast<int>(rigid_momentum_.size()));
   const double inverse_h = record && dt_n_ > 0.0 ? 1.0 / dt_n_ : 0.0;
   for (std::size_t b = 0; b < rb.size(); ++b)
-    for (int k = rb.first[b]; k < rb.first[b + 1]; ++k) {
+    for (int k = rb.first[b]; k < rb.first[b + 1] && !rb.rotating[b]; ++k) {
       const int n = rb.node[k];
       for (int i = 0; i < 3; ++i) {
         double& v = v_[3 * n + i];
@@ -479,6 +482,7 @@ void CentralDifference::sum_load_power(StepSums& s) const {
     s.external_left += owned[dof / 3] * reaction_[dof] * v_prev_[dof];
     s.external_right += owned[dof / 3] * reaction_[dof] * v_[dof];
   }
+  if (model_.rigid_bodies.any_rotating()) sum_rigid_drive_power(s);
   // f_ext is zero off the loaded dofs: summing over them alone gives the same bits.
   for (int d : loaded_dofs_) {
     s.external_left += f_ext_[d] * v_prev_[d];

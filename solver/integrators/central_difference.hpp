@@ -80,6 +80,8 @@ class CentralDifference {
   /// [rigid-body entry][3] the coupling force g_i = m_i (V - v_i) / dt^n that gave node i its body's
   /// velocity V at the last update (free components; 0 on driven ones), N (Model::rigid_bodies).
   const std::vector<double>& rigid_coupling_force() const { return rigid_coupling_; }
+  /// The turning rigid bodies' motion (solver/setup/rigid_bodies.hpp RigidMotion): `now` at time n.
+  const RigidMotion& rigid_motion() const { return rigid_motion_; }
   const Energies& energies() const { return energies_; }
   const contact::ContactTotals& contact_totals() const { return contact_totals_; }  // at time n
   /// [surface node][3] positions in the contact's numbering at the last force pass (time n), m.
@@ -121,6 +123,15 @@ class CentralDifference {
   /// Rigid bodies (solver/setup/rigid_bodies.hpp): the free components of each body's nodes set to the
   /// body's velocity, its momentum over its mass (collective). `record`: keep the coupling forces.
   void move_rigid_bodies(bool record);
+  /// The turning ones (central_difference_rigid.cpp, docs/theory.md 1.6): the rigid velocity nearest the
+  /// nodes' (the drives and held axes imposed), the body's motion advanced to t^{n+1}, and each node's
+  /// velocity the chord to its place there, so the body stays rigid to round-off.
+  void move_turning_bodies(bool record);
+  /// The turning bodies' (velocity, angular velocity) q = (V, omega) from their nodes' momentum b = (P, L):
+  /// the drives' values at this step, the rest solved (solver/setup/rigid_bodies.hpp solve_rigid_velocity).
+  void solve_turning_velocity(std::size_t body, bool record, const double b[6], double q[6]) const;
+  /// The driven turning bodies' coupling forces in the work ledger, as constraint reactions are.
+  void sum_rigid_drive_power(StepSums& sums) const;
   void apply_constraints();
   void account_time_n();
   /// v^n and a^n from v^{n-1/2} and v^{n+1/2}, once per velocity update and only when asked for
@@ -147,6 +158,8 @@ class CentralDifference {
   std::vector<int> loaded_dofs_;             // dofs that nodal forces or pressures load, ascending
   std::vector<double> rigid_momentum_;       // [body][3] sum m v over a body (move_rigid_bodies)
   std::vector<double> rigid_coupling_;       // [rigid-body entry][3] N
+  std::vector<double> rigid_turning_sums_;   // [body][6] sum m v, sum m r x v over a turning body
+  RigidMotion rigid_motion_;
   std::vector<double> inverse_mass_;
   std::vector<double> owned_mass_;  // [local node] mass where this rank owns the node, else 0 (energy sums)
   // Mass damping on mass-scaled models (Model::damping_mass; both empty otherwise): [local node] the damped

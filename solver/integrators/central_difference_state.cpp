@@ -48,6 +48,8 @@ void CentralDifference::save_state(StateArchive& a) const {
   a.put("lagged_power", lagged);
   a.put("momentum", std::vector<double>(momentum_, momentum_ + 3));
   a.put("material_work", std::vector<double>{plastic_work_, force_time_});
+  // The turning rigid bodies' motion at t^{n+1} (the same on every rank; none without such a body).
+  if (model_.rigid_bodies.any_rotating()) a.put("rigid_motion", rigid_motion_.next);
   for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
     a.put("block_" + std::to_string(b) + "_stress", model_.blocks[b].stress);
     if (!model_.blocks[b].state.empty()) a.put("block_" + std::to_string(b) + "_state", model_.blocks[b].state);
@@ -121,6 +123,13 @@ void CentralDifference::restore_state(const StateArchive& a) {
   a.get("material_work", material_work);
   plastic_work_ = material_work[0];
   force_time_ = material_work[1];
+  if (model_.rigid_bodies.any_rotating()) {
+    if (!a.has("rigid_motion"))
+      throw SetupError("the restart file holds no rigid-body rotation, which this deck's turning rigid bodies need; "
+                       "restart with the deck of the run that wrote it");
+    a.get("rigid_motion", rigid_motion_.next);
+    rigid_motion_.now = rigid_motion_.next;
+  }
   for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
     a.get("block_" + std::to_string(b) + "_stress", model_.blocks[b].stress);
     if (!model_.blocks[b].state.empty()) a.get("block_" + std::to_string(b) + "_state", model_.blocks[b].state);

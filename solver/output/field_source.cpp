@@ -49,6 +49,31 @@ FieldSource::Values FieldSource::element_plastic_strain() {
   return std::span<const double>(plastic_strain_);
 }
 
+// As the history's reaction (output/rigid_body_history.cpp), per node: the coupling force, the constraint
+// reaction of a driven component and the node's share of the prescribed forces on its body, at time n.
+FieldSource::Values FieldSource::rigid_body_force() {
+  const RigidBodies& rb = model_.rigid_bodies;
+  if (rb.empty()) return none();
+  std::vector<double>& c = scratch();
+  c.assign(3 * static_cast<std::size_t>(model_.mesh.node_count()), 0.0);
+  const auto& coupling = integrator.rigid_coupling_force();
+  const auto& reaction = integrator.reaction();
+  for (std::size_t b = 0; b < rb.size(); ++b) {
+    double share[3] = {0.0, 0.0, 0.0};
+    for (std::size_t l = 0; l < rb.load_body.size(); ++l)
+      if (rb.load_body[l] == static_cast<int>(b)) {
+        const NodalForceLoad& load = model_.nodal_forces[rb.load_index[l]];
+        share[rb.load_component[l]] += load.scale * model_.functions[load.function](integrator.time());
+      }
+    for (int k = rb.first[b]; k < rb.first[b + 1]; ++k) {
+      const auto n = static_cast<std::size_t>(rb.node[k]);
+      for (int i = 0; i < 3; ++i)
+        c[3 * n + i] = coupling[3 * static_cast<std::size_t>(k) + i] + reaction[3 * n + i] + share[i];
+    }
+  }
+  return nodal(c, 3);
+}
+
 void collect_fields(const std::vector<std::string>& names, inputs::FieldKind kind, FieldSource& source,
                     std::vector<FieldView>& out) {
   for (const auto& name : names)

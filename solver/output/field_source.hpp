@@ -41,6 +41,9 @@ class FieldSource {
   /// [element][6] Cauchy stress, Voigt xx yy zz xy yz zx, Pa; [element] equivalent plastic strain.
   Values element_stress();
   Values element_plastic_strain();
+  /// [node][3] the rigid-body coupling forces c_i = g_i + R_i + s_i of docs/theory.md 1.6 (0 off the bodies),
+  /// N; none without a rigid body.
+  Values rigid_body_force();
   /// A buffer of its own for each call within one output (kept for the next output).
   std::vector<double>& scratch();
 

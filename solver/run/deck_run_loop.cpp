@@ -79,7 +79,7 @@ void DeckRun::fill_history_row(double t) {
   row_.insert(row_.end(), set_sums_.begin(), set_sums_.end());
   if (!rigid_values_.empty()) {
     rigid_body_history_values(*model_, {t, integrator_->displacement().data(), integrator_->reaction().data(),
-                                        integrator_->rigid_coupling_force().data()},
+                                        integrator_->rigid_coupling_force().data(), &integrator_->rigid_motion()},
                               rigid_values_);
     row_.insert(row_.end(), rigid_values_.begin(), rigid_values_.end());
   }

@@ -386,7 +386,7 @@ void DeckRun::choose_history_columns() {
       material_dissipation_, region_.history ? region_.history->reaction_force_node_sets : std::vector<std::string>{},
       region_.history ? region_.history->displacement_node_sets : std::vector<std::string>{},
       model_->mass_scaling.active);
-  const auto rigid = describe_rigid_body_columns(model_->rigid_bodies.name);  // after the node-set columns
+  const auto rigid = describe_rigid_body_columns(model_->rigid_bodies);  // after the node-set columns
   history_columns_.insert(history_columns_.end(), rigid.begin(), rigid.end());
   rigid_values_.assign(rigid.size(), 0.0);
 }

@@ -134,6 +134,17 @@ TEST(Parser, FullDeckValues) {
   expect_close((*r.rigid_bodies[0].reference_point)[1], 1e-9);
   EXPECT_EQ(r.rigid_bodies[1].block, "substrate_skin");
   EXPECT_FALSE(r.rigid_bodies[1].reference_point.has_value());
+  EXPECT_FALSE(r.rigid_bodies[0].rotation_free);
+  EXPECT_TRUE(r.rigid_bodies[1].rotation_free);
+  EXPECT_EQ(r.rigid_bodies[1].free_axes, (std::array<bool, 3>{false, false, true}));
+  ASSERT_EQ(r.prescribed_rotations.size(), 2u);
+  EXPECT_EQ(r.prescribed_rotations[0].kind, PrescribedRotationSpec::Kind::angle);
+  EXPECT_EQ(r.prescribed_rotations[0].rigid_body, "cap");
+  EXPECT_EQ(r.prescribed_rotations[0].component, Component::x);
+  expect_close(r.prescribed_rotations[0].scale_factor, 1e-6 * 3.14159265358979323846 / 180.0);  // angle unit = deg
+  EXPECT_EQ(r.prescribed_rotations[1].kind, PrescribedRotationSpec::Kind::angular_velocity);
+  EXPECT_EQ(r.prescribed_rotations[1].component, Component::y);
+  EXPECT_EQ(r.prescribed_rotations[1].scale_factor, 2.0);
   ASSERT_EQ(r.prescribed_forces.size(), 1u);
   EXPECT_EQ(r.prescribed_forces[0].rigid_body, "lid");
   ASSERT_EQ(r.initial_velocities.size(), 1u);

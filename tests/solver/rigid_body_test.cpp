@@ -8,6 +8,7 @@
 #include "solver/errors.hpp"
 #include "solver/integrators/central_difference.hpp"
 #include "solver/model.hpp"
+#include "solver/output/field_source.hpp"
 #include "solver/output/rigid_body_history.hpp"
 #include "support.hpp"
 
@@ -72,6 +73,23 @@ TEST(RigidBody, LoadedCapReachesTheUniaxialSolution) {
   EXPECT_NEAR(v[0], 0.0, 1e-12 * F);
   EXPECT_NEAR(v[6], 0.0, 1e-6 * F * L);
   EXPECT_NEAR(v[7], 0.0, 1e-6 * F * L);
+  // The result field rigid_body_force: per node of the cap, summed the reaction column (the prescribed
+  // force: -F/25 on each node in z, at rest), 0 off the cap.
+  const std::vector<int> no_surface(model.mass.size(), -1);
+  solver::FieldSource source(model, cd, no_surface);
+  source.start_output();
+  const auto field = source.rigid_body_force();
+  ASSERT_TRUE(field.has_value());
+  double sum[3] = {0.0, 0.0, 0.0}, off = 0.0;
+  std::vector<char> on_cap(model.mass.size(), 0);
+  for (int n : model.mesh.node_sets.at("b_zmax")) on_cap[n] = 1;
+  for (std::size_t n = 0; n < on_cap.size(); ++n)
+    for (int i = 0; i < 3; ++i) {
+      if (on_cap[n]) sum[i] += (*field)[3 * n + i];
+      else off += std::abs((*field)[3 * n + i]);
+    }
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(sum[i], v[i], 1e-12 * F);
+  EXPECT_EQ(off, 0.0);
   // Every node of the cap moved by the same amount (a node-set load would too, here: uniaxial).
   const int first = model.mesh.node_sets.at("b_zmax")[0];
   for (int n : model.mesh.node_sets.at("b_zmax")) EXPECT_EQ(cd.displacement()[3 * n + 2], cd.displacement()[3 * first + 2]);

@@ -94,7 +94,7 @@ int run_command(const std::vector<std::string>& argv) {
   if (args.flag("--list-columns")) {
     args.finish();
     auto columns = solver::describe_history_columns(true, {"SET"}, {"SET"}, true);
-    for (const auto& c : solver::describe_rigid_body_columns({"BODY"})) columns.push_back(c);
+    for (const auto& c : solver::describe_rigid_body_columns({"BODY"}, true)) columns.push_back(c);
     for (const auto& c : columns)
       std::printf("%-28s %-7s %s\n", c.name.c_str(), c.unit.c_str(), c.definition.c_str());
     return 0;

@@ -13,8 +13,15 @@ across the radius) then converge as K(n) = K_inf + c n^-p (the edge singularity 
 p ~ 1): with three meshes p is measured, with two it is taken as 1; K_inf is compared with the
 half-space value.
 
+With --pressure-tolerance, also the pressure under the punch (the result field rigid_body_force at the
+end: the force the punch puts into the body at each of its nodes, over the node's tributary area), ring by
+ring away from the singular edge (r < 0.8 a), against Boussinesq's p(r) = P / (2 pi a sqrt(a^2 - r^2)) for
+the run's own total force P; each ring's relative difference is extrapolated over the meshes as the
+stiffness is (order measured with three meshes, taken as 1 with two). The punch is welded, so its
+pressure need not be Boussinesq's exactly (its stiffness is 2.9 % above the frictionless one).
+
   /usr/bin/python3 compare.py --domain OUT_n4_L10 OUT_n4_L20 OUT_n4_L40 --mesh 4:OUT_n4_L10 8:OUT_n8_L10 \
-      [16:OUT_n16_L10] --tolerance 0.02 [--plot FIG.png]
+      [16:OUT_n16_L10] --tolerance 0.02 [--plot FIG.png] [--pressure-tolerance 0.05 --pressure-plot FIG.png]
 """
 import argparse
 import math
@@ -36,12 +43,113 @@ def stiffness(out):
     return F / u
 
 
+RINGS = [(0.0, 0.2), (0.2, 0.4), (0.4, 0.6), (0.6, 0.8)]  # r / a, away from the edge singularity
+QUAD = [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]  # hex8 faces
+
+
+def top_areas(X, C, top):
+    """[node] the tributary area of each top-surface node, the integral of its shape function over the
+    top faces (2 x 2 Gauss on each bilinear quad, projected on the plane z = const), m^2."""
+    area = np.zeros(len(X))
+    g = np.array([-1.0, 1.0]) / math.sqrt(3.0)
+    for element in C:
+        for face in QUAD:
+            q = element[list(face)]
+            if not np.all(top[q]):
+                continue
+            x, y = X[q, 0], X[q, 1]
+            for xi in g:
+                for eta in g:
+                    N = 0.25 * np.array([(1 - xi) * (1 - eta), (1 + xi) * (1 - eta), (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)])
+                    dxi = 0.25 * np.array([-(1 - eta), 1 - eta, 1 + eta, -(1 + eta)])
+                    deta = 0.25 * np.array([-(1 - xi), -(1 + xi), 1 + xi, 1 - xi])
+                    area[q] += N * abs(dxi @ x * (deta @ y) - deta @ x * (dxi @ y))
+    return area
+
+
+def ring_pressures(out):
+    """(P, [ring] tribex's mean pressure, [ring] Boussinesq's over the same nodes and areas, node radii and
+    pressures) of one run: the last results.h5 step's rigid_body_force on the punch nodes."""
+    import h5py
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
+    from results_h5 import si
+    with h5py.File(os.path.join(out, "run", "results.h5"), "r") as f:
+        X, C = si(f["mesh/coordinates"]), f["mesh/connectivity"][()]
+        c = f["steps"][sorted(f["steps"].keys())[-1]]["nodal/rigid_body_force"][()]
+    top = np.abs(X[:, 2] - X[:, 2].max()) < 1e-6 * A
+    punch = np.nonzero(np.abs(c).sum(axis=1))[0]
+    area = top_areas(X, C, top)[punch]
+    force = -c[punch, 2]  # the punch pushes down: -c_z into the body
+    P, r, p = force.sum(), np.hypot(X[punch, 0], X[punch, 1]), force / area
+    boussinesq = P / (2 * math.pi * A * np.sqrt(np.maximum(A * A - r * r, 1e-300)))
+    fe, ref = [], []
+    for lo, hi in RINGS:
+        m = (r >= lo * A * (1 - 1e-9)) & (r < hi * A * (1 - 1e-9))
+        fe.append(force[m].sum() / area[m].sum())
+        ref.append((boussinesq[m] * area[m]).sum() / area[m].sum())
+    return P, np.array(fe), np.array(ref), r, p
+
+
+def pressure_check(meshes, tolerance, plot):
+    """Ring by ring, tribex's pressure / Boussinesq's - 1 per mesh, extrapolated over the meshes; 0 if
+    every ring's extrapolated difference is within `tolerance`, else 1."""
+    cells, diff, runs = [], [], []
+    for item in meshes:
+        n, out = item.split(":", 1)
+        P, fe, ref, r, p = ring_pressures(out)
+        cells.append(int(n))
+        diff.append(fe / ref - 1)
+        runs.append((int(n), P, r, p))
+        rings = ", ".join(f"{lo:.1f}-{hi:.1f} a {100 * d:+.2f} %" for (lo, hi), d in zip(RINGS, diff[-1]))
+        print(f"pressure, mesh n = {n:>2} (P = {P * 1e9:.2f} nN): {rings}")
+    diff = np.array(diff)
+    if len(cells) >= 3:
+        order = np.log((diff[-3] - diff[-2]) / (diff[-2] - diff[-1])) / math.log(cells[-2] / cells[-3])
+    else:
+        order = np.ones(len(RINGS))
+    extrapolated = diff[-1] + (diff[-1] - diff[-2]) / ((cells[-1] / cells[-2]) ** order - 1)
+    for (lo, hi), e, o in zip(RINGS, extrapolated, order):
+        print(f"pressure, ring {lo:.1f}-{hi:.1f} a: extrapolated {100 * e:+.2f} % from Boussinesq (order {o:.2f}, "
+              f"tolerance {100 * tolerance:.1f} %)")
+    if plot:
+        plot_pressure(runs, plot)
+    bad = np.abs(extrapolated) > tolerance
+    if bad.any():
+        print(f"FAIL: the pressure of {int(bad.sum())} ring(s) outside {100 * tolerance:.1f} %")
+        return 1
+    return 0
+
+
+def plot_pressure(runs, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    for n, P, r, p in runs:
+        order = np.argsort(r)
+        ax.plot(r[order] / A, p[order] / 1e9, ".", ms=4, label=f"tribex, {n} cells across a (P = {P * 1e9:.1f} nN)")
+    s = np.linspace(0, 0.995, 200)
+    P = runs[-1][1]
+    ax.plot(s, P / (2 * math.pi * A * A * np.sqrt(1 - s * s)) / 1e9, "k-", lw=1,
+            label="Boussinesq, P of the finest mesh")
+    ax.axvline(0.8, color="grey", ls=":", lw=0.8, label="compared: r < 0.8 a")
+    ax.set_xlabel("r / a (a = 10 nm)")
+    ax.set_ylabel("pressure under the punch (GPa)")
+    ax.set_ylim(0, 2.5)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    print("wrote", path)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--domain", nargs=3, required=True, help="one mesh at L = 10, 20, 40")
     ap.add_argument("--mesh", nargs="+", required=True, help="CELLS:OUT at L = 10, two or three meshes")
     ap.add_argument("--tolerance", type=float, default=0.02)
     ap.add_argument("--plot")
+    ap.add_argument("--pressure-tolerance", type=float, help="also check the pressure under the punch, ring by ring")
+    ap.add_argument("--pressure-plot")
     a = ap.parse_args()
     G = E / (2 * (1 + NU))
     k_frictionless = 2 * A * E / (1 - NU ** 2)
@@ -92,8 +200,12 @@ def main():
         fig.tight_layout()
         fig.savefig(a.plot, dpi=120)
         print("wrote", a.plot)
-    if abs(error) > a.tolerance:
+    failed = abs(error) > a.tolerance
+    if failed:
         print(f"FAIL: {100 * error:+.2f} % outside {100 * a.tolerance:.1f} %")
+    if a.pressure_tolerance is not None and pressure_check(a.mesh, a.pressure_tolerance, a.pressure_plot):
+        failed = True
+    if failed:
         return 1
     print("PASS")
     return 0

@@ -135,7 +135,22 @@ begin sierra tip_on_flat
       end prescribed force
       begin rigid body cap
         block = substrate_skin
+        rotation = free
+        rotation axes = z
       end rigid body cap
+      begin prescribed rotation
+        rigid body = cap
+        component = x
+        function = load
+        scale factor = 1e-6
+        angle unit = deg
+      end prescribed rotation
+      begin prescribed angular velocity
+        rigid body = cap
+        component = y
+        function = load
+        scale factor = 2 1/s
+      end prescribed angular velocity
       begin prescribed displacement
         rigid body = cap
         component = x

@@ -1,6 +1,13 @@
-# expect: 25: 'rotation = free' is not supported yet
-# a rigid body asked to rotate freely: refused with the fix
+# expect: 43: an axis its rotation is free about
+# a prescribed rotation about an axis the body turns freely about: refused with the fix
 begin sierra bad
+  begin function spin
+    type is piecewise linear
+    begin values
+      0 0
+      1e-6 1
+    end
+  end function spin
   begin property specification for material m
     density = 1000
     begin parameters for model elastic
@@ -8,12 +15,18 @@ begin sierra bad
       poissons ratio = 0.3
     end parameters for model elastic
   end property specification for material m
+  begin solid section s
+  end solid section s
   begin finite element model fem
     begin generated box b
       origin = 0 0 0
       size = 1 1 1
       intervals = 2 2 2
     end generated box b
+    begin parameters for block b
+      material = m
+      section = s
+    end parameters for block b
   end finite element model fem
   begin presto procedure p
     begin time control
@@ -25,6 +38,11 @@ begin sierra bad
         rotation = free
         node set = b_zmax
       end rigid body top
+      begin prescribed rotation
+        rigid body = top
+        component = z
+        function = spin
+      end prescribed rotation
     end presto region r
   end presto procedure p
 end sierra bad
