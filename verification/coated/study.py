@@ -377,6 +377,8 @@ def check(a):
 def write_results(runs_dir):
     ms = {}
     for name in RUNS:
+        if RUNS[name].get("diagnostic"):
+            continue  # issue 52's diagnostics (diagnose.py), not part of the study's tables
         folder = os.path.join(runs_dir, "coated_" + name)
         if os.path.exists(os.path.join(folder, "summary.json")):
             ms[name] = measure(name, folder)
