@@ -159,7 +159,18 @@ def measure(name, folder):
                              edge=float(hist[i]["contact_radius_edge"]), edge_X=edge_crossings(faces, g, X),
                              cfit=consistent_fit(fi, force, reach)))
     deepest = int(np.argmax([r["delta"] for r in rows]))
-    return rows[: deepest + 1]
+    return rows[: deepest + 1], penalty_per_area(folder)
+
+
+def penalty_per_area(folder):
+    """The penalty's stiffness per area k_A = p / overlap at the slave node nearest the axis, last output
+    (Pa/m): its compliance 1/k_A is an interface layer the continuum does not have."""
+    with h5py.File(os.path.join(folder, "results.h5"), "r") as f:
+        X = si(f["mesh/coordinates"])
+        st = f["steps"][sorted(f["steps"].keys())[-1]]["nodal"]
+        g = si(st["gap"])
+        i = int(np.argmin(np.where(np.isnan(g), np.inf, X[:, 0] ** 2 + X[:, 1] ** 2)))
+        return float(st["contact_pressure"][i]) / -g[i]
 
 
 def continuum(name, tribex, p_tilde):
@@ -188,12 +199,12 @@ def diagnose(name, runs, tribex, show_rows):
     """One run: (summary dict, printed lines)."""
     R, E, nu, Ec, nuc, pmax = materials(name)
     h = RUNS[name]["h"] * 1e-9
-    rows = measure(name, os.path.join(runs, "coated_" + name))
+    rows, k_a = measure(name, os.path.join(runs, "coated_" + name))
     scale = ebar(Ec, nuc) * (H_C * 1e-9) ** 2
     rows = [r for r in rows if MIN_LOAD <= r["P"] / scale <= pmax and 3 * h <= r["edge"] <= 5e-9 - h]
     pn = np.array([r["P"] / scale for r in rows])
     a_ref, d_ref = continuum(name, tribex, pn)
-    out = dict(run=name, rows=len(rows), p_tilde_lo=pn.min(), p_tilde_hi=pn.max())
+    out = dict(run=name, rows=len(rows), p_tilde_lo=pn.min(), p_tilde_hi=pn.max(), penalty_per_area=k_a)
     lines = []
     for k in ESTIMATORS:
         d = np.array([r[k] for r in rows]) ** 2 / a_ref**2 - 1
@@ -213,12 +224,32 @@ def diagnose(name, runs, tribex, show_rows):
     lines.append("  approach: delta_FE - delta_ref = c + C P + residual, C = "
                  f"{C * 1e3:+.3f} pm/nN; residual / delta_ref " + " ".join(f"{100 * out[f'approach_bin{j}']:+6.2f}" for j in range(1, 5))
                  + f"   rms {100 * out['approach_rms']:.2f} %")
-    head = (f"{name} ({RUNS[name]['h']:g} nm; {len(rows)} rows, P~ {pn.min():.3f}-{pn.max():.3f}): f_FE/f_ref - 1 (%) "
+    head = (f"{name} ({RUNS[name]['h']:g} nm, k_A = {k_a:.3g} Pa/m; {len(rows)} rows, P~ {pn.min():.3f}-{pn.max():.3f}): f_FE/f_ref - 1 (%) "
             f"over P~ 0.02-0.05, 0.05-0.2, 0.2-0.8, > 0.8")
     if show_rows:
         lines += [f"    P~ {p:.4f}  a_ref {a * 1e9:.3f} nm  " + "  ".join(f"{k} {100 * ((r[k] / a) ** 2 - 1):+6.2f}" for k in ESTIMATORS)
                   for p, a, r in zip(pn, a_ref, rows)]
     return out, [head] + lines
+
+
+def markdown(results):
+    """README.md's table: one row per run, f_FE/f_ref - 1 bins of the edge radius and the consistent fit."""
+    pct = lambda v: f"{100 * v:+.2f}"  # noqa: E731
+    lines = ["| run | changed | k_A (Pa/m) | edge radius: bins (%) | mean abs | b_FE - b_ref | consistent fit: bins (%) | "
+             "b_FE - b_ref | approach residual, first bin |", "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in results:
+        name = r["run"]
+        changed = ", ".join(f"{k} {v}" for k, v in DIAGNOSTICS_OF(name).items()) or "none (case1.i)"
+        lines.append(f"| {name} | {changed} | {r['penalty_per_area']:.2g} | "
+                     + " / ".join(pct(r[f"edge_bin{j}"]) for j in range(1, 5)) + f" | {100 * r['edge_mean_abs']:.2f} | "
+                     f"{r['edge_db']:+.4f} | " + " / ".join(pct(r[f"cfit_bin{j}"]) for j in range(1, 5))
+                     + f" | {r['cfit_db']:+.4f} | {pct(r['approach_bin1'])} |")
+    return "\n".join(lines)
+
+
+def DIAGNOSTICS_OF(name):
+    from make_decks import DIAGNOSTICS  # noqa: E402
+    return DIAGNOSTICS.get(name, {})
 
 
 def main():
@@ -228,6 +259,7 @@ def main():
     ap.add_argument("--tribex", default=str(ROOT / "build" / "bin" / "tribex"), help="the tribex binary")
     ap.add_argument("--csv", help="write one row per run")
     ap.add_argument("--rows", action="store_true", help="print every row")
+    ap.add_argument("--markdown", action="store_true", help="print the README table of all the runs at the end")
     a = ap.parse_args()
     results = []
     for name in a.run:
@@ -237,6 +269,8 @@ def main():
         out, lines = diagnose(name, a.runs, a.tribex, a.rows)
         results.append(out)
         print("\n".join(lines))
+    if a.markdown:
+        print(markdown(results))
     if a.csv:
         with open(a.csv, "w", newline="") as fh:
             w = csv.DictWriter(fh, fieldnames=list(results[0].keys()))

@@ -71,9 +71,18 @@ DIAGNOSTICS = {
     "diag_case1_tip8": dict(tip_height=8.0),
     "diag_case1_slow2": dict(slow=2.0),
     "diag_hertz": dict(hertz=True),
+    "diag_case1_h0.5": dict(h=0.5),
     "diag_case1_h0.3": dict(h=0.3),
     "diag_case1_h0.2": dict(h=0.2, fit_start=(0.025, 0.35)),
     "diag_case1_h0.2_pen0.3": dict(h=0.2, fit_start=(0.025, 0.35), penalty=0.3),
+    "diag_case1_h0.3_pen0.5": dict(h=0.3, penalty=0.5),
+    "diag_case1_layers24_pen2": dict(coating=(H_C, 24, 1000.0), penalty=2.0),
+    "diag_case1_rho4000": dict(coating=(H_C, 6, 4000.0)),
+    "diag_case1_rho16000": dict(coating=(H_C, 6, 16000.0)),
+    "diag_case1_rho16000_pen2": dict(coating=(H_C, 6, 16000.0), penalty=2.0),
+    "diag_case1_layers24_rho4000_pen2": dict(coating=(H_C, 24, 4000.0), penalty=2.0),
+    "diag_case1_layers24_rho16000_pen2": dict(coating=(H_C, 24, 16000.0), penalty=2.0),
+    "diag_case1_h0.2_layers12": dict(h=0.2, fit_start=(0.025, 0.35), coating=(H_C, 12, 1000.0)),
 }
 for _name, _over in DIAGNOSTICS.items():
     RUNS[_name] = {**dict(case=1, h=0.4, diagnostic=True, fields=2.0), **_over}
