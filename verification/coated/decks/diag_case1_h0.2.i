@@ -1,5 +1,5 @@
 # diag_case1_h0.2.i -- coated-substrate study (verification/coated/README.md), written by make_decks.py: edit
-# the generator, not this file. Table B.1 case 1, element size 0.2 nm. Diagnostic of issue 52 (make_decks.py DIAGNOSTICS: {'h': 0.2, 'fit_start': (0.025, 0.35)}).
+# the generator, not this file. Table B.1 case 1, element size 0.2 nm. Diagnostic of issue 52 (make_decks.py DIAGNOSTICS: {'h': 0.2, 'fit_start': (0.025, 0.35), 'coating': (2.0, 6, 1000.0)}).
 #
 # Run:    build/bin/tribex run verification/coated/decks/diag_case1_h0.2.i -o build/verification/coated_diag_case1_h0.2
 # Check:  /usr/bin/python3 verification/coated/study.py (reads every run folder present)
