@@ -236,7 +236,7 @@ for _c in range(2, 8):
     RUNS[f"case{_c}_h0.2"] = dict(case=_c, h=0.2, fit_start=(_d, 0.75 * _v))
 
 
-def write(name, run):
+def write(name, run, folder=os.path.join(HERE, "decks")):
     R, E, Ec, _, _ = TABLE_B1[run["case"]]
     hc, layers, rho_c = run.get("coating", (H_C, coating_layers(run["h"]), 1000.0))
     depth = run.get("depth", drive_depth(run["case"]))
@@ -280,7 +280,7 @@ def write(name, run):
                             f"contact axis = 0 0 0 0 0 1 nm\n        penalty scale factor = {run['penalty']:g}")
     if run.get("hertz"):  # equal materials: no swap, so name the coating the slave as the study's runs have it
         text = text.replace("surfaces = tip flat", "surfaces = flat tip")
-    write_deck(os.path.join(HERE, "decks"), name, text)
+    write_deck(folder, name, text)
 
 
 def main():
