@@ -18,7 +18,10 @@ P~ = P/(Ebar_c h_c^2) from 0.02 to the case's maximum and 3 to 11.5 element size
   cfit      the radius of a smooth-edge pressure p = sqrt(1 - r^2/a^2)_+ (c0 + c1 r^2/a^2) fitted to
             the slave nodal forces through consistent loads, f_I = int p N_I dA (verification/hertz/
             consistent_fit.py with a second shape term: the coated pressure is not elliptic); uses
-            every node's force, not the gap, so it does not see the penalty's overlap.
+            every node's force, not the gap, so it does not see the penalty's overlap;
+  pressure_fit  contact_radius_pressure_fit of history.csv (p^2 linear in r^2 through the nodal pressures:
+            Hertz's ellipse, which the coated pressure is not);
+  node_area sqrt(A/pi) of the node-ring area 4 contact_area (jumps a ring at a time).
 
 and the approach: delta_FE (the tip top's travel) - delta_ref = c + C P + residual, c and C fitted
 (the finite column and block add a compliance linear in P; a contact radius off by e adds about
@@ -133,7 +136,7 @@ def edge_crossings(faces, g, positions):
 
 
 def measure(name, folder):
-    """Rows (time, P, delta, edge, edge_X, cfit) at every field output of the run's loading branch."""
+    """Rows (time, P, delta and the ESTIMATORS' radii) at every field output of the run's loading branch, and k_A."""
     hist = list(csv.DictReader(open(os.path.join(folder, "history.csv"))))
     ht = np.array([float(r["time"]) for r in hist])
     rows = []
@@ -157,7 +160,9 @@ def measure(name, folder):
             reach = math.sqrt((x[fi.nodes, :2] ** 2).sum(axis=1)[force > 0].max())
             rows.append(dict(time=ht[i], P=P, delta=-float(hist[i]["tip_top_displacement_z"]),
                              edge=float(hist[i]["contact_radius_edge"]), edge_X=edge_crossings(faces, g, X),
-                             cfit=consistent_fit(fi, force, reach)))
+                             cfit=consistent_fit(fi, force, reach),
+                             pressure_fit=float(hist[i]["contact_radius_pressure_fit"]),
+                             node_area=math.sqrt(4 * float(hist[i]["contact_area"]) / math.pi)))
     deepest = int(np.argmax([r["delta"] for r in rows]))
     return rows[: deepest + 1], penalty_per_area(folder)
 
@@ -192,7 +197,7 @@ def continuum(name, tribex, p_tilde):
     return np.array([r["contact_radius"] for r in ref]) * 1e-9, np.array([r["approach"] for r in ref]) * 1e-9
 
 
-ESTIMATORS = ("edge", "edge_X", "cfit")
+ESTIMATORS = ("edge", "edge_X", "cfit", "pressure_fit", "node_area")
 
 
 def diagnose(name, runs, tribex, show_rows):
@@ -213,7 +218,7 @@ def diagnose(name, runs, tribex, show_rows):
             out[f"{k}_{tag}"] = d[sel].mean() if sel.any() else float("nan")
         out[f"{k}_mean_abs"] = np.abs(d).mean()
         out[f"{k}_db"] = np.polyfit(np.log(pn), np.log1p(d), 1)[0]
-        lines.append(f"  {k:7s} " + " ".join(f"{100 * out[f'{k}_bin{j}']:+6.2f}" for j in range(1, 5))
+        lines.append(f"  {k:12s} " + " ".join(f"{100 * out[f'{k}_bin{j}']:+6.2f}" for j in range(1, 5))
                      + f"   mean |.| {100 * out[f'{k}_mean_abs']:5.2f} %   b_FE - b_ref {out[f'{k}_db']:+.4f}")
     P = np.array([r["P"] for r in rows])
     dd = np.array([r["delta"] for r in rows]) - d_ref
