@@ -239,7 +239,7 @@ def diagnose(name, runs, tribex, show_rows):
 
 def markdown(results):
     """README.md's table: one row per run, f_FE/f_ref - 1 bins of the edge radius and the consistent fit."""
-    pct = lambda v: f"{100 * v:+.2f}"  # noqa: E731
+    pct = lambda v: "-" if math.isnan(v) else f"{100 * v:+.2f}"  # noqa: E731 (a bin the run does not reach)
     lines = ["| run | changed | k_A (Pa/m) | edge radius: bins (%) | mean abs | b_FE - b_ref | consistent fit: bins (%) | "
              "b_FE - b_ref | approach residual, first bin |", "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in results:
