@@ -181,18 +181,21 @@ def write_table(a):
 
 
 def pointwise(name, runs, tribex):
-    """Summary of f_FE/f_ref - 1 over the fitted rows of run `name`: (rows, mean |.|, max |.|, lo, hi, bin means)."""
+    """Summary of f_FE/f_ref - 1 over the fitted rows of run `name`: (rows, mean |.|, max |.|, lo, hi, bin means,
+    A_FE/A_ref - 1, b_FE - b_ref with both fitted over these rows)."""
     m, rows = fe_rows(name, runs)
     if not rows:
         return None
     rows = sorted(rows, key=lambda p: p["Pn"])
-    dev = [(p["Pn"], p["f"] / r - 1) for p, r in zip(rows, reference_f(m["run"]["case"], tribex, rows))]
+    ref_f = reference_f(m["run"]["case"], tribex, rows)
+    dev = [(p["Pn"], p["f"] / r - 1) for p, r in zip(rows, ref_f)]
+    (fa, fb), (ra, rb) = power_fit([p["Pn"] for p in rows], [p["f"] for p in rows]), power_fit([p["Pn"] for p in rows], ref_f)
     bins = []
     for lo, hi in BINS:
         sel = [d for pn, d in dev if lo <= pn < hi]
         bins.append(sum(sel) / len(sel) if sel else None)
     ds = [d for _, d in dev]
-    return len(ds), sum(abs(d) for d in ds) / len(ds), max(abs(d) for d in ds), min(ds), max(ds), bins
+    return len(ds), sum(abs(d) for d in ds) / len(ds), max(abs(d) for d in ds), min(ds), max(ds), bins, fa / ra - 1, fb - rb
 
 
 def continuum_section(fits, runs, tribex=str(ROOT / "build" / "bin" / "tribex")):
@@ -223,15 +226,16 @@ def continuum_section(fits, runs, tribex=str(ROOT / "build" / "bin" / "tribex"))
              section(out), ""]
     if os.path.exists(tribex):
         lines += ["Row by row (`compare_reference.py run RUN`): f_FE/f_ref - 1 over every fitted row, the continuum "
-                  "solved at each row's P~; bin means over P~ ranges.", "",
-                  "| run | rows | mean abs | max abs | range | P~ < 0.05 | 0.05-0.2 | 0.2-0.8 | > 0.8 |",
-                  "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-        for name in ["case1", "case2", "case3", "case4", "case5", "case6", "case7", "case1_h0.5", "case1_h0.3", "case1_h0.2"]:
+                  "solved at each row's P~; bin means over P~ ranges; A and b of FE and continuum fitted over the same rows.", "",
+                  "| run | rows | mean abs | max abs | range | P~ < 0.05 | 0.05-0.2 | 0.2-0.8 | > 0.8 | A_FE/A_ref - 1 | b_FE - b_ref |",
+                  "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+        names = [f"case{c}" for c in range(1, 8)] + ["case1_h0.5", "case1_h0.3", "case1_h0.2"] + [f"case{c}_h0.2" for c in range(2, 8)]
+        for name in names:
             pw = pointwise(name, runs, tribex)
             if pw:
-                n, mean_abs, max_abs, lo, hi, bins = pw
+                n, mean_abs, max_abs, lo, hi, bins, da, db = pw
                 b = " | ".join("" if v is None else f"{v:+.2%}" for v in bins)
-                lines.append(f"| {name} | {n} | {mean_abs:.2%} | {max_abs:.2%} | {lo:+.1%} to {hi:+.1%} | {b} |")
+                lines.append(f"| {name} | {n} | {mean_abs:.2%} | {max_abs:.2%} | {lo:+.1%} to {hi:+.1%} | {b} | {da:+.2%} | {db:+.4f} |")
         lines.append("")
     return lines
 

@@ -374,9 +374,12 @@ def check(a):
     return 0 if ok else 1
 
 
-def write_results(runs_dir):
+def measure_all(runs_dir):
+    """Every study run present (the diagnostics left out), its fit, and its plot: (ms, fits)."""
     ms = {}
     for name in RUNS:
+        if RUNS[name].get("diagnostic"):
+            continue  # issue 52's diagnostics (diagnose.py), not part of the study's tables
         folder = os.path.join(runs_dir, "coated_" + name)
         if os.path.exists(os.path.join(folder, "summary.json")):
             ms[name] = measure(name, folder)
@@ -388,24 +391,37 @@ def write_results(runs_dir):
         fits[name] = power_fit(fitted_rows(m))
         if fits[name]:
             plot_case(m, fits[name], os.path.join(HERE, "plots", f"{name}.png"))
-    # Mesh convergence on case 1, each mesh fitted over the same P~ range (the coarsest mesh's,
-    # which starts later because a >= MIN_RINGS h): the spread between the production mesh (0.4 nm)
-    # and the finest one run is the discretisation uncertainty given to every case (same mesh
-    # layout, same relative resolution).
-    conv = [n for n in ("case1_h0.5", "case1", "case1_h0.3", "case1_h0.2") if fits.get(n)]
-    # b still drifts between the two finest meshes (the contact edge is located to a fraction of an
-    # element, an O(h) error), so the uncertainty is the distance of the 0.4 nm value from the
-    # h -> 0 value extrapolated linearly in h through the two finest meshes.
-    conv_fits, sig_A_rel, sig_b, extrap = {}, None, None, None
+    return ms, fits
+
+
+def mesh_convergence(ms, fits):
+    """Mesh convergence on case 1, each mesh fitted over the same P~ range (the coarsest mesh's,
+    which starts later because a >= MIN_RINGS h): the spread between the production mesh (0.4 nm)
+    and the finest one run is the discretisation uncertainty given to every case (same mesh
+    layout, same relative resolution). The uncertainty is the distance of the 0.4 nm value from the
+    h -> 0 value extrapolated linearly in h through the two finest meshes (the contact edge is located
+    to a fraction of an element, an O(h) error). Returns dict(conv, conv_fits, lo, n1, n2, extrap,
+    sig_A_rel, sig_b)."""
+    c = dict(conv=[n for n in ("case1_h0.5", "case1", "case1_h0.3", "case1_h0.2") if fits.get(n)],
+             conv_fits={}, lo=None, n1=None, n2=None, extrap=None, sig_A_rel=None, sig_b=None)
+    conv = c["conv"]
     if len(conv) >= 2:
-        lo = max(fits[n]["Pn_lo"] for n in conv)
-        conv_fits = {n: power_fit(fitted_rows(ms[n], lo=lo)) for n in conv}
-        n1, n2 = conv[-2], conv[-1]
+        c["lo"] = lo = max(fits[n]["Pn_lo"] for n in conv)
+        c["conv_fits"] = cf = {n: power_fit(fitted_rows(ms[n], lo=lo)) for n in conv}
+        c["n1"], c["n2"] = n1, n2 = conv[-2], conv[-1]
         if "case1" in conv and n2 != "case1":
             h1, h2 = ms[n1]["h"], ms[n2]["h"]
-            extrap = {k: conv_fits[n2][k] - h2 * (conv_fits[n1][k] - conv_fits[n2][k]) / (h1 - h2) for k in ("A", "b")}
-            sig_A_rel = abs(conv_fits["case1"]["A"] / extrap["A"] - 1)
-            sig_b = abs(conv_fits["case1"]["b"] - extrap["b"])
+            c["extrap"] = ex = {k: cf[n2][k] - h2 * (cf[n1][k] - cf[n2][k]) / (h1 - h2) for k in ("A", "b")}
+            c["sig_A_rel"] = abs(cf["case1"]["A"] / ex["A"] - 1)
+            c["sig_b"] = abs(cf["case1"]["b"] - ex["b"])
+    return c
+
+
+def write_results(runs_dir):
+    ms, fits = measure_all(runs_dir)
+    mc = mesh_convergence(ms, fits)
+    conv, conv_fits, lo, n1, n2 = mc["conv"], mc["conv_fits"], mc["lo"], mc["n1"], mc["n2"]
+    extrap, sig_A_rel, sig_b = mc["extrap"], mc["sig_A_rel"], mc["sig_b"]
     lines = ["# Coated-substrate study: results", "",
              "Written by `study.py` from the runs listed in README.md (do not edit by hand). f and the fit as in",
              "study.py: Area = pi a^2 (a: gap sign change on the tip-surface edges), P = contact force, fit of",

@@ -6,8 +6,8 @@
 #
 # Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
-# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 27 nm.
-# Tip top pushed 0.490 nm: 3 m/s, slowing to 0.35 m/s at 0.025 nm (first fitted load), then
+# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 12 layers. R = 27 nm.
+# Tip top pushed 0.490 nm: 3 m/s, slowing to 0.25 m/s at 0.025 nm (first fitted load), then
 # v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra case1_h0.2
   begin function push
@@ -20,38 +20,50 @@ begin sierra case1_h0.2
            5.00  0.00273
            7.50  0.00787
           10.00  0.01500
-          15.12  0.02271
-          20.37  0.02541
-          25.60  0.02737
-          30.68  0.02945
-          35.84  0.03177
-          41.03  0.03435
-          46.17  0.03716
-          51.24  0.04022
-          56.38  0.04365
-          61.51  0.04745
-          66.57  0.05161
-          71.66  0.05626
-          76.70  0.06140
-          81.76  0.06716
-          86.85  0.07365
-          91.89  0.08087
-          96.90  0.08895
-         101.95  0.09814
-         107.00  0.10854
-         112.02  0.12030
-         117.03  0.13364
-         122.05  0.14895
-         127.07  0.16646
-         132.09  0.18666
-         137.09  0.20992
-         142.10  0.23698
-         147.12  0.26857
-         152.12  0.30555
-         157.13  0.34913
-         162.14  0.39872
-         167.15  0.44880
-         171.24  0.48975
+          15.05  0.02247
+          20.05  0.02492
+          25.28  0.02626
+          30.62  0.02773
+          36.02  0.02933
+          41.06  0.03092
+          46.15  0.03263
+          51.23  0.03447
+          56.30  0.03643
+          61.32  0.03851
+          66.55  0.04083
+          71.66  0.04328
+          76.89  0.04598
+          81.96  0.04879
+          87.06  0.05185
+          92.17  0.05516
+          97.25  0.05871
+         102.27  0.06251
+         107.36  0.06667
+         112.46  0.07120
+         117.54  0.07610
+         122.56  0.08136
+         127.61  0.08712
+         132.63  0.09336
+         137.69  0.10022
+         142.72  0.10769
+         147.77  0.11589
+         152.79  0.12483
+         157.79  0.13462
+         162.80  0.14540
+         167.81  0.15727
+         172.81  0.17037
+         177.83  0.18494
+         182.86  0.20111
+         187.86  0.21898
+         192.88  0.23894
+         197.89  0.26122
+         202.92  0.28620
+         207.92  0.31412
+         212.93  0.34558
+         217.94  0.38109
+         222.95  0.42125
+         227.95  0.46680
+         230.26  0.48975
     end values
   end function push
 
@@ -90,7 +102,7 @@ begin sierra case1_h0.2
       fine depth = 1.2 nm
       grading ratio = 1.4
       coating thickness = 2 nm
-      coating layers = 6
+      coating layers = 12
     end generated asperity
     begin parameters for block tip
       material = silicon
@@ -108,7 +120,7 @@ begin sierra case1_h0.2
 
   begin presto procedure indent
     begin time control
-      termination time = 172 ps
+      termination time = 231 ps
     end time control
     begin presto region main
       use finite element model asperity
@@ -148,7 +160,7 @@ begin sierra case1_h0.2
         mean displacement = tip_top tip_apex substrate_axis_top
       end history output hist
       begin results output fields
-        time increment = 172 ps
+        time increment = 231 ps
         nodal variables = displacement contact_traction contact_status
         element variables = stress
       end results output fields

@@ -6,7 +6,7 @@
 #
 # Quarter model (x, y >= 0; symmetry_x / symmetry_y hold x / y): forces and areas in history.csv
 # are a quarter of the full problem's; study.py multiplies by 4. Tip and substrate: E = 161 GPa,
-# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 6 layers. R = 27 nm.
+# nu = 0.23; coating: E_c = 8 GPa, nu_c = 0.4, h_c = 2 nm in 8 layers. R = 27 nm.
 # Tip top pushed 0.490 nm: 3 m/s, slowing to 0.46 m/s at 0.037 nm (first fitted load), then
 # v ~ travel^1.25 up to 10 m/s (KE/IE about 0.7 %: make_decks.py drive_times); bottom on rollers.
 begin sierra case1_h0.3
@@ -92,7 +92,7 @@ begin sierra case1_h0.3
       fine depth = 1.2 nm
       grading ratio = 1.4
       coating thickness = 2 nm
-      coating layers = 6
+      coating layers = 8
     end generated asperity
     begin parameters for block tip
       material = silicon
