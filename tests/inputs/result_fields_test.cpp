@@ -39,8 +39,9 @@ TEST(ResultFields, RowsAreWellFormed) {
     EXPECT_FALSE(row.definition.empty()) << row.name;
     EXPECT_EQ(row.name.find(' '), std::string_view::npos) << row.name;  // one deck word, a plain array name
   });
-  EXPECT_EQ(rows, 11);
-  EXPECT_TRUE(names.count("von_mises") && names.count("contact_pressure") && names.count("gap"));
+  EXPECT_EQ(rows, 12);
+  EXPECT_TRUE(names.count("von_mises") && names.count("contact_pressure") && names.count("gap") &&
+              names.count("rigid_body_force"));
 }
 
 TEST(ResultFields, SchemaChoicesAreTheTableNames) {
