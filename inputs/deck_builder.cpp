@@ -441,7 +441,7 @@ class Builder {
     return c == "y" ? Component::y : c == "z" ? Component::z : Component::x;
   }
 
-  // `begin rigid body NAME`: a node set or a block, the reference point, rotation fixed.
+  // `begin rigid body NAME`: a node set or a block, the reference point, the rotation (fixed, or free per axis).
   RigidBodySpec rigid_body(const Scope& c) {
     RigidBodySpec b;
     b.name = c.name;

@@ -69,7 +69,7 @@ struct Model {
   std::vector<PressureLoad> pressures;
   std::vector<NodalForceLoad> nodal_forces;
   SilentBoundaryNodes silent;
-  RigidBodies rigid_bodies;            // `begin rigid body`: nodes moving as one translating body
+  RigidBodies rigid_bodies;            // `begin rigid body`: nodes moving as one rigid body (translating, or turning)
   double mass_damping = 0.0;           // 1/s
   /// [node] kg: the mass the mass damping force -c m v acts with, the unscaled lumped mass when mass
   /// scaling is active and the region is damped (docs/theory.md 1.4.1); empty: Model::mass.
