@@ -80,10 +80,11 @@ int Contact::node_count(double a) const {
 }
 
 SphereSolution Contact::sphere(double a) {
+  const int nodes = node_count(a);  // before the grid: a layer too thin fails at once, not after building it
   ensure_grid(a);
   SphereSolution s;
   s.radius = a;
-  s.nodes = gw::gauss_legendre_rule(node_count(a), 0.0, a);
+  s.nodes = gw::gauss_legendre_rule(nodes, 0.0, a);
   const std::size_t n = s.nodes.x.size();
   std::vector<double> k, edge;
   operator_on(s.nodes, a, k, edge);
@@ -112,8 +113,9 @@ SphereSolution Contact::sphere(double a) {
 }
 
 double Contact::flat_punch_stiffness(double a) {
+  const int count = node_count(a);  // before the grid, as in sphere()
   ensure_grid(a);
-  const gw::QuadratureRule nodes = gw::gauss_legendre_rule(node_count(a), 0.0, a);
+  const gw::QuadratureRule nodes = gw::gauss_legendre_rule(count, 0.0, a);
   const std::size_t n = nodes.x.size();
   std::vector<double> k, edge;
   operator_on(nodes, a, k, edge);
