@@ -116,10 +116,11 @@ void DeckRun::build_parts() {
     agree_on_errors(error);
     try {
       part = parallel::partition_elements_ptscotch(whole ? &*whole : nullptr, ranks_);
-    } catch (const std::runtime_error& e) {  // thrown on every rank alike
-      throw SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) + " ranks: " + e.what() +
-                       "; run with fewer ranks (mpirun -np N)");
+    } catch (const std::runtime_error& e) {  // thrown on every rank alike: rank 0 says it, once
+      error = std::make_exception_ptr(SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) +
+                                                 " ranks: " + e.what() + "; run with fewer ranks (mpirun -np N)"));
     }
+    agree_on_errors(error);
   }
   if (root_ && !error) {
     double seconds = 0.0;
