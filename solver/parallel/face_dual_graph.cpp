@@ -77,25 +77,24 @@ int slab_rank(const std::vector<int>& vertex_offset, int e) {
 // Matches the faces received (records of kFaceRecord ints): the elements of one key are neighbours,
 // each pair sent both ways to the ranks holding them.
 Outbox matched_pairs(const std::vector<int>& faces, const std::vector<int>& vertex_offset, int ranks) {
-  const std::size_t n = faces.size() / kFaceRecord;
-  std::vector<std::size_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = i;
-  auto at = [&](std::size_t i) { return faces.begin() + static_cast<std::ptrdiff_t>(kFaceRecord * i); };
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::lexicographical_compare(at(a), at(a) + kFaceRecord, at(b), at(b) + kFaceRecord);
-  });
+  // Sorted as whole records (key, then element): contiguous 20-byte moves, no indirection.
+  std::vector<std::array<int, kFaceRecord>> record(faces.size() / kFaceRecord);
+  for (std::size_t i = 0; i < record.size(); ++i)
+    std::copy_n(faces.begin() + static_cast<std::ptrdiff_t>(kFaceRecord * i), kFaceRecord, record[i].begin());
+  std::sort(record.begin(), record.end());
   Outbox out(static_cast<std::size_t>(ranks));
   auto send = [&](int a, int b) {
     std::vector<int>& to = out[slab_rank(vertex_offset, a)];
     to.push_back(a);
     to.push_back(b);
   };
+  const std::size_t n = record.size();
   for (std::size_t i = 0; i < n;) {
     std::size_t j = i + 1;
-    while (j < n && std::equal(at(order[i]), at(order[i]) + 4, at(order[j]))) ++j;
+    while (j < n && std::equal(record[i].begin(), record[i].begin() + 4, record[j].begin())) ++j;
     for (std::size_t p = i; p < j; ++p)
       for (std::size_t q = p + 1; q < j; ++q) {
-        const int a = at(order[p])[4], b = at(order[q])[4];
+        const int a = record[p][4], b = record[q][4];
         if (a == b) continue;  // a face met twice in one (degenerate) element
         send(a, b);
         send(b, a);
