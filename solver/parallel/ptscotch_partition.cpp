@@ -68,9 +68,13 @@ std::vector<int> ptscotch_parts(const DualGraphRows& rows, int parts) {
   open_context(s);
   require_all(SCOTCH_dgraphInit(&s.graph, MPI_COMM_WORLD), "SCOTCH_dgraphInit");
   s.graph_up = true;
-  // PT-Scotch reads the arrays, does not write them (its prototypes are not const).
+  // PT-Scotch reads the arrays, does not write them (its prototypes are not const). A rank without
+  // elements or edges passes valid pointers all the same: a null part array made SCOTCH_dgraphPart fail
+  // on that rank alone, which then missed the others' collectives (MPI_ERR_TRUNCATE at 4 ranks with 3
+  // elements; test RanksWithoutElementsTakePart).
+  int none[1] = {0};
   int* vertices = const_cast<int*>(rows.offset.data());
-  int* edges = const_cast<int*>(rows.neighbour.data());
+  int* edges = rows.neighbour.empty() ? none : const_cast<int*>(rows.neighbour.data());
   const int edge_count = static_cast<int>(rows.neighbour.size());
   // Base 0; compact rows (vendloctab null); no vertex weights, labels or edge weights: every element
   // and every face weighs 1, as in the METIS path.
@@ -84,7 +88,7 @@ std::vector<int> ptscotch_parts(const DualGraphRows& rows, int parts) {
   s.strategy_up = true;
   require_all(SCOTCH_stratDgraphMapBuild(&s.strategy, SCOTCH_STRATDEFAULT, size(), parts, kPtScotchImbalance),
               "SCOTCH_stratDgraphMapBuild");
-  require_all(SCOTCH_dgraphPart(&s.bound, parts, &s.strategy, part.data()), "SCOTCH_dgraphPart");
+  require_all(SCOTCH_dgraphPart(&s.bound, parts, &s.strategy, part.empty() ? none : part.data()), "SCOTCH_dgraphPart");
   return part;
 }
 

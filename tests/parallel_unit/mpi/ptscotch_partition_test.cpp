@@ -9,7 +9,7 @@
 //     (partition_elements), the same parts on a second call; on a box of 16^3 and the generated
 //     asperity of tests/parallel/mpi_hertz.i;
 //   - rank 0's partition_elements_ptscotch is the gathered slab partition; more parts than elements
-//     throws on every rank.
+//     throws on every rank; a rank whose slab is empty (3 elements on 4 ranks) takes part.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -148,6 +148,20 @@ TEST(PtScotchPartition, OnePartIsAllZerosAndTooManyPartsThrowsOnEveryRank) {
   const std::vector<int> one = par::ptscotch_parts(rows, 1);
   EXPECT_TRUE(std::all_of(one.begin(), one.end(), [](int p) { return p == 0; }));
   EXPECT_THROW(par::ptscotch_parts(rows, 9), std::runtime_error);
+}
+
+TEST(PtScotchPartition, RanksWithoutElementsTakePart) {
+  // 3 elements in a row: at 4 ranks the last slab is empty; its rank still joins every collective.
+  mesh::BoxSpec spec;
+  spec.intervals = {3, 1, 1};
+  const mesh::Mesh row = mesh::generate_box(spec);
+  const par::ElementSlab slab = slab_of(row);
+  const par::DualGraphRows rows = par::face_dual_graph(slab);
+  const std::vector<int> part = par::gather_slab_parts(slab, par::ptscotch_parts(rows, 2));
+  if (par::rank() != 0) return;
+  ASSERT_EQ(part.size(), 3u);
+  EXPECT_NE(part[0], part[2]) << "the two ends in different parts";
+  for (int p : part) EXPECT_TRUE(p == 0 || p == 1);
 }
 
 }  // namespace
