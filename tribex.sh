@@ -16,7 +16,7 @@ ROOT=$PWD
 # Debian 12 packages (names and traps: docs/dependencies.md).
 PACKAGES=(
   cmake make g++ git
-  libeigen3-dev libmetis-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
+  libeigen3-dev libmetis-dev libptscotch-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
   libgmsh-dev gmsh libcgal-dev libgtest-dev libexodusii-dev libnetcdf-dev
   python3 python3-matplotlib python3-numpy python3-scipy python3-h5py python3-netcdf4
   paraview python3-paraview xvfb xauth

@@ -641,7 +641,9 @@ class Builder {
         r.mass_scaling = mass_scaling(c, r.guards);
       } else if (t == "decomposition") {
         r.decomposition.where = c.where;
-        if (word(c, "method") == "rcb") r.decomposition.method = DecompositionSpec::Method::rcb;
+        const std::string method = word(c, "method");
+        if (method == "rcb") r.decomposition.method = DecompositionSpec::Method::rcb;
+        if (method == "ptscotch") r.decomposition.method = DecompositionSpec::Method::ptscotch;
         if (auto scale = get(c, "coordinate scale"); scale && scale->numbers.size() == 3)
           r.decomposition.coordinate_scale = std::array<double, 3>{scale->numbers[0], scale->numbers[1], scale->numbers[2]};
       }

@@ -321,9 +321,11 @@ std::vector<BlockSchema> build_table() {
                false, "boundary conditions and output"});
 
   t.push_back({"decomposition", NameRule::none, {}, {}, true,
-               {choice("method", ValueKind::enumeration, {"metis", "rcb"}, false, "metis",
-                       "how a parallel run splits the elements: metis (graph partition, fewest shared nodes) or rcb "
-                       "(recursive coordinate bisection of the element centroids: planar cuts)"),
+               {choice("method", ValueKind::enumeration, {"metis", "rcb", "ptscotch"}, false, "metis",
+                       "how a parallel run splits the elements: metis (graph partition on rank 0, fewest shared "
+                       "nodes; the default at every size), ptscotch (the same graph partitioned by all the ranks "
+                       "together with PT-Scotch; the mesh is still read on rank 0) or rcb (recursive coordinate "
+                       "bisection of the element centroids: planar cuts)"),
                 reals("coordinate scale", dim::none, 3, positive(), false, "",
                       "sx sy sz: coordinates multiplied by these when the sides of a box are compared (rcb's volume, "
                       "and the contact patches with either method); a small factor on the direction a contact zone "

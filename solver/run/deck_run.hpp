@@ -75,7 +75,7 @@ class DeckRun {
   void preflight();
   void build_parts();  // parallel: the whole mesh on rank 0, partitioned; every rank builds its part
   void report_partition(const mesh::Mesh& whole, const std::vector<int>& part, const parallel::NodeHolders& holders,
-                        const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel);
+                        const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel, double seconds);
   void report_mesh(const Model& model);
   // ---- stage 2: the integrator and the restart state ----
   void start_from_restart();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // run_deck, stages 1-3 (deck_run.hpp): pre-flight, the rank's part and the restart state, the outputs.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -16,6 +17,7 @@
 #include "solver/errors.hpp"
 #include "solver/run/mpirun_grace.hpp"
 #include "solver/output/summary_writer.hpp"
+#include "solver/parallel/element_slabs.hpp"
 #include "solver/parallel/partition.hpp"
 #include "solver/restart/isolated_read.hpp"
 #include "solver/restart/restart_checks.hpp"
@@ -78,12 +80,15 @@ void DeckRun::preflight() {
 }
 
 void DeckRun::build_parts() {
-  // Rank 0 reads or generates the whole mesh, checks and partitions it, and sends every rank its part;
-  // it keeps the whole mesh only until results.h5 holds it (open_results).
+  // Rank 0 reads or generates the whole mesh, checks and partitions it (with `method = ptscotch` all
+  // the ranks partition it together), and sends every rank its part; it keeps the whole mesh only
+  // until results.h5 holds it (open_results).
   std::optional<mesh::Mesh> whole;
   std::vector<int> part;
   parallel::NodeHolders holders;
   ContactFaces contact;
+  std::optional<ContactTravel> travel;
+  parallel::AxisScale scale = parallel::kUnitScale;
   std::exception_ptr error;
   if (root_) {
     // Arrays of 1 MB and more mapped and unmapped one by one, so that each one freed goes back to the
@@ -96,12 +101,34 @@ void DeckRun::build_parts() {
     try {
       whole.emplace(build_mesh(deck_));
       if (region_.contact) contact = contact_faces(*whole, *region_.contact);
-      const std::optional<ContactTravel> travel = contact_travel(deck_, *whole);
-      const parallel::AxisScale scale = decomposition_scale(region_.decomposition, travel, ranks_);
+      travel = contact_travel(deck_, *whole);
+      scale = decomposition_scale(region_.decomposition, travel, ranks_);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  // The volume's partition is timed (the log's partition line): rank 0's wall time from the first
+  // slab sent to the last part gathered with ptscotch, of the METIS or bisection call otherwise.
+  const auto method = region_.decomposition.method;
+  const auto start = std::chrono::steady_clock::now();
+  if (method == inputs::DecompositionSpec::Method::ptscotch) {
+    // Collective: every rank must know rank 0's mesh is there before the slabs are sent.
+    agree_on_errors(error);
+    try {
+      part = parallel::partition_elements_ptscotch(whole ? &*whole : nullptr, ranks_);
+    } catch (const std::runtime_error& e) {  // thrown on every rank alike: rank 0 says it, once
+      error = std::make_exception_ptr(SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) +
+                                                 " ranks: " + e.what() + "; run with fewer ranks (mpirun -np N)"));
+    }
+    agree_on_errors(error);
+  }
+  if (root_ && !error) {
+    double seconds = 0.0;
+    try {
       try {
-        part = region_.decomposition.method == inputs::DecompositionSpec::Method::rcb
-                   ? parallel::partition_elements_rcb(*whole, ranks_, scale)
-                   : parallel::partition_elements(*whole, ranks_);
+        if (method == inputs::DecompositionSpec::Method::rcb) part = parallel::partition_elements_rcb(*whole, ranks_, scale);
+        if (method == inputs::DecompositionSpec::Method::metis) part = parallel::partition_elements(*whole, ranks_);
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (region_.contact) {
           // The patches go to the surfaces the run enforces as slaves (build_contact may swap a pair).
           const inputs::ContactSpec enforced = as_enforced(*region_.contact, contact, block_wave_moduli(deck_, *whole));
@@ -113,7 +140,7 @@ void DeckRun::build_parts() {
       }
       holders = parallel::node_holders(*whole, part);
       mesh_hash_ = mesh_sha256(*whole);
-      report_partition(*whole, part, holders, scale, travel);
+      report_partition(*whole, part, holders, scale, travel, seconds);
     } catch (...) {
       error = std::current_exception();
     }
@@ -137,7 +164,7 @@ void DeckRun::build_parts() {
 
 void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& part,
                                const parallel::NodeHolders& holders, const parallel::AxisScale& scale,
-                               const std::optional<ContactTravel>& travel) {
+                               const std::optional<ContactTravel>& travel, double seconds) {
   int shared = 0;
   for (int n = 0; n < whole.node_count(); ++n) shared += holders.count(n) > 1;
   std::vector<int> rank_elements(static_cast<std::size_t>(ranks_), 0);
@@ -155,6 +182,8 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   std::string method;
   if (decomposition.method == inputs::DecompositionSpec::Method::rcb) {
     method = "recursive coordinate bisection of the element centroids" + sides;
+  } else if (decomposition.method == inputs::DecompositionSpec::Method::ptscotch) {
+    method = "PT-Scotch k-way partition of the element graph by all the ranks (the mesh read on rank 0)";
   } else {
     const int cluster = parallel::partition_cluster_size(whole.element_count(), ranks_);
     method = "METIS k-way partition of the " +
@@ -164,10 +193,10 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   std::string patches;
   if (region_.contact)
     patches = ", contact surfaces in one compact patch per rank" +
-              (decomposition.method == inputs::DecompositionSpec::Method::metis ? sides : std::string());
-  log_.say(format("parallel: %d ranks, %s%s; %d-%d elements per rank; %d nodes on partition boundaries; every rank "
-                  "builds only its part",
-                  ranks_, method.c_str(), patches.c_str(), *fewest, *most, shared));
+              (decomposition.method != inputs::DecompositionSpec::Method::rcb ? sides : std::string());
+  log_.say(format("parallel: %d ranks, %s%s; %d-%d elements per rank; %d nodes on partition boundaries; partitioned "
+                  "in %.3g s; every rank builds only its part",
+                  ranks_, method.c_str(), patches.c_str(), *fewest, *most, shared, seconds));
 }
 
 void DeckRun::report_mesh(const Model& model) {

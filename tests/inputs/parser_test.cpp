@@ -308,11 +308,16 @@ TEST(Parser, Decomposition) {
   ASSERT_TRUE(dec.coordinate_scale.has_value());
   EXPECT_EQ(*dec.coordinate_scale, (std::array<double, 3>{1, 0.01, 1}));
   EXPECT_EQ(dec.where.line, 34);
+  // PT-Scotch: the partition by all the ranks (solver/parallel/ptscotch_partition.hpp).
+  const Deck pt = parse_deck_string(deck_with_region("      begin decomposition\n        method = ptscotch\n      end\n"),
+                                    "pt.i");
+  EXPECT_EQ(pt.procedure.region.decomposition.method, DecompositionSpec::Method::ptscotch);
   // A zero scale would put every cut on one axis; a method not in the list is named with the choices.
   auto ds = errors_of(deck_with_region("      begin decomposition\n        coordinate scale = 1 0 1\n      end\n"));
   EXPECT_TRUE(has_error(ds, 35, "coordinate scale")) << all(ds);
   ds = errors_of(deck_with_region("      begin decomposition\n        method = parmetis\n      end\n"));
   EXPECT_TRUE(has_error(ds, 35, "metis")) << all(ds);
+  EXPECT_TRUE(has_error(ds, 35, "ptscotch")) << all(ds);
 }
 
 TEST(Parser, SurfaceLayerBlock) {

@@ -41,7 +41,8 @@
       global numbers first (a file of an earlier tribex, which another rank count cannot resume).
   agree ... --decomposition "rcb [SX SY SZ]": both runs of a deck given a `begin decomposition` block (written
       to OUT/deck.i; without SX SY SZ the run chooses the scale); the parallel run's log must name the coordinate
-      bisection, and with --expect-partition TEXT its partition line must hold TEXT.
+      bisection, and with --expect-partition TEXT its partition line must hold TEXT. --decomposition ptscotch:
+      the same, the log naming PT-Scotch.
 """
 import argparse
 import csv
@@ -181,6 +182,8 @@ def agree(a):
         print(partition)
         if "recursive coordinate bisection" not in partition and a.decomposition.startswith("rcb"):
             sys.exit("FAIL: the run did not partition by coordinate bisection")
+        if "PT-Scotch" not in partition and a.decomposition.startswith("ptscotch"):
+            sys.exit("FAIL: the run did not partition with PT-Scotch")
         if a.expect_partition not in partition:
             sys.exit(f"FAIL: the partition line does not say '{a.expect_partition}'")
     h1, r1 = read(os.path.join(serial, "history.csv"))
