@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Pull-off of a mass-scaled DMT run against the same deck unscaled (issue 24: within 2 %).
 
-Pull-off = the most negative contact normal force after the deepest tip position (as compare.py).
+Pull-off = the most negative contact normal force after the deepest tip position (as compare.py), of the
+full problem (a quarter model's, read from its log.txt, times 4).
 Usage: compare_pull_off.py SCALED_OUTPUT UNSCALED_OUTPUT [--tolerance 0.02]
 """
 import argparse
@@ -9,12 +10,12 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import deepest_index, read_history  # noqa: E402
+from history_checks import deepest_index, read_full_history  # noqa: E402
 from cli_errors import guarded  # noqa: E402
 
 
 def pull_off(output):
-    rows = read_history(output)
+    rows = read_full_history(output)  # a quarter model's force times 4: either run may be one
     return min(r["contact_normal_force"] for r in rows[deepest_index(rows):])
 
 
