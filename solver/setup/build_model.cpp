@@ -328,7 +328,11 @@ struct Assembly {
   const mesh::Mesh& m;
   SetSizes sizes;
   std::vector<std::string> block_names;
-  std::map<int, std::string> owner;  // constrained dof -> the deck location that constrained it
+  struct DofOwner {
+    std::string where;  // the deck location that constrained the dof
+    Constraints::Kind kind;
+  };
+  std::map<int, DofOwner> owner;  // constrained dof -> its constraint
   SilentSums silent;
 
   // Node numbers in messages are the whole mesh's.
@@ -408,12 +412,17 @@ struct Assembly {
       if (!(model.mass[n] > 0.0)) throw orphan_node_error(model.domain.global_node[n]);
   }
 
-  // Kinematic constraints; a dof may be constrained once only.
+  // Kinematic constraints; a dof may be constrained once only, except that a fixed dof may be fixed
+  // again: two zero displacements agree, and node sets that meet on a line need it (a quarter model's
+  // symmetry plane x = 0 crosses the fixed bottom and the tip top held in x and y; verification/hertz).
+  // Any other repeat (a driven dof fixed, or driven twice) is ambiguous and refused.
   void constrain(int dof, Constraints::Kind kind, int function, double scale, const inputs::SourceLocation& where) {
-    auto [it, inserted] = owner.emplace(dof, where.str());
+    auto [it, inserted] = owner.emplace(dof, DofOwner{where.str(), kind});
+    if (!inserted && kind == Constraints::Kind::fixed && it->second.kind == Constraints::Kind::fixed) return;
     if (!inserted)
       throw SetupError(where.str() + ": error: node " + number(dof / 3) + " component " + "xyz"[dof % 3] +
-                       " is already constrained at " + it->second + "; constrain each component once");
+                       " is already constrained at " + it->second.where +
+                       "; constrain each component once (only a fixed one may be fixed again)");
     model.constraints.dof.push_back(dof);
     model.constraints.kind.push_back(kind);
     model.constraints.function.push_back(function);
@@ -472,7 +481,7 @@ struct Assembly {
         const int dof = 3 * n + static_cast<int>(p.component);
         if (auto it = owner.find(dof); it != owner.end())
           throw SetupError(p.where.str() + ": error: 'begin prescribed force' loads node " + number(n) +
-                           " component " + "xyz"[dof % 3] + ", which is constrained at " + it->second +
+                           " component " + "xyz"[dof % 3] + ", which is constrained at " + it->second.where +
                            "; load a free component or remove the constraint");
         // On the owner's copy only: shared nodes' partial forces are summed over the ranks.
         if (model.domain.owned[n] > 0.0) load.dof.push_back(dof);

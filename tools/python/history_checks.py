@@ -6,7 +6,7 @@ quasi-static (kinetic / internal energy) figure, the command line, the plot set-
 import argparse
 import os
 
-from cli_errors import InputError, read_csv_rows
+from cli_errors import InputError, read_csv_rows, require_file
 
 
 def read_history(path):
@@ -19,6 +19,57 @@ def read_history(path):
         return [{k: float(v) for k, v in r.items()} for r in rows]
     except (TypeError, ValueError) as e:  # a cut row (None) or a word where a number belongs
         raise InputError(f"{path}: not a complete tribex history.csv ({e})") from None
+
+
+# History columns whose values add up over the nodes (units as history_columns.csv writes them): on a
+# quarter model they are a quarter of the full problem's.
+EXTENSIVE_UNITS = ("N", "m^2", "J", "W", "kg m/s")
+
+
+def output_folder(path):
+    """The output folder of `path` (a history.csv or the folder itself)."""
+    return path if os.path.isdir(path) or not path.endswith(".csv") else os.path.dirname(path) or "."
+
+
+def model_fraction(path):
+    """The part of the full problem a run models: 0.25 for a generated asperity with `symmetry =
+    quarter` (mesh/asperity.hpp: x, y >= 0 only), else 1. Read from the resolved deck in the run's
+    log.txt (every key written, defaults included), so a compare script needs no option for it."""
+    log = os.path.join(output_folder(path), "log.txt")
+    require_file(log, "the run's log.txt (its resolved deck says whether the model is a quarter)",
+                 "give the output folder of a finished run")
+    inside = False
+    with open(log) as f:
+        for line in f:
+            words = line.split()
+            if words[:3] == ["begin", "generated", "asperity"]:
+                inside = True
+            elif words[:3] == ["end", "generated", "asperity"]:
+                inside = False
+            elif inside and words == ["symmetry", "=", "quarter"]:
+                return 0.25
+    return 1.0
+
+
+def read_full_history(path):
+    """read_history(path) as the full problem's: on a quarter model (model_fraction) the forces, areas,
+    energies, powers and momenta (EXTENSIVE_UNITS, from history_columns.csv) times 4 and
+    contact_radius_area, sqrt(area/pi), times 2. Lengths, displacements, the other contact radii (they
+    are distances from the axis) and energy_error (a ratio) are the same as the full model's. A lateral
+    component (x, y) of a quarter's force is its own, not a quarter of the full's (zero by symmetry)."""
+    rows = read_history(path)
+    fraction = model_fraction(path)
+    if fraction == 1.0:
+        return rows
+    units = os.path.join(output_folder(path), "history_columns.csv")
+    scaled = [r["column"] for r in read_csv_rows(units, "the run's history_columns.csv") if r["unit"] in EXTENSIVE_UNITS]
+    for row in rows:
+        for name in scaled:
+            if name in row:
+                row[name] /= fraction
+        if "contact_radius_area" in row:
+            row["contact_radius_area"] /= fraction ** 0.5
+    return rows
 
 
 def history_parser(doc, plot_help, positional="history"):

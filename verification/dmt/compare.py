@@ -29,8 +29,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 from cli_errors import guarded  # noqa: E402
 from contact_theory import (RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius,  # noqa: E402
                             radius_column)
-from history_checks import (deepest_index, finish_axes, max_and_mean, pyplot, radius_errors,  # noqa: E402
-                            read_history, save_figure)
+from history_checks import (deepest_index, finish_axes, max_and_mean, model_fraction, pyplot,  # noqa: E402
+                            radius_errors, read_full_history, save_figure)
 
 E, NU, R = 161e9, 0.23, 27e-9
 ESTAR = effective_modulus(E, NU)
@@ -57,7 +57,7 @@ def plot(a, rows, column, W, Pc, pull_off, h):
     ax.plot([x * 1e9 for x in gh], [dmt_radius(x, R, 0.0, ESTAR) * 1e9 for x in gh], "k--", label="Hertz (W = 0)")
     runs = [(f"W = {W:.2f} J/m$^2$", load, unload, "o", "C0")]
     if a.hertz_output:
-        runs.append(("W = 0",) + branches(read_history(a.hertz_output), column) + ("s", "C1"))
+        runs.append(("W = 0",) + branches(read_full_history(a.hertz_output), column) + ("s", "C1"))
     for name, up, down, marker, colour in runs:
         for pts, fill, what in ((up, colour, "loading"), (down, "none", "withdrawal")):
             ax.plot([x for x, _ in pts], [y for _, y in pts], marker, ms=3.5, mfc=fill, mec=colour,
@@ -87,7 +87,7 @@ def main():
     p.add_argument("--hertz-output", help="output folder of the W = 0 run (verification/hertz) to draw beside")
     a = p.parse_args()
     W = a.work_of_adhesion
-    rows = read_history(a.output)
+    rows = read_full_history(a.output)  # a quarter model's forces and energies times 4 (its log.txt says which it is)
     h = a.element_size * 1e-9
     # Loading branch: up to the deepest tip position.
     deepest = deepest_index(rows)
@@ -105,6 +105,8 @@ def main():
     ep = abs(pull_off - Pc) / abs(Pc) if W > 0 else 0.0
     energy_error = max(abs(r["energy_error"]) for r in rows)
     ok = len(used) >= 5 and max(ea) <= a.tolerance and ep <= a.tolerance and energy_error <= a.energy_tolerance
+    if model_fraction(a.output) != 1.0:
+        print("quarter model (symmetry = quarter): forces, areas and energies times 4")
     print(f"W = {W} J/m^2, 2 pi W R = {-Pc * 1e9:.3f} nN; {len(used)} loads from {P[0] * 1e9:.1f} to {P[-1] * 1e9:.1f} nN")
     max_ea, mean_ea = max_and_mean(ea)
     print(f"contact radius ({column}) vs DMT at P + 2 pi W R: max error {max_ea:.2%} at {P[worst] * 1e9:.1f} nN "

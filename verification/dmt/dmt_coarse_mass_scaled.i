@@ -9,6 +9,10 @@
 #
 # Run:    build/bin/tribex run verification/dmt/dmt_coarse_mass_scaled.i -o dmt_coarse_mass_scaled_output
 # Check:  /usr/bin/python3 verification/dmt/compare.py dmt_coarse_mass_scaled_output --element-size 0.8
+# Quarter model (`symmetry = quarter`: x, y >= 0, the planes x = 0 and y = 0 held in x resp. y) with
+# the mesh resolution, boundary conditions and driving of the full model it replaced (a quarter of its
+# elements): forces, areas and energies in history.csv are a quarter of the full problem's; the compare
+# scripts read that from the run's log.txt and multiply by 4 (tools/python/history_checks.py).
 #
 # Same mesh, material and driving as verification/hertz/hertz_coarse.i (see its sketch); the tip top
 # is pushed down 1.1 nm, held 10 ps, then pulled up at 4 m/s until the apex is 0.8 nm above contact.
@@ -87,6 +91,7 @@ begin sierra dmt_coarse_mass_scaled
 
   begin finite element model asperity
     begin generated asperity
+      symmetry = quarter
       radius = 27 nm
       tip width = 32 nm
       tip height = 26 nm
@@ -127,6 +132,17 @@ begin sierra dmt_coarse_mass_scaled
       begin fixed displacement
         node set = tip_top
         components = x y
+      end fixed displacement
+      # Symmetry planes of the quarter model. Where they meet the fixed bottom and the tip top (held in x
+      # and y) a component is fixed twice, which a fixed displacement allows: on its quarter these are
+      # exactly the full model's conditions.
+      begin fixed displacement
+        node set = symmetry_x
+        components = x
+      end fixed displacement
+      begin fixed displacement
+        node set = symmetry_y
+        components = y
       end fixed displacement
       begin prescribed displacement
         node set = tip_top

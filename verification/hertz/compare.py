@@ -31,8 +31,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 from cli_errors import guarded  # noqa: E402
 from contact_theory import (RADIUS_ESTIMATORS, dmt_radius, effective_modulus, print_unchecked_radius,  # noqa: E402
                             radius_column)
-from history_checks import (max_and_mean, max_kinetic_over_stored, pyplot, radius_errors,  # noqa: E402
-                            read_history, relative_errors, save_figure)
+from history_checks import (max_and_mean, max_kinetic_over_stored, model_fraction, pyplot,  # noqa: E402
+                            radius_errors, read_full_history, relative_errors, save_figure)
 
 
 
@@ -52,7 +52,7 @@ def main():
     p.add_argument("--plot", help="PNG to write")
     a = p.parse_args()
     R, ESTAR = a.tip_radius * 1e-9, effective_modulus(a.youngs_modulus * 1e9, a.poissons_ratio)
-    rows = read_history(a.output)
+    rows = read_full_history(a.output)  # a quarter model's forces times 4 (its log.txt says which it is)
     h = a.element_size * 1e-9
     min_radius = (a.min_radius if a.min_radius is not None else 5 * a.element_size) * 1e-9
     column = radius_column(a.radius)
@@ -77,6 +77,8 @@ def main():
     ed = relative_errors(dFE, dH)
     ke = max_kinetic_over_stored(used)
     ok = max(ea) <= a.tolerance and max(ed) <= a.tolerance and ke < 0.02
+    if model_fraction(a.output) != 1.0:
+        print("quarter model (symmetry = quarter): forces, areas and energies times 4")
     print(f"E* = {ESTAR / 1e9:.2f} GPa, R = {R * 1e9:g} nm; {len(used)} loads from {P[0] * 1e9:.1f} to {P[-1] * 1e9:.1f} nN "
           f"(a from {aFE[0] * 1e9:.2f} to {aFE[-1] * 1e9:.2f} nm, a/R up to {aFE[-1] / R:.3f})")
     max_ea, mean_ea = max_and_mean(ea)

@@ -11,7 +11,9 @@ within 12 nm of the axis, those outside the contact (zero force) included: nodes
 contact carry force through N_I, and the ones beyond carry none, so both bound a. The nodal forces are
 the contact_traction field times each node's area int N_I dA (the code's traction is force over
 tributary area). Printed against a_H(P) with P the history's contact_normal_force at that time, beside
-the history's contact_radius_pressure_fit. verification/hertz/README.md quotes its output.
+the history's contact_radius_pressure_fit. On a quarter model (symmetry = quarter) the faces and forces
+are the quarter's, which the fit of a and p0 takes as they are, and P the full problem's (times 4).
+verification/hertz/README.md quotes its output.
 
     /usr/bin/python3 verification/hertz/consistent_fit.py OUT
 """
@@ -25,7 +27,7 @@ import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
 from contact_theory import dmt_radius, effective_modulus  # noqa: E402
-from history_checks import read_history  # noqa: E402
+from history_checks import read_full_history  # noqa: E402
 from results_h5 import si  # noqa: E402
 
 E, NU, R = 161e9, 0.23, 27e-9
@@ -49,7 +51,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("output", help="the run's output folder (results.h5 with displacement and contact_traction)")
     a = ap.parse_args()
-    rows = read_history(a.output)
+    rows = read_full_history(a.output)  # P of the full problem (a quarter model's times 4)
     with h5py.File(pathlib.Path(a.output) / "results.h5", "r") as f:
         X = si(f["mesh/coordinates"])  # m, whatever the file's length unit
         faces = tip_surface_faces(f)

@@ -11,7 +11,8 @@ Checks: (1) the Hertz peak pressure p0 = (6 P E*^2 / (pi^3 R^2))^(1/3) at the co
 first history row with plastic dissipation, and of the row before it, within 3 % of c Y; (2) the
 element that has yielded most at the first field output with any plastic strain lies, by its centroid,
 within half an element size of the depth z_y (a = pi p0 R / (2 E*) at c Y) below the reference surface
-of its body (the 0.8 nm mesh resolves the depth no finer).
+of its body (the 0.8 nm mesh resolves the depth no finer). On a quarter model (symmetry = quarter, read
+from the run's log.txt) P is the history's force times 4; the element on the axis is one of the quarter's.
 
 usage: compare_hertz_yield.py OUTPUT [--element-size 0.8] [--plot OUT.png]
 """
@@ -20,7 +21,8 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import finish_axes, history_parser, pyplot, read_history, report_failures, save_figure  # noqa: E402
+from history_checks import (finish_axes, history_parser, pyplot, read_full_history, report_failures,  # noqa: E402
+                            save_figure)
 from results_h5 import si  # noqa: E402
 from cli_errors import guarded  # noqa: E402
 
@@ -54,7 +56,7 @@ def main():
           f"{z_over_a * a_y * 1e9:.3f} nm (a = {a_y * 1e9:.3f} nm)")
     failures = []
 
-    rows = read_history(a.output)
+    rows = read_full_history(a.output)  # a quarter model's force times 4 (its log.txt says which it is)
     first = next((i for i, r in enumerate(rows) if r["plastic_dissipation"] > 0.0), None)
     if first is None or first == 0:
         return report_failures(["no row with plastic dissipation (or plastic from the start)"], verdict=True)

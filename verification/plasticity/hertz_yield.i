@@ -4,6 +4,10 @@
 #
 # Run:    build/bin/tribex run verification/plasticity/hertz_yield.i -o hertz_yield_output
 # Check:  /usr/bin/python3 verification/plasticity/compare_hertz_yield.py hertz_yield_output
+# Quarter model (`symmetry = quarter`: x, y >= 0, the planes x = 0 and y = 0 held in x resp. y) with
+# the mesh resolution, boundary conditions and driving of the full model it replaced (a quarter of its
+# elements): forces and energies in history.csv are a quarter of the full problem's; the compare
+# script reads that from the run's log.txt and multiplies by 4 (tools/python/history_checks.py).
 #
 # Expected (von Mises on the axis of the Hertz field, nu = 0.23): first yield when the Hertz peak
 # pressure p0 = (6 P E*^2 / (pi^3 R^2))^(1/3) reaches 1.532 Y, at the depth 0.458 a below the surface,
@@ -70,6 +74,7 @@ begin sierra hertz_yield
 
   begin finite element model asperity
     begin generated asperity
+      symmetry = quarter
       radius = 27 nm
       tip width = 32 nm
       tip height = 26 nm
@@ -107,6 +112,17 @@ begin sierra hertz_yield
       begin fixed displacement
         node set = tip_top
         components = x y
+      end fixed displacement
+      # Symmetry planes of the quarter model. Where they meet the fixed bottom and the tip top (held in x
+      # and y) a component is fixed twice, which a fixed displacement allows: on its quarter these are
+      # exactly the full model's conditions.
+      begin fixed displacement
+        node set = symmetry_x
+        components = x
+      end fixed displacement
+      begin fixed displacement
+        node set = symmetry_y
+        components = y
       end fixed displacement
       begin prescribed displacement
         node set = tip_top
