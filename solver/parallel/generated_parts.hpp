@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// The distributed set-up of a generated mesh (`begin decomposition` / `set-up = distributed`, issue 57
+// scope 2; solver/README.md "Parallel runs"): no rank ever holds the whole mesh.
+//
+//   1. every rank builds the connectivity of its slab of elements from the plan (mesh/generated_plan.hpp;
+//      slab_offsets' even split): 32 B per element of the slab;
+//   2. the ranks partition the slabs' face dual graph together (face_dual_graph.hpp, ptscotch_parts);
+//   3. one all-to-all sends each element number to its part's rank;
+//   4. each rank builds its part's mesh from the plan (the coordinates with the generator's arithmetic:
+//      the serial generator's values bit for bit);
+//   5. the holders of each node: every rank sends its nodes to their home ranks (the even split of the
+//      node numbers), each home collects the ranks holding each of its nodes (ascending) and sends every
+//      holder its nodes' lists back (two all-to-alls).
+// The part is distribute_mesh's for the same partition (the same local numbering, sets, holders and
+// whole-mesh sizes). Every node of a generated mesh is in an element (the grids' nodes are their
+// elements' corners), so node_holders' check has nothing to find here.
+#pragma once
+
+#include "mesh/generated_plan.hpp"
+#include "solver/parallel/mesh_part.hpp"
+
+namespace tribex::solver::parallel {
+
+struct GeneratedPart {
+  MeshPart part;
+  long long shared_nodes = 0;  // nodes held by more than one rank, over all the ranks
+};
+
+/// Collective over MPI_COMM_WORLD: this rank's part of the plan's mesh under the PT-Scotch partition
+/// of its slabs. Throws std::runtime_error on every rank alike when the partition cannot be made.
+GeneratedPart generated_part(const mesh::GeneratedPlan& plan);
+
+}  // namespace tribex::solver::parallel
