@@ -105,6 +105,10 @@ std::vector<int> element_nodes(const GeneratedPlan& plan, int first, int count) 
   return nodes;
 }
 
+int grid_of_node(const GeneratedPlan& plan, int node) {
+  return static_cast<int>(&grid_of(plan, node, [](const GridPiece& p) { return p.node_offset; }) - plan.grids.data());
+}
+
 std::vector<double> node_coordinates(const GeneratedPlan& plan, int first, int count) {
   std::vector<double> x(3 * static_cast<std::size_t>(count));
   for (int n = 0; n < count; ++n) node_xyz(plan, first + n, &x[3 * static_cast<std::size_t>(n)]);

@@ -57,6 +57,9 @@ Mesh generate_elements(const GeneratedPlan& plan, const std::vector<int>& elemen
 /// The global node numbers of `elements`' 8 corners, [element][8] (the input of the face dual graph).
 std::vector<int> element_nodes(const GeneratedPlan& plan, int first, int count);
 
+/// The grid (index into plan.grids) holding global node `node`.
+int grid_of_node(const GeneratedPlan& plan, int node);
+
 /// The coordinates of the nodes [first, first + count), [node][3] (a streamed pass over the mesh).
 std::vector<double> node_coordinates(const GeneratedPlan& plan, int first, int count);
 

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "solver/parallel/communicator.hpp"
+#include "solver/parallel/contact_partition.hpp"
 #include "solver/parallel/element_slab.hpp"
 #include "solver/parallel/face_dual_graph.hpp"
 #include "solver/parallel/ptscotch_partition.hpp"
@@ -38,26 +40,16 @@ std::vector<int> exchange(const std::vector<int>& count, const std::vector<int>&
   return recv;
 }
 
-// Steps 1-3: this rank's elements (global numbers, ascending) under the partition of the slabs.
-std::vector<int> partitioned_elements(const mesh::GeneratedPlan& plan) {
+// Step 3: this rank's elements (global numbers, ascending) under the partition of the slabs.
+std::vector<int> partitioned_elements(const mesh::GeneratedPlan& plan, std::vector<int> part) {
   const int ranks = size(), me = rank();
-  const std::vector<int> offset = slab_offsets(plan.element_count, ranks);
-  std::vector<int> part;
-  {
-    ElementSlab slab;
-    slab.first = offset[me];
-    slab.count = offset[me + 1] - offset[me];
-    slab.nodes = mesh::element_nodes(plan, slab.first, slab.count);
-    const DualGraphRows rows = face_dual_graph(slab);
-    slab.nodes = {};
-    part = ptscotch_parts(rows, ranks);
-  }
+  const int first = slab_offsets(plan.element_count, ranks)[me];
   std::vector<int> count(static_cast<std::size_t>(ranks), 0);
   for (int p : part) ++count[p];
   std::vector<int> at(static_cast<std::size_t>(ranks) + 1, 0);
   for (int r = 0; r < ranks; ++r) at[r + 1] = at[r] + count[r];
   std::vector<int> data(part.size());
-  for (std::size_t e = 0; e < part.size(); ++e) data[static_cast<std::size_t>(at[part[e]]++)] = offset[me] + static_cast<int>(e);
+  for (std::size_t e = 0; e < part.size(); ++e) data[static_cast<std::size_t>(at[part[e]]++)] = first + static_cast<int>(e);
   part = {};
   std::vector<int> received;
   std::vector<int> mine = exchange(count, data, received);
@@ -113,10 +105,45 @@ long long fill_holders(const std::vector<int>& global_node, int node_count, Mesh
 
 }  // namespace
 
-GeneratedPart generated_part(const mesh::GeneratedPlan& plan) {
+std::vector<int> generated_slab_parts(const mesh::GeneratedPlan& plan) {
+  const int ranks = size(), me = rank();
+  const std::vector<int> offset = slab_offsets(plan.element_count, ranks);
+  ElementSlab slab;
+  slab.first = offset[me];
+  slab.count = offset[me + 1] - offset[me];
+  slab.nodes = mesh::element_nodes(plan, slab.first, slab.count);
+  const DualGraphRows rows = face_dual_graph(slab);
+  slab.nodes = {};
+  return ptscotch_parts(rows, ranks);
+}
+
+void place_generated_patches(const mesh::GeneratedPlan& plan, const inputs::ContactSpec* enforced,
+                             std::vector<int>& slab_part, const AxisScale& scale) {
+  const int ranks = size();
+  if (!enforced || ranks <= 1) return;
+  std::vector<int> surface;  // the contact surfaces' elements, ascending
+  for (const auto& s : enforced->surfaces)
+    for (const auto& set : s.side_sets)
+      if (const auto it = plan.side_sets.find(set); it != plan.side_sets.end())
+        for (const auto& side : it->second) surface.push_back(side.element);
+  std::sort(surface.begin(), surface.end());
+  surface.erase(std::unique(surface.begin(), surface.end()), surface.end());
+  const int first = slab_offsets(plan.element_count, ranks)[rank()];
+  const int end = first + static_cast<int>(slab_part.size());
+  std::vector<int> part(surface.size(), -1);  // each from the rank whose slab holds it
+  for (std::size_t k = 0; k < surface.size(); ++k)
+    if (surface[k] >= first && surface[k] < end) part[k] = slab_part[static_cast<std::size_t>(surface[k] - first)];
+  MPI_Allreduce(MPI_IN_PLACE, part.data(), static_cast<int>(part.size()), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  std::vector<int> global_node;
+  place_contact_patches(mesh::generate_elements(plan, surface, global_node), enforced, ranks, part, scale);
+  for (std::size_t k = 0; k < surface.size(); ++k)
+    if (surface[k] >= first && surface[k] < end) slab_part[static_cast<std::size_t>(surface[k] - first)] = part[k];
+}
+
+GeneratedPart generated_part(const mesh::GeneratedPlan& plan, std::vector<int> slab_part) {
   GeneratedPart g;
   MeshPart& p = g.part;
-  p.global_element = partitioned_elements(plan);
+  p.global_element = partitioned_elements(plan, std::move(slab_part));
   p.mesh = mesh::generate_elements(plan, p.global_element, p.global_node);
   p.global_node_count = plan.node_count;
   p.global_element_count = plan.element_count;

@@ -16,7 +16,11 @@
 // elements' corners), so node_holders' check has nothing to find here.
 #pragma once
 
+#include <vector>
+
+#include "inputs/deck.hpp"
 #include "mesh/generated_plan.hpp"
+#include "solver/parallel/coordinate_split.hpp"
 #include "solver/parallel/mesh_part.hpp"
 
 namespace tribex::solver::parallel {
@@ -26,8 +30,22 @@ struct GeneratedPart {
   long long shared_nodes = 0;  // nodes held by more than one rank, over all the ranks
 };
 
-/// Collective over MPI_COMM_WORLD: this rank's part of the plan's mesh under the PT-Scotch partition
-/// of its slabs. Throws std::runtime_error on every rank alike when the partition cannot be made.
-GeneratedPart generated_part(const mesh::GeneratedPlan& plan);
+/// Steps 1-2, collective over MPI_COMM_WORLD: [local element of this rank's slab] its part, PT-Scotch's.
+/// Throws std::runtime_error on every rank alike when the partition cannot be made.
+std::vector<int> generated_slab_parts(const mesh::GeneratedPlan& plan);
+
+/// Between steps 2 and 3, collective: the contact patches of place_contact_patches (contact_partition.hpp)
+/// placed on the slabs' partition, as the serial set-up places them on rank 0's whole partition. Every
+/// rank gathers the parts of the contact surfaces' elements (one MPI_Allreduce over them: O(N^(2/3))),
+/// builds those elements alone from the plan and runs place_contact_patches on them: the patch placement
+/// reads only the surfaces' elements (their faces, centroids and facing pairs), in the same order (local
+/// numbers ascend with the global ones), so every rank places them as rank 0 would on the whole mesh.
+/// `enforced`: the contact with the slaves the run enforces (as_enforced); nothing without one.
+void place_generated_patches(const mesh::GeneratedPlan& plan, const inputs::ContactSpec* enforced,
+                             std::vector<int>& slab_part, const AxisScale& scale);
+
+/// Steps 3-5, collective: this rank's part of the plan's mesh under `slab_part` (generated_slab_parts,
+/// possibly with the contact patches placed: place_generated_patches, contact_partition.hpp).
+GeneratedPart generated_part(const mesh::GeneratedPlan& plan, std::vector<int> slab_part);
 
 }  // namespace tribex::solver::parallel

@@ -6,13 +6,13 @@
 //   - the partition: PT-Scotch on the slabs' dual graph, elements exchanged (parallel/generated_parts.hpp);
 //   - "every node in an element": true of a generated mesh by construction (node_holders' check);
 //   - the element check (mesh::validate): each rank on its part, agreed on;
-//   - the contact faces: each rank from the plan's side sets (the surfaces' elements alone);
+//   - the contact faces, the contact's travel (the scale of the patches' cuts) and the contact patches:
+//     each rank from the plan's side sets (the surfaces' elements alone; parallel/generated_parts.hpp);
 //   - the mesh's SHA-256 (restart files): rank 0 streams the mesh through the hash in chunks;
 //   - results.h5's outline: counts and blocks from the plan, the length unit from the extent reduced
 //     over the parts.
-// Left, with the serial set-up's place: the contact patches (place_contact_patches needs the whole
-// mesh: the surfaces are partitioned as the volume is), and results.exo (written by rank 0 from the
-// whole mesh: such a run is set up serially, and the log says why).
+// Left: results.exo (written by rank 0 from the whole mesh: such a run is set up serially, and the log
+// says why), and the meshes generated_plan cannot describe (solver/model.hpp).
 #include <malloc.h>
 
 #include <algorithm>
@@ -21,6 +21,7 @@
 #include <limits>
 
 #include "mesh/mesh_error.hpp"
+#include "solver/parallel/contact_travel.hpp"
 #include "solver/parallel/generated_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 #include "solver/run/deck_run.hpp"
@@ -91,11 +92,41 @@ bool DeckRun::build_parts_distributed() {
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
   const auto start = std::chrono::steady_clock::now();
   parallel::GeneratedPart g;
-  try {
-    g = parallel::generated_part(*plan);
-  } catch (const std::runtime_error& e) {  // thrown on every rank alike: rank 0 says it, once
+  ContactFaces contact;
+  std::optional<ContactTravel> travel;
+  parallel::AxisScale scale = parallel::kUnitScale;
+  // Each stage on every rank alike (the same plan, the same deck), each agreed on before the next collective.
+  const auto partition_error = [&](const std::runtime_error& e) {  // rank 0 says it, once
     error = std::make_exception_ptr(SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) +
                                                " ranks: " + e.what() + "; run with fewer ranks (mpirun -np N)"));
+  };
+  std::vector<int> slab_part;
+  try {
+    slab_part = parallel::generated_slab_parts(*plan);
+  } catch (const std::runtime_error& e) {
+    partition_error(e);
+  }
+  agree_on_errors(error);
+  std::optional<inputs::ContactSpec> enforced;
+  try {
+    if (region_.contact) {
+      // As the serial set-up on rank 0's whole mesh, from the plan.
+      contact = contact_faces(*plan, *region_.contact);
+      travel = contact_travel(deck_, *plan);
+      scale = decomposition_scale(region_.decomposition, travel, ranks_);
+      mesh::Mesh blocks;  // block_wave_moduli reads the blocks alone
+      blocks.blocks = plan->blocks;
+      enforced = as_enforced(*region_.contact, contact, block_wave_moduli(deck_, blocks));
+    }
+  } catch (...) {
+    error = std::current_exception();
+  }
+  agree_on_errors(error);
+  try {
+    parallel::place_generated_patches(*plan, enforced ? &*enforced : nullptr, slab_part, scale);
+    g = parallel::generated_part(*plan, std::move(slab_part));
+  } catch (const std::runtime_error& e) {
+    partition_error(e);
   }
   agree_on_errors(error);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -105,11 +136,9 @@ bool DeckRun::build_parts_distributed() {
     error = std::current_exception();
   }
   agree_on_errors(error);
-  ContactFaces contact;
-  if (region_.contact) contact = contact_faces(*plan, *region_.contact);
   if (root_) mesh_hash_ = mesh_sha256(*plan);
   parallel::broadcast(mesh_hash_, 0);
-  report_distributed_partition(g.part, g.shared_nodes, seconds);
+  report_distributed_partition(g.part, g.shared_nodes, scale, travel, seconds);
   if (region_.results && region_.results->xdmf) {
     output::MeshOutline o;
     o.nodes = plan->node_count;
@@ -124,15 +153,26 @@ bool DeckRun::build_parts_distributed() {
   return true;
 }
 
-void DeckRun::report_distributed_partition(const parallel::MeshPart& mine, long long shared, double seconds) {
+void DeckRun::report_distributed_partition(const parallel::MeshPart& mine, long long shared,
+                                          const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel,
+                                          double seconds) {
   const int elements = static_cast<int>(mine.global_element.size());
   const int fewest = -static_cast<int>(parallel::max(static_cast<long long>(-elements)));
   const int most = static_cast<int>(parallel::max(static_cast<long long>(elements)));
+  // The scale as the serial line gives it (report_partition), with the travel that chose it.
+  const bool scaled = scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0;
+  const bool chosen = !region_.decomposition.coordinate_scale && travel && crosses_patches(*travel, ranks_);
+  const std::string why = chosen ? format(": contact travels %.3g m along %c, node set %s", travel->distance,
+                                          "xyz"[travel->axis], travel->node_set.c_str())
+                                 : std::string();
+  const std::string sides = scaled ? format(" (sides scaled %g %g %g%s)", scale[0], scale[1], scale[2], why.c_str())
+                                   : std::string();
+  const std::string patches =
+      region_.contact ? ", contact surfaces in one compact patch per rank" + sides : std::string();
   log_.say(format("parallel: %d ranks, PT-Scotch k-way partition of the element graph by all the ranks (set-up = "
-                  "distributed: each rank generated a slab of the elements, none the whole mesh; contact surfaces "
-                  "not placed in patches); %d-%d elements per rank; %lld nodes on partition boundaries; partitioned "
-                  "in %.3g s; every rank builds only its part",
-                  ranks_, fewest, most, shared, seconds));
+                  "distributed: each rank generated a slab of the elements, none the whole mesh)%s; %d-%d elements per "
+                  "rank; %lld nodes on partition boundaries; partitioned in %.3g s; every rank builds only its part",
+                  ranks_, patches.c_str(), fewest, most, shared, seconds));
 }
 
 }  // namespace tribex::solver
