@@ -233,6 +233,7 @@ def agree(a):
 
 
 def restart(a):
+    a.deck = with_decomposition(a)  # --decomposition: both runs with the block (OUT/deck.i)
     full, resumed = full_and_stopped(a.tribex, a.deck, a.out, a.ranks, a.stop, "resumed")
     # --remapped: the resume goes through the move onto a partition by global numbers (restart_remap.hpp)
     # although the rank count is the same (test hook TRIBEX_RESTART_REMAP=1): the move must be lossless.
