@@ -391,6 +391,7 @@ struct DecompositionSpec {
   enum class Method { metis, rcb, ptscotch };
   Method method = Method::metis;
   std::optional<std::array<double, 3>> coordinate_scale;  // the deck's; empty: from the contact's travel
+  bool distributed_setup = false;  // `set-up = distributed`: each rank generates its slab (ptscotch only)
   SourceLocation where;
 };
 

@@ -644,6 +644,11 @@ class Builder {
         const std::string method = word(c, "method");
         if (method == "rcb") r.decomposition.method = DecompositionSpec::Method::rcb;
         if (method == "ptscotch") r.decomposition.method = DecompositionSpec::Method::ptscotch;
+        if (word(c, "set-up") == "distributed") {
+          if (r.decomposition.method != DecompositionSpec::Method::ptscotch)
+            error(where(c, "set-up"), c, "'set-up = distributed' needs 'method = ptscotch' (the partition by all the ranks)");
+          r.decomposition.distributed_setup = true;
+        }
         if (auto scale = get(c, "coordinate scale"); scale && scale->numbers.size() == 3)
           r.decomposition.coordinate_scale = std::array<double, 3>{scale->numbers[0], scale->numbers[1], scale->numbers[2]};
       }

@@ -324,8 +324,16 @@ std::vector<BlockSchema> build_table() {
                {choice("method", ValueKind::enumeration, {"metis", "rcb", "ptscotch"}, false, "metis",
                        "how a parallel run splits the elements: metis (graph partition on rank 0, fewest shared "
                        "nodes; the default at every size), ptscotch (the same graph partitioned by all the ranks "
-                       "together with PT-Scotch; the mesh is still read on rank 0) or rcb (recursive coordinate "
+                       "together with PT-Scotch; the mesh is read on rank 0 unless set-up = distributed) or rcb (recursive coordinate "
                        "bisection of the element centroids: planar cuts)"),
+                choice("set-up", ValueKind::enumeration, {"serial", "distributed"}, false, "serial",
+                       "where the mesh is made: serial (rank 0 reads or generates the whole mesh and sends every rank "
+                       "its part) or distributed (with method = ptscotch and a generated box or asperity: every rank "
+                       "generates only a slab of the elements, the ranks partition the slabs together and exchange "
+                       "the elements and place the contact patches, so that no rank holds the whole mesh: the same "
+                       "partition as serial with ptscotch; a mesh this cannot make (a mesh file, an AFM surface, "
+                       "gap above surface, surface layer blocks, rigid bodies) or a run writing results.exo is set up serially, and the "
+                       "log says why)"),
                 reals("coordinate scale", dim::none, 3, positive(), false, "",
                       "sx sy sz: coordinates multiplied by these when the sides of a box are compared (rcb's volume, "
                       "and the contact patches with either method); a small factor on the direction a contact zone "

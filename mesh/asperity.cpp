@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <string>
 
 #include "mesh/asperity_limits.hpp"
@@ -49,11 +51,13 @@ void merge_sides(Mesh& m, const std::string& prefix, const std::string& to, bool
   m.node_sets[to] = std::move(nodes);
 }
 
-int nearest_node(const Mesh& m, const std::vector<int>& set, double x, double y) {
+// The first node of `set` (ascending) nearest to (x, y) in plan view; `xy` gives a node's x and y.
+int nearest_node(const std::function<std::array<double, 2>(int)>& xy, const std::vector<int>& set, double x, double y) {
   int best = set.front();
   double best_d = INFINITY;
   for (int n : set) {
-    const double d = std::hypot(m.coordinates[3 * n] - x, m.coordinates[3 * n + 1] - y);
+    const std::array<double, 2> p = xy(n);
+    const double d = std::hypot(p[0] - x, p[1] - y);
     if (d < best_d) {
       best_d = d;
       best = n;
@@ -118,7 +122,15 @@ std::vector<double> graded_axis(double lo, double hi, double h, double fine, dou
   return x;
 }
 
-Mesh generate_asperity(const AsperitySpec& s) {
+namespace {
+
+// The grids' axes of the asperity: the substrate's (with the first coating element layer, or -1) and the tip's.
+struct AsperityAxes {
+  std::array<std::vector<double>, 3> substrate, tip;
+  int coating_k = -1;
+};
+
+AsperityAxes asperity_axes(const AsperitySpec& s) {
   if (const auto violations = asperity_limit_violations(s); !violations.empty()) {
     std::string message;  // one line per violated limit (the deck set-up puts each at its key's line)
     for (const auto& v : violations) {
@@ -130,14 +142,13 @@ Mesh generate_asperity(const AsperitySpec& s) {
     }
     throw MeshError(message);
   }
-
+  AsperityAxes a;
   const double h = s.element_size, r = s.grading_ratio;
   // Substrate (and coating): z from -depth to 0, fine near the top.
-  std::array<std::vector<double>, 3> sub_axes;
+  auto& sub_axes = a.substrate;
   sub_axes[1] = lateral_axis(0.5 * s.substrate_width, h, s.fine_half_width, r, s.quarter);
   sub_axes[0] = s.fine_x_range ? fine_range_axis(0.5 * s.substrate_width, h, *s.fine_x_range, r, s.quarter) : sub_axes[1];
   std::vector<double> z;
-  int coating_k = -1;  // first element layer of the coating
   if (s.coating_thickness > 0.0) {
     const double hc = s.coating_thickness / s.coating_layers;
     // Below the coating, start again from h and grade down (not from the coating's layer
@@ -146,52 +157,105 @@ Mesh generate_asperity(const AsperitySpec& s) {
     std::vector<double> below = graded_axis(0.0, s.substrate_depth - s.coating_thickness, h,
                                             std::max(0.0, s.fine_depth - s.coating_thickness), r);
     for (auto it = below.rbegin(); it != below.rend(); ++it) z.push_back(-s.coating_thickness - *it);
-    coating_k = static_cast<int>(z.size()) - 1;
+    a.coating_k = static_cast<int>(z.size()) - 1;
     for (int i = 1; i <= s.coating_layers; ++i) z.push_back(-s.coating_thickness + i * hc);
   } else {
     const std::vector<double> down = graded_axis(0.0, s.substrate_depth, h, s.fine_depth, r);
     for (auto it = down.rbegin(); it != down.rend(); ++it) z.push_back(-*it);
   }
   sub_axes[2] = z;
-  Mesh sub = generate_grid("substrate", sub_axes);
-  if (coating_k >= 0) {
-    const int layer = static_cast<int>((sub_axes[0].size() - 1) * (sub_axes[1].size() - 1));
-    const int split = coating_k * layer;
-    const int total = sub.element_count();
+  // Tip: a column on [-w/2, w/2]^2 x [0, H] mapped so that its bottom follows the sphere.
+  a.tip[0] = lateral_axis(0.5 * s.tip_width, h, s.fine_half_width, r, s.quarter);
+  a.tip[1] = a.tip[0];
+  a.tip[2] = graded_axis(0.0, s.tip_height, h, s.fine_depth, r);
+  return a;
+}
+
+// The substrate's blocks (the coating split off its top layers) and sets, on its grid's (from
+// generate_grid or plan_grid); `xy` gives a node's x and y (for the axis nodes).
+void substrate_sets(Mesh& sub, const AsperityAxes& a, bool quarter, const std::function<std::array<double, 2>(int)>& xy) {
+  if (a.coating_k >= 0) {
+    const int layer = static_cast<int>((a.substrate[0].size() - 1) * (a.substrate[1].size() - 1));
+    const int split = a.coating_k * layer;
+    const int total = sub.blocks.front().element_count;
     sub.blocks = {{"substrate", 0, split}, {"coating", split, total - split}};
   }
   rename(sub, "substrate_zmax", "substrate_top");
   rename(sub, "substrate_zmin", "substrate_bottom");
-  merge_sides(sub, "substrate", "substrate_sides", s.quarter);
-
-  // Tip: a column on [-w/2, w/2]^2 x [0, H] mapped so that its bottom follows the sphere.
-  std::array<std::vector<double>, 3> tip_axes;
-  tip_axes[0] = lateral_axis(0.5 * s.tip_width, h, s.fine_half_width, r, s.quarter);
-  tip_axes[1] = tip_axes[0];
-  tip_axes[2] = graded_axis(0.0, s.tip_height, h, s.fine_depth, r);
-  Mesh tip = generate_grid("tip", tip_axes);
-  const double top = s.gap + s.tip_height;
-  for (int n = 0; n < tip.node_count(); ++n) {
-    double* x = &tip.coordinates[3 * n];
-    const double zb = tip_bottom_z(s, x[0], x[1]);
-    // z' in [0, H] -> [zb, top], so fine layers stay fine next to the curved face.
-    x[2] = zb + x[2] / s.tip_height * (top - zb);
-  }
-  rename(tip, "tip_zmin", "tip_surface");
-  rename(tip, "tip_zmax", "tip_top");
-  merge_sides(tip, "tip", "tip_sides", s.quarter);
-  tip.node_sets["tip_axis_top"] = {nearest_node(tip, tip.node_sets.at("tip_top"), 0.0, 0.0)};
-  sub.node_sets["substrate_axis_bottom"] = {nearest_node(sub, sub.node_sets.at("substrate_bottom"), 0.0, 0.0)};
-  sub.node_sets["substrate_axis_top"] = {nearest_node(sub, sub.node_sets.at("substrate_top"), 0.0, 0.0)};
-  tip.node_sets["tip_apex"] = {nearest_node(tip, tip.node_sets.at("tip_surface"), 0.0, 0.0)};
-
-  if (s.quarter) {
+  merge_sides(sub, "substrate", "substrate_sides", quarter);
+  sub.node_sets["substrate_axis_bottom"] = {nearest_node(xy, sub.node_sets.at("substrate_bottom"), 0.0, 0.0)};
+  sub.node_sets["substrate_axis_top"] = {nearest_node(xy, sub.node_sets.at("substrate_top"), 0.0, 0.0)};
+  if (quarter) {
     keep_symmetry_plane(sub, "substrate", "_xmin", "symmetry_x");
     keep_symmetry_plane(sub, "substrate", "_ymin", "symmetry_y");
+  }
+}
+
+void tip_sets(Mesh& tip, bool quarter, const std::function<std::array<double, 2>(int)>& xy) {
+  rename(tip, "tip_zmin", "tip_surface");
+  rename(tip, "tip_zmax", "tip_top");
+  merge_sides(tip, "tip", "tip_sides", quarter);
+  tip.node_sets["tip_axis_top"] = {nearest_node(xy, tip.node_sets.at("tip_top"), 0.0, 0.0)};
+  tip.node_sets["tip_apex"] = {nearest_node(xy, tip.node_sets.at("tip_surface"), 0.0, 0.0)};
+  if (quarter) {
     keep_symmetry_plane(tip, "tip", "_xmin", "tip_symmetry_x");
     keep_symmetry_plane(tip, "tip", "_ymin", "tip_symmetry_y");
   }
+}
 
+// Quarter model: the tip's symmetry-plane nodes join the substrate's (after the two are appended).
+void join_symmetry_planes(std::map<std::string, std::vector<int>>& node_sets) {
+  for (const char* axis : {"x", "y"}) {
+    const std::string tip_set = std::string("tip_symmetry_") + axis;
+    std::vector<int>& plane = node_sets.at(std::string("symmetry_") + axis);
+    const std::vector<int>& from_tip = node_sets.at(tip_set);
+    plane.insert(plane.end(), from_tip.begin(), from_tip.end());
+    std::sort(plane.begin(), plane.end());
+    node_sets.erase(tip_set);
+  }
+}
+
+// The tip's z' in [0, H] -> [zb, top], so fine layers stay fine next to the curved face.
+void map_tip_node(const AsperitySpec& s, double* x) {
+  const double top = s.gap + s.tip_height;
+  const double zb = tip_bottom_z(s, x[0], x[1]);
+  x[2] = zb + x[2] / s.tip_height * (top - zb);
+}
+
+// `apex position`: the rigid translation (0, 0, gap) -> apex.
+std::array<double, 3> apex_shift(const AsperitySpec& s) { return {s.apex[0], s.apex[1], s.apex[2] - s.gap}; }
+
+// A grid's x and y of a node (its own numbering), as generate_grid writes them.
+std::function<std::array<double, 2>(int)> grid_xy(const std::array<std::vector<double>, 3>& axes) {
+  return [&axes](int n) {
+    const int nx1 = static_cast<int>(axes[0].size()), ny1 = static_cast<int>(axes[1].size());
+    return std::array<double, 2>{axes[0][static_cast<std::size_t>(n % nx1)], axes[1][static_cast<std::size_t>((n / nx1) % ny1)]};
+  };
+}
+
+// The sets of a plan moved into a mesh for the set functions above, and back.
+Mesh sets_of(GeneratedPlan& p) {
+  Mesh m;
+  m.blocks = std::move(p.blocks);
+  m.node_sets = std::move(p.node_sets);
+  m.side_sets = std::move(p.side_sets);
+  return m;
+}
+void sets_back(GeneratedPlan& p, Mesh& m) {
+  p.blocks = std::move(m.blocks);
+  p.node_sets = std::move(m.node_sets);
+  p.side_sets = std::move(m.side_sets);
+}
+
+}  // namespace
+
+Mesh generate_asperity(const AsperitySpec& s) {
+  const AsperityAxes a = asperity_axes(s);
+  Mesh sub = generate_grid("substrate", a.substrate);
+  substrate_sets(sub, a, s.quarter, grid_xy(a.substrate));
+  Mesh tip = generate_grid("tip", a.tip);
+  for (int n = 0; n < tip.node_count(); ++n) map_tip_node(s, &tip.coordinates[3 * static_cast<std::size_t>(n)]);
+  tip_sets(tip, s.quarter, grid_xy(a.tip));
   Mesh mesh;
   if (s.tip_only) {
     mesh = std::move(tip);
@@ -200,23 +264,45 @@ Mesh generate_asperity(const AsperitySpec& s) {
     append(mesh, tip);
   }
   if (s.place_apex) {
-    // Rigid translation of the whole generated mesh: (0, 0, gap) -> apex.
-    const double shift[3] = {s.apex[0], s.apex[1], s.apex[2] - s.gap};
+    const std::array<double, 3> shift = apex_shift(s);
     for (int n = 0; n < mesh.node_count(); ++n)
       for (int i = 0; i < 3; ++i) mesh.coordinates[3 * n + i] += shift[i];
   }
-  if (s.quarter) {
-    for (const char* axis : {"x", "y"}) {
-      const std::string tip_set = std::string("tip_symmetry_") + axis;
-      std::vector<int>& plane = mesh.node_sets.at(std::string("symmetry_") + axis);
-      const std::vector<int>& from_tip = mesh.node_sets.at(tip_set);
-      plane.insert(plane.end(), from_tip.begin(), from_tip.end());
-      std::sort(plane.begin(), plane.end());
-      mesh.node_sets.erase(tip_set);
-    }
-  }
+  if (s.quarter) join_symmetry_planes(mesh.node_sets);
   validate(mesh, "asperity mesh");
   return mesh;
+}
+
+GeneratedPlan plan_asperity(const AsperitySpec& s) {
+  const AsperityAxes a = asperity_axes(s);
+  GeneratedPlan sub = plan_grid("substrate", a.substrate);
+  Mesh sets = sets_of(sub);
+  substrate_sets(sets, a, s.quarter, grid_xy(a.substrate));
+  sets_back(sub, sets);
+  GeneratedPlan tip = plan_grid("tip", a.tip);
+  tip.grids.front().map = [s](double* x) { map_tip_node(s, x); };
+  sets = sets_of(tip);
+  tip_sets(sets, s.quarter, grid_xy(a.tip));
+  sets_back(tip, sets);
+  GeneratedPlan plan;
+  if (s.tip_only) {
+    plan = std::move(tip);
+  } else {
+    plan = std::move(sub);
+    append_plan(plan, std::move(tip));
+  }
+  if (s.place_apex) {
+    const std::array<double, 3> shift = apex_shift(s);
+    for (GridPiece& g : plan.grids) {
+      // After the grid's own map, as generate_asperity translates the mapped mesh.
+      g.map = [inner = g.map, shift](double* x) {
+        if (inner) inner(x);
+        for (int i = 0; i < 3; ++i) x[i] += shift[i];
+      };
+    }
+  }
+  if (s.quarter) join_symmetry_planes(plan.node_sets);
+  return plan;
 }
 
 }  // namespace tribex::mesh

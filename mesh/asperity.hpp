@@ -26,6 +26,7 @@
 #include <array>
 #include <optional>
 
+#include "mesh/generated_plan.hpp"
 #include "mesh/mesh.hpp"
 
 namespace tribex::mesh {
@@ -58,6 +59,9 @@ struct AsperitySpec {
 /// Throws MeshError for inconsistent sizes: every violated limit, one line each with the nearest
 /// valid value (asperity_limits.hpp).
 Mesh generate_asperity(const AsperitySpec& spec);
+/// Its plan (generated_plan.hpp): the same numbers, coordinates and sets, no volume built (the
+/// volume's Jacobians are checked where the elements are built).
+GeneratedPlan plan_asperity(const AsperitySpec& spec);
 
 /// Node coordinates on [lo, hi] with spacing h in [lo, lo + fine] growing by `ratio` per element
 /// after it (the last element absorbs the remainder); used by the asperity and AFM generators.

@@ -56,8 +56,47 @@ void check_new_names(const Mesh& into, const std::vector<std::string>& blocks, c
     if (into.side_sets.count(s)) throw MeshError("append: both meshes have a side set named '" + s + "'; rename one of them");
 }
 
-// The grid of `axes` added to `mesh` in place (add_box, generate_grid).
-void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<double>, 3>& axes) {
+// The face sets of a grid of n_el elements numbered from the offsets (add_grid; a generated plan's
+// sets, generated_plan.hpp): side sets and node sets NAME_xmin .. NAME_zmax, not NAME_all.
+void add_grid_sets(Mesh& mesh, const std::string& name, const std::array<std::int64_t, 3>& n_el, std::int64_t node_offset,
+                   std::int64_t element_offset) {
+  const std::int64_t nx = n_el[0], ny = n_el[1];
+  const auto node = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return static_cast<int>(node_offset + i + (nx + 1) * (j + (ny + 1) * k));
+  };
+  // Boundary sets. For face f, loop the two in-plane axes; the element and node indices follow
+  // from fixing the normal axis at its min or max.
+  for (int f = 0; f < 6; ++f) {
+    const int d = f / 2;
+    const bool at_max = f % 2 == 1;
+    const int a = (d + 1) % 3, b = (d + 2) % 3;  // in-plane axes
+    std::vector<Side>& sides = mesh.side_sets[name + "_" + face_names[f]];
+    std::vector<int>& nodes = mesh.node_sets[name + "_" + face_names[f]];
+    sides.reserve(static_cast<std::size_t>(n_el[a] * n_el[b]));
+    nodes.reserve(static_cast<std::size_t>((n_el[a] + 1) * (n_el[b] + 1)));
+    std::int64_t ijk[3];
+    for (std::int64_t u = 0; u < n_el[a]; ++u)
+      for (std::int64_t v = 0; v < n_el[b]; ++v) {
+        ijk[d] = at_max ? n_el[d] - 1 : 0;
+        ijk[a] = u;
+        ijk[b] = v;
+        sides.push_back({static_cast<int>(element_offset + ijk[0] + nx * (ijk[1] + ny * ijk[2])), box_face_to_local[f]});
+      }
+    for (std::int64_t u = 0; u <= n_el[a]; ++u)
+      for (std::int64_t v = 0; v <= n_el[b]; ++v) {
+        ijk[d] = at_max ? n_el[d] : 0;
+        ijk[a] = u;
+        ijk[b] = v;
+        nodes.push_back(node(ijk[0], ijk[1], ijk[2]));
+      }
+    std::sort(sides.begin(), sides.end(), [](const Side& s, const Side& t) { return s.element < t.element; });
+    std::sort(nodes.begin(), nodes.end());
+  }
+}
+
+// The grid's element counts along x, y, z; MeshError for axes that do not increase or a mesh past int.
+std::array<std::int64_t, 3> check_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes,
+                                       std::int64_t node_offset, std::int64_t element_offset) {
   const std::string source = "structured grid '" + name + "'";
   for (int d = 0; d < 3; ++d) {
     if (axes[d].size() < 2) throw MeshError(source + ": an axis needs at least 2 coordinates");
@@ -69,11 +108,19 @@ void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<
   const std::int64_t node_count = (nx + 1) * (ny + 1) * (nz + 1);
   const std::int64_t element_count = nx * ny * nz;
   // Arrays are indexed by int: keep 8 * elements and 3 * nodes below INT_MAX.
-  const std::int64_t node_offset = mesh.node_count(), element_offset = mesh.element_count();
   if (element_offset + element_count > std::numeric_limits<int>::max() / 8 ||
       node_offset + node_count > std::numeric_limits<int>::max() / 3)
     throw MeshError(source + ": " + std::to_string(element_offset + element_count) +
                     " elements exceed the int index range; use fewer intervals");
+  return {nx, ny, nz};
+}
+
+// The grid of `axes` added to `mesh` in place (add_box, generate_grid).
+void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<double>, 3>& axes) {
+  const std::int64_t node_offset = mesh.node_count(), element_offset = mesh.element_count();
+  const auto [nx, ny, nz] = check_grid(name, axes, node_offset, element_offset);
+  const std::int64_t node_count = (nx + 1) * (ny + 1) * (nz + 1);
+  const std::int64_t element_count = nx * ny * nz;
   check_new_names(mesh, {name}, set_names(name));
 
   mesh.coordinates.resize(static_cast<std::size_t>(node_offset + node_count) * 3);
@@ -107,35 +154,7 @@ void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<
       }
   mesh.blocks.push_back({name, static_cast<int>(element_offset), static_cast<int>(element_count)});
 
-  // Boundary sets. For face f, loop the two in-plane axes; the element and node indices follow
-  // from fixing the normal axis at its min or max.
-  const std::int64_t n_el[3] = {nx, ny, nz};
-  for (int f = 0; f < 6; ++f) {
-    const int d = f / 2;
-    const bool at_max = f % 2 == 1;
-    const int a = (d + 1) % 3, b = (d + 2) % 3;  // in-plane axes
-    std::vector<Side>& sides = mesh.side_sets[name + "_" + face_names[f]];
-    std::vector<int>& nodes = mesh.node_sets[name + "_" + face_names[f]];
-    sides.reserve(static_cast<std::size_t>(n_el[a] * n_el[b]));
-    nodes.reserve(static_cast<std::size_t>((n_el[a] + 1) * (n_el[b] + 1)));
-    std::int64_t ijk[3];
-    for (std::int64_t u = 0; u < n_el[a]; ++u)
-      for (std::int64_t v = 0; v < n_el[b]; ++v) {
-        ijk[d] = at_max ? n_el[d] - 1 : 0;
-        ijk[a] = u;
-        ijk[b] = v;
-        sides.push_back({static_cast<int>(element_offset + ijk[0] + nx * (ijk[1] + ny * ijk[2])), box_face_to_local[f]});
-      }
-    for (std::int64_t u = 0; u <= n_el[a]; ++u)
-      for (std::int64_t v = 0; v <= n_el[b]; ++v) {
-        ijk[d] = at_max ? n_el[d] : 0;
-        ijk[a] = u;
-        ijk[b] = v;
-        nodes.push_back(node(ijk[0], ijk[1], ijk[2]));
-      }
-    std::sort(sides.begin(), sides.end(), [](const Side& s, const Side& t) { return s.element < t.element; });
-    std::sort(nodes.begin(), nodes.end());
-  }
+  add_grid_sets(mesh, name, {nx, ny, nz}, node_offset, element_offset);
   std::vector<int>& all = mesh.node_sets[name + "_all"];
   all.resize(static_cast<std::size_t>(node_count));
   for (int n = 0; n < static_cast<int>(node_count); ++n) all[n] = static_cast<int>(node_offset) + n;
@@ -159,7 +178,9 @@ std::array<long long, 2> box_size(const BoxSpec& spec) {
   return {nodes, elements};
 }
 
-void add_box(Mesh& into, const BoxSpec& spec) {
+namespace {
+// The checked spec's axes (add_box, plan_box).
+std::array<std::vector<double>, 3> box_axes(const BoxSpec& spec) {
   const std::string source = "generated box '" + spec.name + "'";
   if (spec.name.empty()) throw MeshError("generated box: the block name is empty; give the box a name");
   const char* axis = "xyz";
@@ -189,7 +210,28 @@ void add_box(Mesh& into, const BoxSpec& spec) {
   for (int d = 0; d < 3; ++d)
     axes[d] = axis_coordinates(spec.origin[d], spec.size[d], spec.intervals[d], spec.grading_ratio,
                                graded_face == 2 * d, graded_face == 2 * d + 1);
-  add_grid(into, spec.name, axes);
+  return axes;
+}
+}  // namespace
+
+void add_box(Mesh& into, const BoxSpec& spec) { add_grid(into, spec.name, box_axes(spec)); }
+
+GeneratedPlan plan_box(const BoxSpec& spec) { return plan_grid(spec.name, box_axes(spec)); }
+
+GeneratedPlan plan_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes) {
+  const std::array<std::int64_t, 3> n = check_grid(name, axes, 0, 0);
+  GeneratedPlan plan;
+  Mesh sets;  // the face sets alone: add_grid's, from the same function
+  add_grid_sets(sets, name, n, 0, 0);
+  GridPiece& g = plan.grids.emplace_back();
+  g.axes = axes;
+  plan.node_count = g.nodes();
+  plan.element_count = g.elements();
+  plan.blocks.push_back({name, 0, plan.element_count});
+  plan.node_sets = std::move(sets.node_sets);
+  plan.side_sets = std::move(sets.side_sets);
+  plan.node_set_ranges[name + "_all"] = {0, plan.node_count};
+  return plan;
 }
 
 Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes) {

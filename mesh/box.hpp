@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/generated_plan.hpp"
 #include "mesh/mesh.hpp"
 
 namespace tribex::mesh {
@@ -37,5 +38,10 @@ std::array<long long, 2> box_size(const BoxSpec& spec);
 /// increasing coordinate lists (m), one block NAME and the same sets. Generators that map a grid
 /// (the asperity's spherical tip, AFM surfaces) start from it.
 Mesh generate_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes);
+
+/// The plans (generated_plan.hpp) of generate_box and generate_grid: the same numbers, sets and
+/// coordinates, and the same MeshError for a bad spec, with no volume built.
+GeneratedPlan plan_box(const BoxSpec& spec);
+GeneratedPlan plan_grid(const std::string& name, const std::array<std::vector<double>, 3>& axes);
 
 }  // namespace tribex::mesh

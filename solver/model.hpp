@@ -6,11 +6,13 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "contact/contact_manager.hpp"
 #include "inputs/deck.hpp"
+#include "mesh/generated_plan.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/setup/contact_setup.hpp"
 #include "solver/element_block.hpp"
@@ -119,5 +121,10 @@ mesh::Mesh build_mesh(const inputs::Deck& deck);
 
 /// The mesh of a finite element model spec: generated boxes (appended in deck order) or a gmsh file.
 mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec);
+/// The plan of the deck's generated mesh (mesh/generated_plan.hpp: build_mesh(deck)'s numbers,
+/// coordinates and sets, no volume built), or none with the reason in `why_not` where build_mesh
+/// needs the whole mesh (a mesh file, an AFM surface, `gap above surface`, surface layer blocks, rigid
+/// bodies). Throws as build_mesh does for a bad box or asperity.
+std::optional<mesh::GeneratedPlan> generated_plan(const inputs::Deck& deck, std::string& why_not);
 
 }  // namespace tribex::solver

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -128,23 +129,28 @@ double smallest_extent(const mesh::Mesh& mesh, const inputs::ContactSpec& contac
 
 }  // namespace
 
-std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh::Mesh& mesh) {
+namespace {
+
+// contact_travel on `mesh` (whose side sets hold the contact surfaces' faces), the connected pieces given
+// by `face_piece` (a face node's piece, in [0, pieces)) and `set_pieces` (the pieces of a node set's
+// nodes; none: no such set).
+std::optional<ContactTravel> travel_of(const inputs::Deck& deck, const mesh::Mesh& mesh, int pieces,
+                                       const std::function<int(int)>& face_piece,
+                                       const std::function<std::optional<std::vector<int>>(const std::string&)>& set_pieces) {
   const auto& region = deck.procedure.region;
-  if (!region.contact || region.prescribed_motions.empty()) return std::nullopt;
-  Pieces pieces(mesh);
-  std::vector<char> contact_piece(static_cast<std::size_t>(mesh.node_count()), 0);  // [root]
+  std::vector<char> contact_piece(static_cast<std::size_t>(pieces), 0);
   for (const auto& surface : region.contact->surfaces)
-    for_each_face(mesh, surface, [&](const std::array<int, 4>& n) { contact_piece[pieces.root(n[0])] = 1; });
+    for_each_face(mesh, surface, [&](const std::array<int, 4>& n) { contact_piece[face_piece(n[0])] = 1; });
   const int normal = normal_axis(mesh, *region.contact);
   const auto& time = deck.procedure.time_control;
   std::optional<ContactTravel> travel;
   for (const auto& motion : region.prescribed_motions) {
     const int axis = static_cast<int>(motion.component);
-    const auto set = mesh.node_sets.find(motion.node_set);
     const inputs::FunctionSpec* function = deck.find_function(motion.function);
-    if (axis == normal || set == mesh.node_sets.end() || !function) continue;
-    const bool moves_contact_body =
-        std::any_of(set->second.begin(), set->second.end(), [&](int n) { return contact_piece[pieces.root(n)] != 0; });
+    if (axis == normal || !function) continue;
+    const auto set = set_pieces(motion.node_set);
+    if (!set) continue;
+    const bool moves_contact_body = std::any_of(set->begin(), set->end(), [&](int p) { return contact_piece[p] != 0; });
     if (!moves_contact_body) continue;
     const double distance = motion_distance(motion, *function, time.start_time, time.termination_time);
     if (distance > 0.0 && (!travel || distance > travel->distance))
@@ -152,6 +158,49 @@ std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh
   }
   if (travel) travel->zone_extent = smallest_extent(mesh, *region.contact, travel->axis);
   return travel;
+}
+
+}  // namespace
+
+std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh::Mesh& mesh) {
+  const auto& region = deck.procedure.region;
+  if (!region.contact || region.prescribed_motions.empty()) return std::nullopt;
+  Pieces pieces(mesh);
+  return travel_of(deck, mesh, mesh.node_count(), [&](int n) { return pieces.root(n); },
+                   [&](const std::string& name) -> std::optional<std::vector<int>> {
+                     const auto set = mesh.node_sets.find(name);
+                     if (set == mesh.node_sets.end()) return std::nullopt;
+                     std::vector<int> roots;
+                     for (int n : set->second) roots.push_back(pieces.root(n));
+                     return roots;
+                   });
+}
+
+std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh::GeneratedPlan& plan) {
+  const auto& region = deck.procedure.region;
+  if (!region.contact || region.prescribed_motions.empty()) return std::nullopt;
+  // A generated mesh's connected pieces are its grids (append never merges nodes; a grid is connected).
+  std::vector<int> elements, global_node;
+  for (const auto& surface : region.contact->surfaces)
+    for (const auto& name : surface.side_sets)
+      if (const auto it = plan.side_sets.find(name); it != plan.side_sets.end())
+        for (const auto& side : it->second) elements.push_back(side.element);
+  std::sort(elements.begin(), elements.end());
+  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  const mesh::Mesh surfaces = mesh::generate_elements(plan, elements, global_node);
+  return travel_of(deck, surfaces, static_cast<int>(plan.grids.size()),
+                   [&](int n) { return mesh::grid_of_node(plan, global_node[static_cast<std::size_t>(n)]); },
+                   [&](const std::string& name) -> std::optional<std::vector<int>> {
+                     std::vector<int> grids;
+                     if (const auto set = plan.node_sets.find(name); set != plan.node_sets.end()) {
+                       for (int n : set->second) grids.push_back(mesh::grid_of_node(plan, n));
+                     } else if (const auto range = plan.node_set_ranges.find(name); range != plan.node_set_ranges.end()) {
+                       if ((*range).second[1] > (*range).second[0]) grids.push_back(mesh::grid_of_node(plan, (*range).second[0]));
+                     } else {
+                       return std::nullopt;
+                     }
+                     return grids;
+                   });
 }
 
 bool crosses_patches(const ContactTravel& travel, int parts) {

@@ -25,6 +25,7 @@
 #include <string>
 
 #include "inputs/deck.hpp"
+#include "mesh/generated_plan.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/parallel/coordinate_split.hpp"
 
@@ -41,6 +42,9 @@ struct ContactTravel {
 /// The travel of `deck`'s contact zone on `mesh` (the whole mesh), or nullopt: no contact definition,
 /// or no prescribed motion of a contact body along a tangential component over the run.
 std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh::Mesh& mesh);
+/// The same from a generated mesh's plan (mesh/generated_plan.hpp; `set-up = distributed`): the connected
+/// pieces are the plan's grids, the surfaces' faces those of their elements built alone. Every rank alike.
+std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh::GeneratedPlan& plan);
 
 /// Whether `travel` carries the zone beyond a patch's width at `parts` ranks: distance > zone_extent / parts.
 bool crosses_patches(const ContactTravel& travel, int parts);

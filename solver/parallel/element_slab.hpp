@@ -2,9 +2,9 @@
 // A contiguous slab of a mesh's elements held by one rank: the input of the distributed partition
 // (face_dual_graph.hpp, ptscotch_partition.hpp). Rank r holds the elements [first, first + count) of
 // the whole mesh, the ranks' slabs in rank order and together the whole mesh; each element as its 8
-// node numbers in the whole mesh's numbering (hex8 order, mesh/mesh.hpp). For this first step rank 0
-// cuts them from the mesh it read (element_slabs.hpp); a per-rank read (issue 57 scope 2) fills the
-// same structure with no global stage.
+// node numbers in the whole mesh's numbering (hex8 order, mesh/mesh.hpp). Rank 0 cuts them from the mesh
+// it read (element_slabs.hpp), or, with `set-up = distributed`, every rank generates its own from a
+// generated mesh's plan (generated_parts.hpp; a read in slices of a mesh file would fill it the same way).
 #pragma once
 
 #include <vector>

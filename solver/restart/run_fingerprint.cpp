@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "solver/restart/run_fingerprint.hpp"
 
+#include <algorithm>
+
 #include "inputs/sha256.hpp"
 #include "solver/output/run_log.hpp"
 
@@ -18,6 +20,20 @@ std::string mesh_sha256(const mesh::Mesh& m) {
   inputs::Sha256 hash;  // the arrays' bytes, not a copy of them (rank 0 hashes the whole mesh)
   hash.update({reinterpret_cast<const char*>(m.coordinates.data()), m.coordinates.size() * sizeof(double)});
   hash.update({reinterpret_cast<const char*>(m.connectivity.data()), m.connectivity.size() * sizeof(int)});
+  return hash.hex();
+}
+
+std::string mesh_sha256(const mesh::GeneratedPlan& plan) {
+  inputs::Sha256 hash;
+  constexpr int chunk = 65536;
+  for (int first = 0; first < plan.node_count; first += chunk) {
+    const std::vector<double> x = mesh::node_coordinates(plan, first, std::min(chunk, plan.node_count - first));
+    hash.update({reinterpret_cast<const char*>(x.data()), x.size() * sizeof(double)});
+  }
+  for (int first = 0; first < plan.element_count; first += chunk) {
+    const std::vector<int> c = mesh::element_nodes(plan, first, std::min(chunk, plan.element_count - first));
+    hash.update({reinterpret_cast<const char*>(c.data()), c.size() * sizeof(int)});
+  }
   return hash.hex();
 }
 

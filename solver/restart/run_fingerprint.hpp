@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/generated_plan.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/restart/state_archive.hpp"
 
@@ -16,6 +17,9 @@ std::vector<long long> as_codes(const std::string& text);
 std::string from_codes(const std::vector<long long>& codes);
 /// SHA-256 (hex) of the mesh's coordinates and connectivity bytes.
 std::string mesh_sha256(const mesh::Mesh& m);
+/// mesh_sha256 of the plan's mesh (mesh/generated_plan.hpp), the arrays generated and hashed 65,536
+/// nodes and elements at a time: the same digest without the whole mesh in memory.
+std::string mesh_sha256(const mesh::GeneratedPlan& plan);
 /// "" when the restart file was written by this deck and mesh (or by a tribex that did not record
 /// them); else what differs, one line.
 std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash);

@@ -74,6 +74,9 @@ class DeckRun {
   // ---- stage 1: the model (a parallel run: this rank's part), checked and reported; nothing written ----
   void preflight();
   void build_parts();  // parallel: the whole mesh on rank 0, partitioned; every rank builds its part
+  bool build_parts_distributed();  // `set-up = distributed`: false (and the log says why) if the mesh needs rank 0
+  void report_distributed_partition(const parallel::MeshPart& mine, long long shared, const parallel::AxisScale& scale,
+                                    const std::optional<ContactTravel>& travel, double seconds);
   void report_partition(const mesh::Mesh& whole, const std::vector<int>& part, const parallel::NodeHolders& holders,
                         const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel, double seconds);
   void report_mesh(const Model& model);

@@ -82,7 +82,9 @@ void DeckRun::preflight() {
 void DeckRun::build_parts() {
   // Rank 0 reads or generates the whole mesh, checks and partitions it (with `method = ptscotch` all
   // the ranks partition it together), and sends every rank its part; it keeps the whole mesh only
-  // until results.h5 holds it (open_results).
+  // until results.h5 holds it (open_results). With `set-up = distributed` every rank makes its own part
+  // of a generated mesh instead (deck_run_distributed.cpp).
+  if (region_.decomposition.distributed_setup && build_parts_distributed()) return;
   std::optional<mesh::Mesh> whole;
   std::vector<int> part;
   parallel::NodeHolders holders;

@@ -102,6 +102,60 @@ void place_tip_above_surface(mesh::Mesh& m, int first_tip_node, double gap) {
   for (int n = first_tip_node; n < m.node_count(); ++n) m.coordinates[3 * static_cast<std::size_t>(n) + 2] += gap - *now;
 }
 
+// The generator's spec of a deck's `begin generated box`.
+mesh::BoxSpec box_spec_of(const inputs::GeneratedBoxSpec& box) {
+  mesh::BoxSpec b;
+  b.name = box.block_name;
+  b.origin = box.origin;
+  b.size = box.size;
+  b.intervals = box.intervals;
+  b.grade_toward = box.grade_toward;
+  b.grading_ratio = box.grading_ratio;
+  return b;
+}
+
+// The generator's spec of a deck's `begin generated asperity`; SetupError with every violated size
+// limit at once, each at its key's line (the block's when the key is a default).
+mesh::AsperitySpec checked_asperity_spec(const inputs::GeneratedAsperitySpec& a) {
+  mesh::AsperitySpec g;
+  g.radius = a.radius;
+  g.tip_width = a.tip_width;
+  g.tip_height = a.tip_height;
+  g.substrate_width = a.substrate_width;
+  g.substrate_depth = a.substrate_depth;
+  g.gap = a.gap;
+  g.element_size = a.element_size;
+  g.fine_half_width = a.fine_half_width;
+  g.fine_depth = a.fine_depth;
+  g.grading_ratio = a.grading_ratio;
+  g.coating_thickness = a.coating_thickness;
+  g.coating_layers = a.coating_layers;
+  g.quarter = a.quarter;
+  g.tip_only = a.tip_only;
+  g.paraboloid = a.paraboloid;
+  if (a.apex) {
+    g.place_apex = true;
+    g.apex = *a.apex;
+  }
+  g.fine_x_range = a.fine_x_range;
+  // Every violated size limit at once, each at its key's line (the block's when the key is a default).
+  if (const auto violations = mesh::asperity_limit_violations(g); !violations.empty()) {
+    std::string message;
+    for (const auto& v : violations) {
+      const auto it = a.key_where.find(v.key);
+      const bool given = it != a.key_where.end();
+      if (!message.empty()) message += '\n';
+      message += (given ? it->second : a.where).str();
+      message += ": error: asperity mesh: '";
+      message += v.key;
+      message += given ? "': " : "' (its default): ";
+      message += v.message;
+    }
+    throw SetupError(message);
+  }
+  return g;
+}
+
 }  // namespace
 
 mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
@@ -115,13 +169,7 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
     std::vector<mesh::BoxSpec> boxes;
     long long nodes = m.node_count(), elements = m.element_count();
     for (const auto& box : spec.boxes) {
-      mesh::BoxSpec& b = boxes.emplace_back();
-      b.name = box.block_name;
-      b.origin = box.origin;
-      b.size = box.size;
-      b.intervals = box.intervals;
-      b.grade_toward = box.grade_toward;
-      b.grading_ratio = box.grading_ratio;
+      const mesh::BoxSpec& b = boxes.emplace_back(box_spec_of(box));
       const auto [box_nodes, box_elements] = mesh::box_size(b);
       nodes += box_nodes;
       elements += box_elements;
@@ -136,42 +184,7 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec) {
     for (const auto& b : boxes) mesh::add_box(m, b);
     if (spec.asperity) {
       const auto& a = *spec.asperity;
-      mesh::AsperitySpec g;
-      g.radius = a.radius;
-      g.tip_width = a.tip_width;
-      g.tip_height = a.tip_height;
-      g.substrate_width = a.substrate_width;
-      g.substrate_depth = a.substrate_depth;
-      g.gap = a.gap;
-      g.element_size = a.element_size;
-      g.fine_half_width = a.fine_half_width;
-      g.fine_depth = a.fine_depth;
-      g.grading_ratio = a.grading_ratio;
-      g.coating_thickness = a.coating_thickness;
-      g.coating_layers = a.coating_layers;
-      g.quarter = a.quarter;
-      g.tip_only = a.tip_only;
-      g.paraboloid = a.paraboloid;
-      if (a.apex) {
-        g.place_apex = true;
-        g.apex = *a.apex;
-      }
-      g.fine_x_range = a.fine_x_range;
-      // Every violated size limit at once, each at its key's line (the block's when the key is a default).
-      if (const auto violations = mesh::asperity_limit_violations(g); !violations.empty()) {
-        std::string message;
-        for (const auto& v : violations) {
-          const auto it = a.key_where.find(v.key);
-          const bool given = it != a.key_where.end();
-          if (!message.empty()) message += '\n';
-          message += (given ? it->second : a.where).str();
-          message += ": error: asperity mesh: '";
-          message += v.key;
-          message += given ? "': " : "' (its default): ";
-          message += v.message;
-        }
-        throw SetupError(message);
-      }
+      const mesh::AsperitySpec g = checked_asperity_spec(a);
       try {
         const int first_tip_node = m.node_count();
         mesh::append(m, mesh::generate_asperity(g));
@@ -201,6 +214,30 @@ mesh::Mesh build_mesh(const inputs::Deck& deck) {
   mesh::Mesh mesh = build_mesh(model_spec(deck));
   add_rigid_body_node_sets(mesh, deck.procedure.region.rigid_bodies);  // node set NAME per `begin rigid body NAME`
   return mesh;
+}
+
+std::optional<mesh::GeneratedPlan> generated_plan(const inputs::Deck& deck, std::string& why_not) {
+  const inputs::FiniteElementModelSpec& spec = model_spec(deck);
+  // What build_mesh does beyond the boxes and the asperity needs the whole mesh (a height map's
+  // spline surface, a gap measured over it, surface layers counted down a block, a rigid body's nodes).
+  why_not.clear();
+  if (spec.source != inputs::FiniteElementModelSpec::Source::generated) why_not = "the mesh is read from a file";
+  else if (spec.afm_surface) why_not = "an AFM surface is generated on one rank";
+  else if (spec.asperity && spec.asperity->gap_above_surface) why_not = "'gap above surface' measures the whole mesh";
+  else if (!spec.surface_layers.empty()) why_not = "surface layer blocks are split off the whole mesh";
+  else if (!deck.procedure.region.rigid_bodies.empty()) why_not = "rigid bodies collect their nodes from the whole mesh";
+  if (!why_not.empty()) return std::nullopt;
+  mesh::GeneratedPlan plan;
+  for (const auto& box : spec.boxes) mesh::append_plan(plan, mesh::plan_box(box_spec_of(box)));
+  if (spec.asperity) {
+    const mesh::AsperitySpec g = checked_asperity_spec(*spec.asperity);
+    try {
+      mesh::append_plan(plan, mesh::plan_asperity(g));
+    } catch (const mesh::MeshError& e) {
+      throw SetupError(spec.asperity->where.str() + ": error: " + e.what());
+    }
+  }
+  return plan;
 }
 
 std::vector<double> block_wave_moduli(const inputs::Deck& deck, const mesh::Mesh& mesh) {

@@ -192,6 +192,22 @@ ContactFaces contact_faces(const mesh::Mesh& mesh, const inputs::ContactSpec& sp
   return faces;
 }
 
+ContactFaces contact_faces(const mesh::GeneratedPlan& plan, const inputs::ContactSpec& spec) {
+  // The mesh of the surfaces' elements: its sets restricted to them keep the contact's side sets whole
+  // (in their order), its nodes ascend with the global numbers, so the faces map back one to one.
+  std::vector<int> elements;
+  for (const auto& s : spec.surfaces)
+    for (const auto& set : s.side_sets)
+      if (const auto it = plan.side_sets.find(set); it != plan.side_sets.end())
+        for (const auto& side : it->second) elements.push_back(side.element);
+  std::sort(elements.begin(), elements.end());
+  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  std::vector<int> global_node;
+  ContactFaces faces = contact_faces(mesh::generate_elements(plan, elements, global_node), spec);
+  for (int& n : faces.global_node) n = global_node[static_cast<std::size_t>(n)];
+  return faces;
+}
+
 void broadcast_contact_faces(ContactFaces& faces) {
   if (parallel::size() == 1) return;
   std::vector<char> bytes;

@@ -11,6 +11,7 @@
 
 #include "contact/contact_manager.hpp"
 #include "inputs/deck.hpp"
+#include "mesh/generated_plan.hpp"
 #include "solver/guards/run_warning.hpp"
 
 namespace tribex::solver {
@@ -31,6 +32,9 @@ struct ContactFaces {
 
 /// The contact faces of `mesh` (the whole mesh: a serial run's, or rank 0's in a parallel run).
 ContactFaces contact_faces(const mesh::Mesh& mesh, const inputs::ContactSpec& spec);
+/// The same of a generated mesh's plan (mesh/generated_plan.hpp), from the elements of the contact's side
+/// sets alone: every rank of a distributed set-up makes its own (`set-up = distributed`).
+ContactFaces contact_faces(const mesh::GeneratedPlan& plan, const inputs::ContactSpec& spec);
 
 /// Whether the run enforces interaction `it` with its surfaces swapped: a one-pass node-to-face
 /// penalty pair whose slave is more than twice as stiff (mean P-wave modulus of the elements under its

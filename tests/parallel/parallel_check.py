@@ -42,7 +42,7 @@
   agree ... --decomposition "rcb [SX SY SZ]": both runs of a deck given a `begin decomposition` block (written
       to OUT/deck.i; without SX SY SZ the run chooses the scale); the parallel run's log must name the coordinate
       bisection, and with --expect-partition TEXT its partition line must hold TEXT. --decomposition ptscotch:
-      the same, the log naming PT-Scotch.
+      the same, the log naming PT-Scotch; "ptscotch distributed" adds `set-up = distributed`.
 """
 import argparse
 import csv
@@ -69,10 +69,13 @@ def with_decomposition(a):
     if not a.decomposition:
         return a.deck
     method, *scale = a.decomposition.split()
+    distributed = "distributed" in scale  # `set-up = distributed` (each rank generates its slab)
+    scale = [w for w in scale if w != "distributed"]
     with open(a.deck) as f:
         lines = f.read().split("\n")
     at = next(i for i, line in enumerate(lines) if line.strip().startswith("use finite element model"))
     block = ["      begin decomposition", f"        method = {method}",
+             *(["        set-up = distributed"] if distributed else []),
              *([f"        coordinate scale = {' '.join(scale)}"] if scale else []), "      end decomposition"]
     return deck_copy(a, "\n".join(lines[:at + 1] + block + lines[at + 1:]))
 
@@ -230,6 +233,7 @@ def agree(a):
 
 
 def restart(a):
+    a.deck = with_decomposition(a)  # --decomposition: both runs with the block (OUT/deck.i)
     full, resumed = full_and_stopped(a.tribex, a.deck, a.out, a.ranks, a.stop, "resumed")
     # --remapped: the resume goes through the move onto a partition by global numbers (restart_remap.hpp)
     # although the rank count is the same (test hook TRIBEX_RESTART_REMAP=1): the move must be lossless.

@@ -3,7 +3,11 @@
 """Rank 0's set-up memory and the partition's wall time by `begin decomposition` method (issue 57 scope 1;
 tools/bench/README.md "Partition by all the ranks").
 
-  partition_methods.py TRIBEX DECK OUT --ranks 4 16 --methods metis ptscotch
+  partition_methods.py TRIBEX DECK OUT --ranks 4 16 --methods metis ptscotch distributed
+
+Method `distributed` is `method = ptscotch` with `set-up = distributed` (issue 57 scope 2: every rank
+generates its slab of a generated mesh; its partition time is that of the whole distributed set-up of the
+mesh: slabs, dual graph, PT-Scotch, the elements' exchange, the parts and their nodes' holders).
 
 Runs a copy of DECK (OUT/METHOD/deck.i, with a `begin decomposition` block after its `use finite element
 model` line) under mpiexec (oversubscribed) at each rank count into OUT/METHOD/npN, skipping a run whose
@@ -38,7 +42,9 @@ def deck_with_method(deck, method, out):
     at = next((i for i, line in enumerate(lines) if line.strip().startswith("use finite element model")), None)
     if at is None:
         fail(f"{deck}: no 'use finite element model' line to put the decomposition block after")
-    block = ["      begin decomposition", f"        method = {method}", "      end decomposition"]
+    # "distributed": PT-Scotch with `set-up = distributed` (every rank generates its slab, issue 57 scope 2).
+    block = ["      begin decomposition", f"        method = {'ptscotch' if method == 'distributed' else method}",
+             *(["        set-up = distributed"] if method == "distributed" else []), "      end decomposition"]
     os.makedirs(out, exist_ok=True)
     path = os.path.join(out, "deck.i")
     with open(path, "w") as f:
@@ -75,7 +81,8 @@ def main():
     ap.add_argument("deck")
     ap.add_argument("out")
     ap.add_argument("--ranks", type=int, nargs="+", default=[4, 16])
-    ap.add_argument("--methods", nargs="+", default=["metis", "ptscotch"], choices=["metis", "ptscotch", "rcb"])
+    ap.add_argument("--methods", nargs="+", default=["metis", "ptscotch"],
+                    choices=["metis", "ptscotch", "rcb", "distributed"])
     a = ap.parse_args()
     if any(n < 2 for n in a.ranks):
         fail("--ranks: 2 or more (one rank does not partition)")
