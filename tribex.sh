@@ -58,13 +58,13 @@ case "$cmd" in
     ensure_packages; build build ;;
   demo)
     # The adhesive indentation (W = 0.05 J/m^2) and its W = 0 twin run side by side, one per core
-    # (about 3 minutes on an idle 2-core machine), from about 120 nN down past pull-off; then the
+    # (quarter models, about 15 s on an idle 2-core machine), from about 120 nN down past pull-off; then the
     # a-versus-P plot of both against DMT and Hertz (verification/dmt/compare.py). The W = 0 run is
     # quiet so that the terminal shows one progress line.
     ensure_packages; build build
     out="$ROOT/demo_output"
     rm -rf "$out/dmt" "$out/hertz"; mkdir -p "$out"
-    log "running the adhesive indentation (W = 0.05 J/m^2) and the one without adhesion (W = 0) side by side, a few minutes"
+    log "running the adhesive indentation (W = 0.05 J/m^2) and the one without adhesion (W = 0) side by side, under a minute"
     build/bin/tribex run inputs/examples/demo_hertz.i -o "$out/hertz" --quiet & hertz_pid=$!
     build/bin/tribex run inputs/examples/demo.i -o "$out/dmt" || { kill "$hertz_pid" 2>/dev/null; exit 1; }
     wait "$hertz_pid"

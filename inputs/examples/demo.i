@@ -11,7 +11,9 @@
 # (`./tribex.sh demo` runs the two side by side, one per core, then the comparison and the plot.)
 #
 # The mesh is verification/dmt/dmt_coarse.i's generated asperity refined to 0.4 nm in a 4 nm fine
-# region (the contact radius stays under 3.2 nm here, 8 elements), on an 80 x 80 x 40 nm substrate;
+# region (the contact radius stays under 3.2 nm here, 8 elements), on a 60 x 60 x 30 nm substrate, as a
+# quarter model (x, y >= 0, the planes x = 0 and y = 0 held in x resp. y: 7,529 hex8 instead of 30,116;
+# history.csv holds a quarter of the forces and areas, which compare.py reads from log.txt and multiplies by 4);
 # the tip top is pushed down 0.36 nm at 3 m/s (a 40 ps smooth start), held 10 ps, then pulled up at
 # 4 m/s until the apex is 0.3 nm above contact, past pull-off (about +0.03 nm).
 begin sierra demo
@@ -48,6 +50,7 @@ begin sierra demo
 
   begin finite element model asperity
     begin generated asperity
+      symmetry = quarter            # x, y >= 0: a quarter of the elements; forces and areas are 1/4
       radius = 27 nm
       tip width = 20 nm
       tip height = 12 nm
@@ -83,6 +86,14 @@ begin sierra demo
       begin fixed displacement
         node set = tip_top
         components = x y
+      end fixed displacement
+      begin fixed displacement      # the symmetry planes x = 0 and y = 0
+        node set = symmetry_x
+        components = x
+      end fixed displacement
+      begin fixed displacement
+        node set = symmetry_y
+        components = y
       end fixed displacement
       begin prescribed displacement
         node set = tip_top

@@ -1,6 +1,6 @@
 # demo_hertz.i -- the W = 0 twin of demo.i (the deck `./tribex.sh demo` runs beside it): the same
 # sphere, flat, mesh and driving with frictionless contact and no adhesion, so the two runs differ
-# only in W. Run: build/bin/tribex run inputs/examples/demo_hertz.i -o demo_output/hertz
+# only in W (a quarter model, as demo.i). Run: build/bin/tribex run inputs/examples/demo_hertz.i -o demo_output/hertz
 begin sierra demo_hertz
   begin function push
     type = piecewise linear
@@ -35,6 +35,7 @@ begin sierra demo_hertz
 
   begin finite element model asperity
     begin generated asperity
+      symmetry = quarter            # x, y >= 0: a quarter of the elements; forces and areas are 1/4
       radius = 27 nm
       tip width = 20 nm
       tip height = 12 nm
@@ -70,6 +71,14 @@ begin sierra demo_hertz
       begin fixed displacement
         node set = tip_top
         components = x y
+      end fixed displacement
+      begin fixed displacement      # the symmetry planes x = 0 and y = 0
+        node set = symmetry_x
+        components = x
+      end fixed displacement
+      begin fixed displacement
+        node set = symmetry_y
+        components = y
       end fixed displacement
       begin prescribed displacement
         node set = tip_top
