@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "mesh/grid_cell.hpp"
 #include "mesh/mesh_error.hpp"
 
 namespace tribex::mesh {
@@ -141,15 +142,7 @@ void add_grid(Mesh& mesh, const std::string& name, const std::array<std::vector<
   for (std::int64_t k = 0; k < nz; ++k)
     for (std::int64_t j = 0; j < ny; ++j)
       for (std::int64_t i = 0; i < nx; ++i) {
-        int* c = &mesh.connectivity[p];
-        c[0] = node(i, j, k);
-        c[1] = node(i + 1, j, k);
-        c[2] = node(i + 1, j + 1, k);
-        c[3] = node(i, j + 1, k);
-        c[4] = node(i, j, k + 1);
-        c[5] = node(i + 1, j, k + 1);
-        c[6] = node(i + 1, j + 1, k + 1);
-        c[7] = node(i, j + 1, k + 1);
+        grid_cell_nodes(node, i, j, k, &mesh.connectivity[p]);
         p += 8;
       }
   mesh.blocks.push_back({name, static_cast<int>(element_offset), static_cast<int>(element_count)});

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <iterator>
 
+#include "mesh/grid_cell.hpp"
 #include "mesh/mesh_error.hpp"
 
 namespace tribex::mesh {
@@ -26,14 +27,7 @@ void corners(const GeneratedPlan& plan, int e, int* c) {
   const int local = e - g.element_offset;
   const int i = local % nx, j = (local / nx) % ny, k = local / (nx * ny);
   const auto node = [&](int a, int b, int d) { return g.node_offset + a + (nx + 1) * (b + (ny + 1) * d); };
-  c[0] = node(i, j, k);
-  c[1] = node(i + 1, j, k);
-  c[2] = node(i + 1, j + 1, k);
-  c[3] = node(i, j + 1, k);
-  c[4] = node(i, j, k + 1);
-  c[5] = node(i + 1, j, k + 1);
-  c[6] = node(i + 1, j + 1, k + 1);
-  c[7] = node(i, j + 1, k + 1);
+  grid_cell_nodes(node, i, j, k, c);
 }
 
 // The coordinates of global node n: the axes at (i, j, k), then the grid's map (generate_asperity

@@ -16,6 +16,7 @@
 #include "mesh/box.hpp"
 #include "mesh/generated_plan.hpp"
 #include "mesh/mesh_error.hpp"
+#include "tests/support/mpi_hertz_asperity.hpp"
 
 namespace tribex::mesh {
 namespace {
@@ -24,20 +25,6 @@ struct Pair {
   Mesh whole;
   GeneratedPlan plan;
 };
-
-AsperitySpec small_asperity() {
-  AsperitySpec a;  // tests/parallel/mpi_hertz.i's sizes
-  a.radius = 27e-9;
-  a.tip_width = 32e-9;
-  a.tip_height = 26e-9;
-  a.substrate_width = 60e-9;
-  a.substrate_depth = 30e-9;
-  a.element_size = 1.6e-9;
-  a.fine_half_width = 6.4e-9;
-  a.fine_depth = 3.2e-9;
-  a.grading_ratio = 1.35;
-  return a;
-}
 
 Pair graded_box() {
   BoxSpec b;
@@ -57,14 +44,14 @@ Pair box_and_asperity() {
   b.intervals = {3, 3, 2};
   Pair p;
   add_box(p.whole, b);
-  append(p.whole, generate_asperity(small_asperity()));
+  append(p.whole, generate_asperity(test::mpi_hertz_asperity()));
   append_plan(p.plan, plan_box(b));
-  append_plan(p.plan, plan_asperity(small_asperity()));
+  append_plan(p.plan, plan_asperity(test::mpi_hertz_asperity()));
   return p;
 }
 
 Pair quarter_coated() {
-  AsperitySpec a = small_asperity();
+  AsperitySpec a = test::mpi_hertz_asperity();
   a.quarter = true;
   a.coating_thickness = 2e-9;
   a.coating_layers = 4;
@@ -158,7 +145,7 @@ TEST(GeneratedPlan, BadSpecsFailAsTheGenerators) {
   BoxSpec b;
   b.intervals = {0, 1, 1};
   EXPECT_THROW(plan_box(b), MeshError);
-  AsperitySpec a = small_asperity();
+  AsperitySpec a = test::mpi_hertz_asperity();
   a.tip_width = 60e-9;  // corners outside the sphere
   EXPECT_THROW(plan_asperity(a), MeshError);
   GeneratedPlan twice = plan_box(BoxSpec{});

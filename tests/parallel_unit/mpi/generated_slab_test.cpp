@@ -23,25 +23,12 @@
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/element_slab.hpp"
 #include "solver/parallel/mesh_part.hpp"
+#include "tests/support/mpi_hertz_asperity.hpp"
 
 namespace tribex {
 namespace {
 
 namespace par = solver::parallel;
-
-mesh::AsperitySpec hertz_asperity() {
-  mesh::AsperitySpec a;  // tests/parallel/mpi_hertz.i
-  a.radius = 27e-9;
-  a.tip_width = 32e-9;
-  a.tip_height = 26e-9;
-  a.substrate_width = 60e-9;
-  a.substrate_depth = 30e-9;
-  a.element_size = 1.6e-9;
-  a.fine_half_width = 6.4e-9;
-  a.fine_depth = 3.2e-9;
-  a.grading_ratio = 1.35;
-  return a;
-}
 
 struct Case {
   mesh::Mesh whole;
@@ -60,7 +47,7 @@ Case boxes_and_asperity() {
   indenter.origin = {5e-9, 5e-9, 12e-9};
   indenter.size = {6e-9, 6e-9, 3e-9};
   indenter.intervals = {3, 3, 2};
-  mesh::AsperitySpec a = hertz_asperity();
+  mesh::AsperitySpec a = test::mpi_hertz_asperity();
   a.place_apex = true;
   a.apex = {0.0, 0.0, 60e-9};
   Case c;
@@ -74,7 +61,7 @@ Case boxes_and_asperity() {
 }
 
 Case quarter_coated() {
-  mesh::AsperitySpec a = hertz_asperity();
+  mesh::AsperitySpec a = test::mpi_hertz_asperity();
   a.quarter = true;
   a.coating_thickness = 2e-9;
   a.coating_layers = 3;
@@ -87,7 +74,7 @@ Case quarter_coated() {
 }
 
 Case tip_alone() {
-  mesh::AsperitySpec a = hertz_asperity();
+  mesh::AsperitySpec a = test::mpi_hertz_asperity();
   a.tip_only = true;
   a.place_apex = true;
   a.apex = {1e-9, 2e-9, 3e-9};
@@ -166,16 +153,3 @@ TEST(GeneratedSlab, SetsOfTheSerialMesh) {
 
 }  // namespace
 }  // namespace tribex
-
-int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  if (tribex::solver::parallel::rank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  int failed = RUN_ALL_TESTS();
-  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Finalize();
-  return failed;
-}

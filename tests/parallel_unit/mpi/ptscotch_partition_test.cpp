@@ -27,6 +27,7 @@
 #include "solver/parallel/partition.hpp"
 #include "solver/parallel/ptscotch_partition.hpp"
 #include "tests/parallel_unit/cube_mesh.hpp"
+#include "tests/support/mpi_hertz_asperity.hpp"
 
 namespace tribex {
 namespace {
@@ -34,19 +35,7 @@ namespace {
 namespace par = solver::parallel;
 
 // The asperity of tests/parallel/mpi_hertz.i (1.6 nm elements): a tip and a substrate, two bodies.
-mesh::Mesh asperity_mesh() {
-  mesh::AsperitySpec a;
-  a.radius = 27e-9;
-  a.tip_width = 32e-9;
-  a.tip_height = 26e-9;
-  a.substrate_width = 60e-9;
-  a.substrate_depth = 30e-9;
-  a.element_size = 1.6e-9;
-  a.fine_half_width = 6.4e-9;
-  a.fine_depth = 3.2e-9;
-  a.grading_ratio = 1.35;
-  return mesh::generate_asperity(a);
-}
+mesh::Mesh asperity_mesh() { return mesh::generate_asperity(test::mpi_hertz_asperity()); }
 
 // This rank's slab of `whole` under the even split (what scatter_element_slabs sends it).
 par::ElementSlab slab_of(const mesh::Mesh& whole) {
@@ -166,17 +155,3 @@ TEST(PtScotchPartition, RanksWithoutElementsTakePart) {
 
 }  // namespace
 }  // namespace tribex
-
-// MPI around GoogleTest: every rank runs every test (the calls are collective); only rank 0 prints.
-int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  if (tribex::solver::parallel::rank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  int failed = RUN_ALL_TESTS();
-  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Finalize();
-  return failed;
-}
