@@ -165,11 +165,15 @@ def main(argv=None):
     ap.add_argument("--frictionless", action="store_true", help="no shear under the punch (default: welded)")
     ap.add_argument("--plain", action="store_true", help="piecewise-constant p, q (no edge weight)")
     ap.add_argument("--csv", help="write p(r), q(r) on a grid to this CSV")
-    ap.add_argument("--points", type=int, default=101, help="grid points of the CSV, r/a in [0, 1)")
+    ap.add_argument("--points", type=int, default=100, help="grid points of the CSV, r/a = 0, 1/points, ... < 1")
+    ap.add_argument("--radius", type=float, default=10e-9, help="a in m, for K and P in SI (default 10e-9)")
+    ap.add_argument("--youngs", type=float, default=100e9, help="E in Pa (default 100e9)")
+    ap.add_argument("--depth", type=float, default=0.1e-9, help="delta in m (default 0.1e-9)")
     a = ap.parse_args(argv)
-    if not 0.0 <= a.nu <= 0.5 or a.rings < 1 or a.points < 2:
+    if not 0.0 <= a.nu <= 0.5 or a.rings < 1 or a.points < 2 or min(a.radius, a.youngs, a.depth) <= 0:
         print(f"welded_punch.py: error: need 0 <= nu <= 0.5, rings >= 1, "
-              f"points >= 2 (got nu = {a.nu}, rings = {a.rings}, points = {a.points})", file=sys.stderr)
+              f"points >= 2, positive radius, youngs, depth (got nu = {a.nu}, rings = {a.rings}, points = {a.points}, "
+              f"radius = {a.radius}, youngs = {a.youngs}, depth = {a.depth})", file=sys.stderr)
         return 2
     welded = not a.frictionless
     sol = solve(a.nu, a.rings, welded, 0.0 if a.plain else 0.5)
@@ -177,6 +181,8 @@ def main(argv=None):
     name = "Mossakovskii" if welded else "Boussinesq"
     print(f"{'welded' if welded else 'frictionless'} punch, nu = {a.nu:g}, {a.rings} rings: K/(G a) = "
           f"{sol['K']:.8g}; {name} {ref:.8g} ({100 * (sol['K'] / ref - 1):+.4f} %)")
+    K = sol["K"] * a.youngs / (2 * (1 + a.nu)) * a.radius
+    print(f"a = {a.radius:g} m, E = {a.youngs:g} Pa: K = {K:.6g} N/m, P = {K * a.depth:.6g} N at delta = {a.depth:g} m")
     if a.csv:
         write_csv(a.csv, sol, a.nu, welded, a.points)
         print("wrote", a.csv)
