@@ -17,8 +17,8 @@ With --pressure-tolerance, also the pressure under the punch (the result field r
 end: the force the punch puts into the body at each of its nodes, over the node's tributary area), ring by
 ring away from the singular edge (r < 0.8 a), against the welded punch's pressure on a half-space for the
 run's own total force P (welded_punch.py: a ring boundary-element solution, converged to 1e-5; README.md
-"The reference"), the reference's pointwise p taken at the same nodes with the same area weights; each
-ring's relative difference is extrapolated over the meshes as the stiffness is (order measured with three
+"The welded punch's pressure"), the reference's pointwise p taken at the same nodes with the same area
+weights; each ring's relative difference is extrapolated over the meshes as the stiffness is (order measured with three
 meshes, --pressure-order with two). Boussinesq's frictionless p(r) = P / (2 pi a sqrt(a^2 - r^2)) is shown
 beside it, with whether the tolerance tells the two apart.
 
@@ -72,7 +72,7 @@ def top_areas(X, C, top):
 
 def welded_reference():
     """The welded punch's pressure on the half-space at nu = NU (welded_punch.py, 128 rings: within 1e-5 of
-    512 rings at r < 0.9 a, README.md "The reference"), solved once."""
+    512 rings at r <= 0.9 a; README.md, "The welded punch's pressure"), solved once."""
     global _WELDED
     if _WELDED is None:
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -102,7 +102,8 @@ def ring_pressures(out):
     inner = r < 0.999 * A  # the references are singular at the edge; the rings stop at 0.8 a
     module, sol = welded_reference()
     pointwise = {"boussinesq": P / (2 * math.pi * A * np.sqrt(np.maximum(A * A - r * r, 1e-300))),
-                 "welded": np.where(inner, module.pressure(sol, np.minimum(r / A, 0.999))[0], 0) * P / (2 * math.pi * A * A)}
+                 "welded": np.where(inner, module.pressure(sol, np.minimum(r / A, 0.999))[0], 0)
+                 * P / (2 * math.pi * A * A)}
     fe, ref = [], {k: [] for k in pointwise}
     for lo, hi in RINGS:
         m = (r >= lo * A * (1 - 1e-9)) & (r < hi * A * (1 - 1e-9))
@@ -145,7 +146,8 @@ def pressure_check(meshes, tolerance, order, plot):
     extrapolated, orders = extrapolate(cells, np.array(diff), order)
     free_extrapolated, _ = extrapolate(cells, np.array(free), order)
     for (lo, hi), e, b, o in zip(RINGS, extrapolated, free_extrapolated, orders):
-        print(f"pressure, ring {lo:.1f}-{hi:.1f} a: extrapolated {100 * e:+.2f} % from the welded punch (order {o:.2f}, "
+        print(f"pressure, ring {lo:.1f}-{hi:.1f} a: extrapolated {100 * e:+.2f} % from the welded punch "
+              f"(order {o:.2f}, "
               f"tolerance {100 * tolerance:.1f} %; {100 * b:+.2f} % from Boussinesq)")
     if plot:
         plot_pressure(runs, plot)

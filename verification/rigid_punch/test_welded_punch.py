@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Checks of welded_punch.py, the reference for the pressure under the welded punch (README.md, "The
-reference"); each prints its figures and exits 1 if one is outside its tolerance (stated with each).
+welded punch's pressure"); each prints its figures and exits 1 if one is outside its tolerance (stated with each).
 
   /usr/bin/python3 test_welded_punch.py greens|frictionless|incompressible|mossakovskii|convergence
 
@@ -125,8 +125,9 @@ def convergence():
         if previous is not None and np.any(err > previous):
             FAILED.append(f"{n} rings: p did not converge monotonically")
         previous = err
-    check("128 rings (compare.py's), max |p/p_512 - 1|", np.max(np.abs(wp.pressure(wp.solve(0.3, 128), r)[0] / fine - 1)),
-          1e-5)
+    p128, _ = wp.pressure(wp.solve(0.3, 128), r)
+    # compare.py's tolerances are per cent; 5e-5 keeps the reference's own error 20 times under 0.1 %
+    check("128 rings (compare.py's), max |p/p_512 - 1|", np.max(np.abs(p128 / fine - 1)), 5e-5)
 
 
 def main():
