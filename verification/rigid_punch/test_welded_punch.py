@@ -11,7 +11,7 @@ frictionless:   K = 4 G a/(1 - nu) and p = P/(2 pi a sqrt(a^2 - r^2)) (Boussines
                 exact for any number of rings; with plain rings converging in their number.
 incompressible: welded at nu = 1/2 is the frictionless punch (the coupling 1 - 2 nu vanishes).
 mossakovskii:   welded K against 4 G a ln(3 - 4 nu)/(1 - 2 nu) at nu = 0 ... 0.45, converged in the rings.
-convergence:    the welded p(r) at fixed r, and its means over compare.py's rings, as the rings double.
+convergence:    the welded p(r) at fixed r as the rings double, and plain rings (no edge weight) agreeing.
 """
 import math
 import os
@@ -128,6 +128,12 @@ def convergence():
     p128, _ = wp.pressure(wp.solve(0.3, 128), r)
     # compare.py's tolerances are per cent; 5e-5 keeps the reference's own error 20 times under 0.1 %
     check("128 rings (compare.py's), max |p/p_512 - 1|", np.max(np.abs(p128 / fine - 1)), 5e-5)
+    # The weight is a choice, not an assumption: plain rings (p, q constant on each) reach the same punch.
+    plain = wp.solve(0.3, 256, alpha=0.0)
+    p_plain, _ = wp.pressure(plain, r[:-1])  # r <= 0.8 a, where compare.py looks
+    print("  256 plain rings: " + "  ".join(f"{x:>10.2e}" for x in np.abs(p_plain / fine[:-1] - 1)))
+    check("256 plain rings, K / Mossakovskii - 1", plain["K"] / wp.mossakovskii_K(0.3) - 1, 1e-6)
+    check("256 plain rings, max |p/p_512 - 1| for r <= 0.8 a", np.max(np.abs(p_plain / fine[:-1] - 1)), 5e-5)
 
 
 def main():
