@@ -6,7 +6,7 @@ welded punch's pressure"); each prints its figures and exits 1 if one is outside
   /usr/bin/python3 test_welded_punch.py greens|frictionless|incompressible|mossakovskii|convergence
 
 greens:         the ring Green's functions against Boussinesq's and Cerruti's point loads integrated
-                around the ring numerically (Johnson, Contact Mechanics, eqs. 3.2 and 3.19b-c).
+                around the ring numerically (Johnson, Contact Mechanics (1985) ch. 3).
 frictionless:   K = 4 G a/(1 - nu) and p = P/(2 pi a sqrt(a^2 - r^2)) (Boussinesq): with the edge weight
                 exact for any number of rings; with plain rings converging in their number.
 incompressible: welded at nu = 1/2 is the frictionless punch (the coupling 1 - 2 nu vanishes).
