@@ -180,6 +180,28 @@ AsperityAxes asperity_axes(const AsperitySpec& s) {
   return a;
 }
 
+// The names one body of the asperity (substrate or tip) gives its sets.
+struct BodySetNames {
+  const char* body;         // the generated box's prefix
+  const char* bottom;       // its zmin face
+  const char* top;          // its zmax face
+  const char* axis_bottom;  // node set: the bottom's node nearest the axis
+  const char* axis_top;     // node set: the top's node nearest the axis
+  const char* symmetry;     // prefix of the quarter model's symmetry-plane node sets
+};
+
+// A body's sets, the same for substrate and tip: the box's zmin and zmax faces renamed, its sides merged,
+// the nodes nearest the axis on the two faces, the symmetry planes of a quarter model.
+void body_sets(Mesh& m, const BodySetNames& n, bool quarter, const std::function<std::array<double, 2>(int)>& xy) {
+  const std::string body = n.body;
+  rename(m, body + "_zmin", n.bottom);
+  rename(m, body + "_zmax", n.top);
+  merge_sides(m, body, body + "_sides", quarter);
+  axis_node_set(m, n.axis_bottom, n.bottom, xy);
+  axis_node_set(m, n.axis_top, n.top, xy);
+  if (quarter) keep_symmetry_planes(m, body, n.symmetry);
+}
+
 // The substrate's blocks (the coating split off its top layers) and sets, on its grid's (from
 // generate_grid or plan_grid); `xy` gives a node's x and y (for the axis nodes).
 void substrate_sets(Mesh& sub, const AsperityAxes& a, bool quarter, const std::function<std::array<double, 2>(int)>& xy) {
@@ -189,21 +211,12 @@ void substrate_sets(Mesh& sub, const AsperityAxes& a, bool quarter, const std::f
     const int total = sub.blocks.front().element_count;
     sub.blocks = {{"substrate", 0, split}, {"coating", split, total - split}};
   }
-  rename(sub, "substrate_zmax", "substrate_top");
-  rename(sub, "substrate_zmin", "substrate_bottom");
-  merge_sides(sub, "substrate", "substrate_sides", quarter);
-  axis_node_set(sub, "substrate_axis_bottom", "substrate_bottom", xy);
-  axis_node_set(sub, "substrate_axis_top", "substrate_top", xy);
-  if (quarter) keep_symmetry_planes(sub, "substrate", "symmetry_");
+  body_sets(sub, {"substrate", "substrate_bottom", "substrate_top", "substrate_axis_bottom", "substrate_axis_top", "symmetry_"},
+            quarter, xy);
 }
 
 void tip_sets(Mesh& tip, bool quarter, const std::function<std::array<double, 2>(int)>& xy) {
-  rename(tip, "tip_zmin", "tip_surface");
-  rename(tip, "tip_zmax", "tip_top");
-  merge_sides(tip, "tip", "tip_sides", quarter);
-  axis_node_set(tip, "tip_axis_top", "tip_top", xy);
-  axis_node_set(tip, "tip_apex", "tip_surface", xy);
-  if (quarter) keep_symmetry_planes(tip, "tip", "tip_symmetry_");
+  body_sets(tip, {"tip", "tip_surface", "tip_top", "tip_apex", "tip_axis_top", "tip_symmetry_"}, quarter, xy);
 }
 
 // Quarter model: the tip's symmetry-plane nodes join the substrate's (after the two are appended).
