@@ -120,6 +120,38 @@ void check_header(Cursor& c, const char* section, std::uint64_t count, std::uint
            ".." + std::to_string(hi) + ", which is impossible");
 }
 
+// One entity block's header in $Nodes or $Elements (MSH 4.1: entity dimension, entity tag, then the
+// parametric flag or the element type, then the block's count).
+struct EntityBlock {
+  std::int64_t dim = 0;
+  std::int64_t kind = 0;  // $Nodes: parametric (0 or 1); $Elements: the element type
+  std::uint64_t n = 0;
+};
+
+EntityBlock entity_block(Cursor& c) {
+  EntityBlock b;
+  b.dim = c.int32();
+  c.int32();  // entity tag
+  b.kind = c.int32();
+  b.n = c.size();
+  return b;
+}
+
+// The blocks' counts against the section's declared total: more than declared fails at the block that
+// passes it (`seen` so far), fewer at the section's end (check_total).
+void count_block(Cursor& c, const char* section, const char* things, std::uint64_t n, std::uint64_t count,
+                 std::uint64_t& seen) {
+  if (n > count - seen)
+    c.fail(std::string(section) + " blocks hold more " + things + " than the declared " + std::to_string(count));
+  seen += n;
+}
+
+void check_total(Cursor& c, const char* section, const char* things, std::uint64_t seen, std::uint64_t count) {
+  if (seen != count)
+    c.fail(std::string(section) + " blocks hold " + std::to_string(seen) + " " + things + ", not the declared " +
+           std::to_string(count));
+}
+
 }  // namespace
 
 void prescan_msh41(const std::string& path, int (*nodes_per_element)(int type)) {
@@ -180,17 +212,13 @@ void prescan_msh41(const std::string& path, int (*nodes_per_element)(int type)) 
     check_header(c, "$Nodes", count, min_node, max_node);
     std::uint64_t seen = 0;
     for (std::uint64_t b = 0; b < blocks; ++b) {
-      const std::int64_t dim = c.int32();
-      c.int32();  // entity tag
-      const std::int64_t parametric = c.int32();
-      const std::uint64_t n = c.size();
-      if (dim < 0 || dim > 3 || parametric < 0 || parametric > 1) c.fail("$Nodes block header is invalid");
-      if (n > count - seen) c.fail("$Nodes blocks hold more nodes than the declared " + std::to_string(count));
-      seen += n;
-      for (std::uint64_t i = 0; i < n; ++i) check_range(c, "node", c.size(), min_node, max_node);
-      c.skip_doubles(n * (3 + static_cast<std::uint64_t>(parametric * dim)));
+      const EntityBlock e = entity_block(c);  // kind: parametric
+      if (e.dim < 0 || e.dim > 3 || e.kind < 0 || e.kind > 1) c.fail("$Nodes block header is invalid");
+      count_block(c, "$Nodes", "nodes", e.n, count, seen);
+      for (std::uint64_t i = 0; i < e.n; ++i) check_range(c, "node", c.size(), min_node, max_node);
+      c.skip_doubles(e.n * (3 + static_cast<std::uint64_t>(e.kind * e.dim)));
     }
-    if (seen != count) c.fail("$Nodes blocks hold " + std::to_string(seen) + " nodes, not the declared " + std::to_string(count));
+    check_total(c, "$Nodes", "nodes", seen, count);
     c.expect("$EndNodes");
   }
 
@@ -201,21 +229,17 @@ void prescan_msh41(const std::string& path, int (*nodes_per_element)(int type)) 
     check_header(c, "$Elements", count, lo, hi);
     std::uint64_t seen = 0;
     for (std::uint64_t b = 0; b < blocks; ++b) {
-      const std::int64_t dim = c.int32();
-      c.int32();  // entity tag
-      const std::int64_t type = c.int32();
-      const std::uint64_t n = c.size();
-      const int per = type > 0 && type < 1000 ? nodes_per_element(static_cast<int>(type)) : 0;
-      if (dim < 0 || dim > 3 || per <= 0) c.fail("$Elements block has an unknown element type " + std::to_string(type));
-      if (n > count - seen) c.fail("$Elements blocks hold more elements than the declared " + std::to_string(count));
-      seen += n;
-      for (std::uint64_t e = 0; e < n; ++e) {
+      const EntityBlock block = entity_block(c);  // kind: the element type
+      const int per = block.kind > 0 && block.kind < 1000 ? nodes_per_element(static_cast<int>(block.kind)) : 0;
+      if (block.dim < 0 || block.dim > 3 || per <= 0)
+        c.fail("$Elements block has an unknown element type " + std::to_string(block.kind));
+      count_block(c, "$Elements", "elements", block.n, count, seen);
+      for (std::uint64_t e = 0; e < block.n; ++e) {
         check_range(c, "element", c.size(), lo, hi);
         for (int k = 0; k < per; ++k) check_range(c, "element node", c.size(), min_node, max_node);
       }
     }
-    if (seen != count)
-      c.fail("$Elements blocks hold " + std::to_string(seen) + " elements, not the declared " + std::to_string(count));
+    check_total(c, "$Elements", "elements", seen, count);
     c.expect("$EndElements");
   }
 }
