@@ -13,16 +13,13 @@
 #include "inputs/units.hpp"
 #include "tools/adhesion/report.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/common/args.hpp"
-#include "tools/common/errors.hpp"
+#include "tools/common/command.hpp"
 #include "tools/common/text_file.hpp"
 
 namespace tribex::adhesion {
 namespace {
 
-namespace dim = inputs::dim;
-using tools::Args;
-using tools::BadInput;
+using namespace tools::command;
 
 const char* usage =
     "usage: tribex adhesion-curve [--radius 27nm | --tabor MU] [--work 0.05J/m^2] [--z0 0.3nm] [--cutoff H_C]\n"

@@ -11,9 +11,8 @@
 
 #include "inputs/units.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/common/args.hpp"
+#include "tools/common/command.hpp"
 #include "tools/common/csv_record.hpp"
-#include "tools/common/errors.hpp"
 #include "tools/common/subcommands.hpp"
 #include "tools/common/fit_report.hpp"
 #include "tools/common/panel_plot.hpp"
@@ -23,9 +22,7 @@
 namespace tribex::fit {
 namespace {
 
-namespace dim = inputs::dim;
-using tools::Args;
-using tools::BadInput;
+using namespace tools::command;
 
 const char* top_usage =
     "usage: tribex fit friction|synth ... (each with --help)\n"

@@ -11,8 +11,7 @@
 
 #include "inputs/units.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/common/args.hpp"
-#include "tools/common/errors.hpp"
+#include "tools/common/command.hpp"
 #include "tools/common/subcommands.hpp"
 #include "tools/common/json.hpp"
 #include "tools/friction_test/calibration.hpp"
@@ -26,9 +25,7 @@
 namespace tribex::friction_test {
 namespace {
 
-namespace dim = inputs::dim;
-using tools::Args;
-using tools::BadInput;
+using namespace tools::command;
 
 const char* top_usage =
     "usage: tribex friction-test calibrate|static|dynamic|synth ... (each with --help)\n"

@@ -6,9 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "tools/common/args.hpp"
+#include "tools/common/command.hpp"
 #include "tools/common/tabor.hpp"
-#include "tools/common/errors.hpp"
 #include "tools/common/subcommands.hpp"
 #include "tools/common/text_file.hpp"
 #include "contact/rough/gw_integrals.hpp"
@@ -18,8 +17,7 @@
 namespace tribex::cli {
 namespace {
 
-using tools::Args;
-using tools::BadInput;
+using namespace tools::command;
 
 const char* gw_usage =
     "usage: tribex gw SUBCOMMAND [options]   (nondimensional Greenwood-Williamson models, CSV output)\n"

@@ -13,9 +13,8 @@
 
 #include "inputs/units.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/common/args.hpp"
+#include "tools/common/command.hpp"
 #include "tools/common/csv_record.hpp"
-#include "tools/common/errors.hpp"
 #include "tools/common/json.hpp"
 #include "tools/common/text_file.hpp"
 #include "tools/layered/curve.hpp"
@@ -23,9 +22,7 @@
 namespace tribex::layered {
 namespace {
 
-namespace dim = inputs::dim;
-using tools::Args;
-using tools::BadInput;
+using namespace tools::command;
 
 const char* usage =
     "usage: tribex layered --radius R --thickness H[,H2...] --layer-youngs E[,...] --layer-poisson NU[,...]\n"

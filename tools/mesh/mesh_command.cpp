@@ -16,14 +16,12 @@
 #include "mesh/gmsh_io.hpp"
 #include "mesh/output_target.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/common/args.hpp"
-#include "tools/common/errors.hpp"
+#include "tools/common/command.hpp"
 
 namespace tribex::cli {
 namespace {
 
-using tools::Args;
-using tools::BadInput;
+using namespace tools::command;
 
 const char* mesh_usage =
     "usage: tribex mesh GENERATOR [options]   (tribex mesh GENERATOR --help)\n"

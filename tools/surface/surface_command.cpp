@@ -9,8 +9,7 @@
 
 #include "mesh/afm/height_map.hpp"
 #include "mesh/afm/preprocess.hpp"
-#include "tools/common/args.hpp"
-#include "tools/common/errors.hpp"
+#include "tools/common/command.hpp"
 #include "tools/common/subcommands.hpp"
 #include "tools/common/text_file.hpp"
 #include "tools/surface/mccool.hpp"
@@ -23,8 +22,7 @@ namespace tribex::cli {
 namespace {
 
 using mesh::afm::HeightMap;
-using tools::Args;
-using tools::BadInput;
+using namespace tools::command;
 
 const char* stats_usage =
     "usage: tribex surface stats FILE [options]\n"
