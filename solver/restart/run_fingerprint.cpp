@@ -37,6 +37,20 @@ std::string mesh_sha256(const mesh::GeneratedPlan& plan) {
   return hash.hex();
 }
 
+std::string mesh_sha256(const mesh::ExodusSlices& file) {
+  inputs::Sha256 hash;
+  constexpr int chunk = 65536;
+  for (int first = 0; first < file.node_count(); first += chunk) {
+    const std::vector<double> x = file.coordinates(first, std::min(chunk, file.node_count() - first));
+    hash.update({reinterpret_cast<const char*>(x.data()), x.size() * sizeof(double)});
+  }
+  for (int first = 0; first < file.element_count(); first += chunk) {
+    const std::vector<int> c = file.connectivity(first, std::min(chunk, file.element_count() - first));
+    hash.update({reinterpret_cast<const char*>(c.data()), c.size() * sizeof(int)});
+  }
+  return hash.hex();
+}
+
 std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash) {
   if (!archive.has("deck_text") || !archive.has("mesh_sha256")) return "";  // an earlier tribex: not recorded
   if (from_codes(archive.integer_array("mesh_sha256")) != mesh_hash) return "the mesh differs (coordinates or connectivity)";
