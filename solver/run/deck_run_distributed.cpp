@@ -105,6 +105,7 @@ std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck
     why = "the file has " + std::to_string(exodus->unused_nodes()) + " nodes no element uses, which rank 0 drops and renumbers";
     return nullptr;
   }
+  why.clear();
   return exodus;
 }
 
