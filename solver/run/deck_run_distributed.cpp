@@ -162,6 +162,7 @@ bool DeckRun::build_parts_distributed() {
   agree_on_errors(error);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   finish_distributed_parts(*source, g, scale, travel, seconds);
+  source.reset();  // the plan, or the file's slices and routed sets (and the open file): not held while the model is built
   model_.emplace(build_model(deck_, std::move(g.part), contact));
   return true;
 }
