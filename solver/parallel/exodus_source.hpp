@@ -6,7 +6,7 @@
 //   - the connectivity of its slab of the elements (slab_offsets' even split): 32 B per element;
 //   - the coordinates of its even share of the node numbers, the nodes it is "home" to: 24 B per node;
 //   - an even share of the entries of every node set and side set.
-// Routed once, when the source is made (three all-to-alls of ints):
+// Routed once, in route() (two all-to-alls of ints and one sum over the ranks):
 //   - every side-set entry (set, position, element, face) to its element's slab rank, which then knows the
 //     sides of its elements;
 //   - every node-set entry, and every node of a side of a side set that has no node set of its name

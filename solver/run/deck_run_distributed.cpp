@@ -85,7 +85,7 @@ std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck
   try {
     std::string not_exodus;
     if (auto plan = generated_plan(deck, why)) source = std::make_unique<parallel::PlanSource>(std::move(*plan));
-    else if (!(path = exodus_slices_path(deck, not_exodus)) && why == "the mesh is read from a file") why = not_exodus;
+    else if (!(path = exodus_slices_path(deck, not_exodus)) && !not_exodus.empty()) why = not_exodus;  // a file's reason
   } catch (...) {
     error = std::current_exception();
   }
@@ -102,7 +102,7 @@ std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck
   agree_on_errors(error);
   exodus->route();
   if (exodus->unused_nodes() > 0) {
-    why = "the file has " + std::to_string(exodus->unused_nodes()) + " nodes no element uses, which rank 0 drops and renumbers";
+    why = "the file has " + std::to_string(exodus->unused_nodes()) + " node(s) no element uses, which rank 0 drops and renumbers";
     return nullptr;
   }
   why.clear();
@@ -124,11 +124,11 @@ bool DeckRun::build_parts_distributed() {
   // As on rank 0 in the serial set-up: each large temporary freed goes back to the system at once.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
   std::string why;
-  std::unique_ptr<parallel::ElementSource> source = element_source(deck_, why);
-  if (source && region_.results && region_.results->exodus) {
-    source.reset();
+  std::unique_ptr<parallel::ElementSource> source;
+  if (region_.results && region_.results->exodus)  // decided before any rank reads a slice of a mesh file
     why = "results.exo is written by rank 0 from the whole mesh";
-  }
+  else
+    source = element_source(deck_, why);
   ContactFaces contact;
   std::optional<ContactTravel> travel;
   parallel::AxisScale scale = parallel::kUnitScale;

@@ -245,7 +245,7 @@ std::optional<std::string> exodus_slices_path(const inputs::Deck& deck, std::str
   // What build_mesh adds to the file's mesh needs the whole mesh (as for generated_plan).
   why_not.clear();
   if (spec.source == inputs::FiniteElementModelSpec::Source::gmsh) why_not = "the mesh is read from a gmsh file (Exodus II only is read in slices)";
-  else if (spec.source != inputs::FiniteElementModelSpec::Source::exodus) why_not = "the mesh is not read from a file";
+  else if (spec.source != inputs::FiniteElementModelSpec::Source::exodus) return std::nullopt;  // generated_plan's case
   else if (!spec.surface_layers.empty()) why_not = "surface layer blocks are split off the whole mesh";
   else if (!deck.procedure.region.rigid_bodies.empty()) why_not = "rigid bodies collect their nodes from the whole mesh";
   if (!why_not.empty()) return std::nullopt;
