@@ -178,7 +178,7 @@ std::string exodus::last_error() {
   return m;
 }
 
-exodus::Header exodus::open_checked(const std::string& path) {
+exodus::Header exodus::open_checked(const std::string& path, bool walk_header) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, "no such file; check 'database name' (relative to the deck)");
@@ -189,8 +189,8 @@ exodus::Header exodus::open_checked(const std::string& path) {
     fail(path, "not an Exodus II file (no netCDF signature in its first bytes, " + std::to_string(fs::file_size(path, ec)) +
                    " bytes); give a .exo/.g file written by Cubit, SEACAS or tribex, or a gmsh .msh file");
   // Every size the header states, checked against the file before the library allocates for it.
-  if (h.kind != "netCDF-4") prescan_exodus_file(path);
-  else check_netcdf4_exodus(path);
+  if (walk_header && h.kind != "netCDF-4") prescan_exodus_file(path);
+  else if (walk_header) check_netcdf4_exodus(path);
   quiet_exodus();
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0;

@@ -68,8 +68,9 @@ struct Header {
   std::vector<int> block_ids;  // [block] its Exodus id
   double per_metre = 1.0;      // the coordinates' length unit (length_unit_of)
 };
-/// Throws MeshError (one line, naming `path`).
-Header open_checked(const std::string& path);
+/// Throws MeshError (one line, naming `path`). `walk_header` false skips the netCDF header's walk (the
+/// file's first 16 MiB read and checked), for a rank whose file another rank has just walked (exodus_source.hpp).
+Header open_checked(const std::string& path, bool walk_header = true);
 
 /// One kind of set (node or side) of an open file: names (Sierra's defaults for unnamed ones), ids and
 /// entry counts, in file order. MeshError for a set that cannot be read or two sets of one name.

@@ -20,7 +20,8 @@ std::string reason() {
 
 }  // namespace
 
-ExodusSlices::ExodusSlices(const std::string& path) : path_(path), h_(exodus::open_checked(path)) {
+ExodusSlices::ExodusSlices(const std::string& path, bool walk_header)
+    : path_(path), h_(exodus::open_checked(path, walk_header)) {
   try {
     node_sets_ = exodus::set_outline(h_.id, h_, false, path_);
     side_sets_ = exodus::set_outline(h_.id, h_, true, path_);

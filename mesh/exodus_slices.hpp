@@ -26,7 +26,8 @@ namespace tribex::mesh {
 
 class ExodusSlices {
  public:
-  explicit ExodusSlices(const std::string& path);  // MeshError, one line
+  /// MeshError, one line. `walk_header`: as exodus::open_checked's (false: another rank walked this file).
+  explicit ExodusSlices(const std::string& path, bool walk_header = true);
   ~ExodusSlices();
   ExodusSlices(const ExodusSlices&) = delete;
   ExodusSlices& operator=(const ExodusSlices&) = delete;

@@ -44,7 +44,7 @@ std::vector<int> send_records(const std::vector<int>& data, int width, To to) {
 
 }  // namespace
 
-ExodusSource::ExodusSource(const std::string& path) : file_(path) {
+ExodusSource::ExodusSource(const std::string& path, bool walk_header) : file_(path, walk_header) {
   const int ranks = size(), me = rank();
   element_offset_ = slab_offsets(file_.element_count(), ranks);
   node_offset_ = slab_offsets(file_.node_count(), ranks);

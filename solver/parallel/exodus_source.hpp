@@ -33,9 +33,9 @@ namespace tribex::solver::parallel {
 class ExodusSource final : public ElementSource {
  public:
   /// Not collective: opens the file and reads this rank's slab, nodes and set entries. MeshError for a bad
-  /// file, thrown by the rank that meets it (by all of them for the header's checks, which every rank
-  /// makes): the caller agrees on it before route().
-  explicit ExodusSource(const std::string& path);
+  /// file, thrown by the rank that meets it: the caller agrees on it before route(). `walk_header` false:
+  /// the netCDF header's walk (16 MiB read per rank) is left to one rank that opened the file first.
+  explicit ExodusSource(const std::string& path, bool walk_header = true);
   /// Collective over MPI_COMM_WORLD: the routing above.
   void route();
 

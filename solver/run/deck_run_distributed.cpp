@@ -91,15 +91,19 @@ std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck
   }
   agree_on_errors(error);
   if (!path) return source;
+  // Rank 0 opens the file first and walks its netCDF header (read_exodus's checks, the file's first 16 MiB);
+  // the other ranks, once it has, open it with the header's remaining checks only (not P reads of 16 MiB).
   std::unique_ptr<parallel::ExodusSource> exodus;
-  try {
-    exodus = std::make_unique<parallel::ExodusSource>(*path);
-  } catch (const mesh::MeshError& e) {
-    error = std::make_exception_ptr(SetupError(e.what()));
-  } catch (...) {
-    error = std::current_exception();
+  for (const bool first : {true, false}) {
+    try {
+      if (first == parallel::is_root()) exodus = std::make_unique<parallel::ExodusSource>(*path, first);
+    } catch (const mesh::MeshError& e) {
+      error = std::make_exception_ptr(SetupError(e.what()));
+    } catch (...) {
+      error = std::current_exception();
+    }
+    agree_on_errors(error);
   }
-  agree_on_errors(error);
   exodus->route();
   if (exodus->unused_nodes() > 0) {
     why = "the file has " + std::to_string(exodus->unused_nodes()) + " node(s) no element uses, which rank 0 drops and renumbers";
