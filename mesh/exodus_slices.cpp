@@ -31,9 +31,15 @@ ExodusSlices::ExodusSlices(const std::string& path, bool walk_header)
   }
 }
 
-ExodusSlices::~ExodusSlices() { ex_close(h_.id); }
+ExodusSlices::~ExodusSlices() { close(); }
+
+void ExodusSlices::close() {
+  if (h_.id >= 0) ex_close(h_.id);
+  h_.id = -1;
+}
 
 std::vector<int> ExodusSlices::connectivity(int first, int count) const {
+  if (h_.id < 0) fail(path_, "read after the file was closed");
   std::vector<int> c(8 * static_cast<std::size_t>(count));
   // Each block holds a contiguous range of the elements: the slab's piece of each block is one hyperslab.
   for (std::size_t b = 0; b < h_.blocks.size(); ++b) {
@@ -53,6 +59,7 @@ std::vector<int> ExodusSlices::connectivity(int first, int count) const {
 }
 
 std::vector<double> ExodusSlices::coordinates(int first, int count) const {
+  if (h_.id < 0) fail(path_, "read after the file was closed");
   std::vector<double> xyz(3 * static_cast<std::size_t>(count));
   if (count == 0) return xyz;
   std::vector<double> x(static_cast<std::size_t>(count)), y(x.size()), z(x.size());
@@ -68,6 +75,7 @@ std::vector<double> ExodusSlices::coordinates(int first, int count) const {
 }
 
 std::vector<int> ExodusSlices::node_set(std::size_t set, long long first, long long count) const {
+  if (h_.id < 0) fail(path_, "read after the file was closed");
   std::vector<int> n(static_cast<std::size_t>(count));
   if (count == 0) return n;
   const std::string& name = node_sets_.names[set];
@@ -82,6 +90,7 @@ std::vector<int> ExodusSlices::node_set(std::size_t set, long long first, long l
 }
 
 std::vector<Side> ExodusSlices::side_set(std::size_t set, long long first, long long count) const {
+  if (h_.id < 0) fail(path_, "read after the file was closed");
   std::vector<Side> out;
   if (count == 0) return out;
   const std::string& name = side_sets_.names[set];

@@ -47,6 +47,8 @@ class ExodusSlices {
   std::vector<int> node_set(std::size_t set, long long first, long long count) const;
   /// Entries [first, first + count) of side set `set`, 0-based (element, face), file order.
   std::vector<Side> side_set(std::size_t set, long long first, long long count) const;
+  /// Closes the file (the library's buffers freed); the outline above stays, the reads throw MeshError.
+  void close();
 
  private:
   std::string path_;

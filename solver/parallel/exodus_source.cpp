@@ -51,6 +51,7 @@ ExodusSource::ExodusSource(const std::string& path, bool walk_header) : file_(pa
   slab_ = file_.connectivity(element_offset_[me], element_offset_[me + 1] - element_offset_[me]);
   xyz_ = file_.coordinates(node_offset_[me], node_offset_[me + 1] - node_offset_[me]);
   read_set_slices();
+  file_.close();  // all this rank reads of it: the library's buffers are not held through the partition
 }
 
 void ExodusSource::read_set_slices() {

@@ -50,6 +50,7 @@ class ExodusSource final : public ElementSource {
 
   /// The nodes of the file no element uses, over all the ranks (after route()).
   long long unused_nodes() const { return unused_; }
+  /// The file's outline (counts, blocks, sets); closed once the constructor has read this rank's share.
   const mesh::ExodusSlices& file() const { return file_; }
 
  private:

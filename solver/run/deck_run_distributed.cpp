@@ -212,11 +212,12 @@ void DeckRun::finish_distributed_parts(const parallel::ElementSource& source, pa
   try {
     validate_part(g.part, plan ? "generated mesh of finite element model '" + deck_.procedure.region.finite_element_model + "'"
                                : exodus->file().path());
+    // Rank 0 streams the mesh through the hash (a file opened again: a read error is agreed on, not a hang).
+    if (root_) mesh_hash_ = plan ? mesh_sha256(plan->plan()) : mesh_sha256(mesh::ExodusSlices(exodus->file().path(), false));
   } catch (...) {
     error = std::current_exception();
   }
   agree_on_errors(error);
-  if (root_) mesh_hash_ = plan ? mesh_sha256(plan->plan()) : mesh_sha256(exodus->file());
   parallel::broadcast(mesh_hash_, 0);
   report_distributed_partition(g.part, g.shared_nodes, scale, travel, seconds,
                                plan ? "generated a slab of the elements" : "read a slab of the elements from the file");
