@@ -332,7 +332,7 @@ std::vector<BlockSchema> build_table() {
                        "file: every rank generates or reads only a slab of the elements (and of a file's nodes and sets), "
                        "the ranks partition the slabs together and exchange the elements and place the contact patches, "
                        "so that no rank holds the whole mesh: the same partition as serial with ptscotch; a mesh this "
-                       "cannot make (a gmsh file, an Exodus file with nodes in no element, an AFM surface, gap above "
+                       "cannot make (a gmsh file, an AFM surface, gap above "
                        "surface, surface layer blocks, rigid bodies, an Exodus mesh whose contact may travel without a "
                        "coordinate scale) or a run writing results.exo is set up serially, and the log says why)"),
                 reals("coordinate scale", dim::none, 3, positive(), false, "",

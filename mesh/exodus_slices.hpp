@@ -10,10 +10,9 @@
 // the file, as read_exodus words it); coordinates in metres (the info records' length unit divided out
 // with read_exodus's arithmetic: the same doubles).
 //
-// What read_exodus does on the whole mesh and a slice cannot: drop the nodes no element uses (the read
-// in slices needs every node in an element: exodus_source.hpp checks it and the run falls back), add a
-// side set's nodes as a node set of its name (exodus_source.hpp does it by routing), validate the
-// elements (the set-up validates each rank's part).
+// What read_exodus does on the whole mesh and a slice cannot: drop the nodes no element uses and renumber
+// the others, add a side set's nodes as a node set of its name (exodus_source.hpp does both by routing),
+// validate the elements (the set-up validates each rank's part).
 #pragma once
 
 #include <string>

@@ -45,6 +45,7 @@ std::vector<int> send_records(const std::vector<int>& data, int width, To to) {
 }  // namespace
 
 ExodusSource::ExodusSource(const std::string& path, bool walk_header) : file_(path, walk_header) {
+  node_count_ = file_.node_count();
   const int ranks = size(), me = rank();
   element_offset_ = slab_offsets(file_.element_count(), ranks);
   node_offset_ = slab_offsets(file_.node_count(), ranks);
@@ -126,23 +127,61 @@ void ExodusSource::route_node_sets() {
   member_offset_.assign(static_cast<std::size_t>(hi - lo) + 1, 0);
   member_set_.clear();
   std::vector<long long> sizes(node_set_names_.size() + 1, 0);  // [set] its home nodes; last: the unused nodes
+  std::vector<char> in_element(static_cast<std::size_t>(hi - lo), 0);
   std::size_t k = 0;
   for (int n = lo; n < hi; ++n) {
-    bool in_element = false;
+    const std::size_t start = member_set_.size();
+    char& mine = in_element[static_cast<std::size_t>(n - lo)];
     for (; k < pairs.size() && pairs[k].first == n; ++k) {
-      if (pairs[k].second < 0) {
-        in_element = true;
-        continue;
-      }
-      member_set_.push_back(pairs[k].second);
-      ++sizes[static_cast<std::size_t>(pairs[k].second)];
+      if (pairs[k].second < 0) mine = 1;
+      else member_set_.push_back(pairs[k].second);
     }
-    sizes.back() += !in_element;
+    if (!mine) member_set_.resize(start);  // read_exodus drops a node no element uses from its sets
+    for (std::size_t j = start; j < member_set_.size(); ++j) ++sizes[static_cast<std::size_t>(member_set_[j])];
+    sizes.back() += !mine;
     member_offset_[static_cast<std::size_t>(n - lo) + 1] = static_cast<int>(member_set_.size());
   }
   MPI_Allreduce(MPI_IN_PLACE, sizes.data(), static_cast<int>(sizes.size()), MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
   for (std::size_t s = 0; s < node_set_names_.size(); ++s) node_set_size_[node_set_names_[s]] = static_cast<int>(sizes[s]);
   unused_ = sizes.back();
+  if (unused_ > 0) renumber(in_element);
+}
+
+// read_exodus drops the nodes no element uses and numbers the others in file order; so does this. A home's
+// used nodes are one run of the new numbering, so each home keeps its nodes (coordinates and sets compacted)
+// under a new, uneven range, and the slab ranks ask the old homes for their nodes' new numbers.
+void ExodusSource::renumber(const std::vector<char>& used) {
+  const int ranks = size(), me = rank(), lo = node_offset_[me];
+  int kept = 0;
+  for (char u : used) kept += u;
+  std::vector<int> counts(static_cast<std::size_t>(ranks)), new_offset(static_cast<std::size_t>(ranks) + 1, 0);
+  MPI_Allgather(&kept, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 0; r < ranks; ++r) new_offset[r + 1] = new_offset[r] + counts[r];
+  std::vector<int> new_of(used.size(), -1), offset(1, 0), sets;
+  std::vector<double> xyz;
+  for (std::size_t n = 0, next = static_cast<std::size_t>(new_offset[me]); n < used.size(); ++n) {
+    if (!used[n]) continue;
+    new_of[n] = static_cast<int>(next++);
+    xyz.insert(xyz.end(), xyz_.begin() + 3 * static_cast<std::ptrdiff_t>(n), xyz_.begin() + 3 * static_cast<std::ptrdiff_t>(n + 1));
+    sets.insert(sets.end(), member_set_.begin() + member_offset_[n], member_set_.begin() + member_offset_[n + 1]);
+    offset.push_back(static_cast<int>(sets.size()));
+  }
+  xyz_ = std::move(xyz);
+  member_set_ = std::move(sets);
+  member_offset_ = std::move(offset);
+  // The slab's nodes (all used) to their old homes, and their new numbers back in the same order.
+  std::vector<int> nodes(slab_);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  std::vector<int> count(static_cast<std::size_t>(ranks), 0), from, got;
+  for (int n : nodes) ++count[static_cast<std::size_t>(home_of(node_offset_, n))];
+  std::vector<int> answer = exchange(count, nodes, from);
+  for (int& n : answer) n = new_of[static_cast<std::size_t>(n - lo)];
+  answer = exchange(from, answer, got);
+  for (int& n : slab_)
+    n = answer[static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), n) - nodes.begin())];
+  node_offset_ = std::move(new_offset);
+  node_count_ = node_offset_[static_cast<std::size_t>(ranks)];
 }
 
 std::map<std::string, int> ExodusSource::side_set_sizes() const {

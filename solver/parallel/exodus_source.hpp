@@ -17,8 +17,9 @@
 // nodes and sides, then the nodes' homes for their coordinates and sets (two request-reply all-to-alls):
 // the mesh of those elements in split_mesh's layout, the serial part bit for bit.
 //
-// read_exodus drops the nodes no element uses and renumbers the rest; the slices do not renumber: a file
-// with such nodes is set up serially (unused_nodes() > 0; deck_run_distributed.cpp says why).
+// read_exodus drops the nodes no element uses and numbers the rest in file order: so does route() (the homes
+// find them; their used nodes keep their order under new, contiguous ranges; the slabs ask for the new
+// numbers: one more request-reply all-to-all, only for such a file).
 #pragma once
 
 #include <map>
@@ -40,7 +41,7 @@ class ExodusSource final : public ElementSource {
   void route();
 
   int element_count() const override { return file_.element_count(); }
-  int node_count() const override { return file_.node_count(); }
+  int node_count() const override { return node_count_; }  // the nodes some element uses (read_exodus's)
   const std::vector<mesh::Block>& blocks() const override { return file_.blocks(); }
   std::map<std::string, int> node_set_sizes() const override { return node_set_size_; }
   std::map<std::string, int> side_set_sizes() const override;
@@ -48,7 +49,8 @@ class ExodusSource final : public ElementSource {
   mesh::Mesh elements_mesh(const std::vector<int>& elements, std::vector<int>& global_node) const override;
   std::vector<int> side_set_elements(const std::vector<std::string>& names) const override;
 
-  /// The nodes of the file no element uses, over all the ranks (after route()).
+  /// The nodes of the file no element uses, over all the ranks (after route()): dropped, the others numbered
+  /// in file order, as read_exodus does.
   long long unused_nodes() const { return unused_; }
   /// The file's outline (counts, blocks, sets); closed once the constructor has read this rank's share.
   const mesh::ExodusSlices& file() const { return file_; }
@@ -60,6 +62,7 @@ class ExodusSource final : public ElementSource {
   void read_set_slices();
   void route_sides();
   void route_node_sets();
+  void renumber(const std::vector<char>& used);
   void ask_elements(const std::vector<int>& elements, std::vector<int>& conn, std::vector<SideEntry>& sides) const;
   void ask_nodes(const std::vector<int>& global_node, mesh::Mesh& m) const;
 
@@ -74,6 +77,7 @@ class ExodusSource final : public ElementSource {
   std::vector<SideEntry> my_sides_;       // this rank's slices of the side sets, until routed
   std::vector<int> my_set_nodes_;         // this rank's slices of the node sets as (node, set) pairs, until routed
   long long unused_ = 0;
+  int node_count_ = 0;
 };
 
 }  // namespace tribex::solver::parallel

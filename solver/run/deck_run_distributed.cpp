@@ -6,8 +6,8 @@
 // (deck_run_setup.cpp, DeckRun::build_parts) does on rank 0's whole mesh is done here from the source or
 // from the parts:
 //   - the partition: PT-Scotch on the slabs' dual graph, elements exchanged (parallel/source_parts.hpp);
-//   - "every node in an element": true of a generated mesh by construction; an Exodus source counts the
-//     nodes no element uses (read_exodus drops them and renumbers: such a file falls back);
+//   - "every node in an element": true of a generated mesh by construction; an Exodus source drops the
+//     nodes no element uses and renumbers the others, as read_exodus does;
 //   - the element check (mesh::validate): each rank on its part, agreed on;
 //   - the contact faces, the contact's travel (the scale of the patches' cuts) and the contact patches:
 //     each rank from the surfaces' elements alone (parallel/source_parts.hpp);
@@ -104,11 +104,7 @@ std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck
     }
     agree_on_errors(error);
   }
-  exodus->route();
-  if (exodus->unused_nodes() > 0) {
-    why = "the file has " + std::to_string(exodus->unused_nodes()) + " node(s) no element uses, which rank 0 drops and renumbers";
-    return nullptr;
-  }
+  exodus->route();  // the nodes no element uses dropped as read_exodus drops them
   why.clear();
   return exodus;
 }
