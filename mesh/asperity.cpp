@@ -83,12 +83,21 @@ std::vector<double> fine_range_axis(double half, double h, const std::array<doub
   return axis;
 }
 
-// Quarter model: the x = 0 (y = 0) faces become node sets for the symmetry conditions; their side
-// sets go (they are not boundaries of the physical problem).
-void keep_symmetry_plane(Mesh& m, const std::string& prefix, const char* face, const std::string& to) {
-  m.node_sets[to] = std::move(m.node_sets.at(prefix + face));
-  m.node_sets.erase(prefix + face);
-  m.side_sets.erase(prefix + face);
+// Quarter model: the body's x = 0 and y = 0 faces become the node sets `<to>x` and `<to>y` for the
+// symmetry conditions; their side sets go (they are not boundaries of the physical problem).
+void keep_symmetry_planes(Mesh& m, const std::string& body, const std::string& to) {
+  for (const char* axis : {"x", "y"}) {
+    const std::string face = body + "_" + axis + "min";
+    m.node_sets[to + axis] = std::move(m.node_sets.at(face));
+    m.node_sets.erase(face);
+    m.side_sets.erase(face);
+  }
+}
+
+// A node set `name` of the one node of set `of` nearest the axis x = y = 0 (the apex, the loaded top).
+void axis_node_set(Mesh& m, const std::string& name, const std::string& of,
+                   const std::function<std::array<double, 2>(int)>& xy) {
+  m.node_sets[name] = {nearest_node(xy, m.node_sets.at(of), 0.0, 0.0)};
 }
 
 /// z of the tip's bottom face above the point (x, y), m (the apex at (0, 0, gap)).
@@ -183,24 +192,18 @@ void substrate_sets(Mesh& sub, const AsperityAxes& a, bool quarter, const std::f
   rename(sub, "substrate_zmax", "substrate_top");
   rename(sub, "substrate_zmin", "substrate_bottom");
   merge_sides(sub, "substrate", "substrate_sides", quarter);
-  sub.node_sets["substrate_axis_bottom"] = {nearest_node(xy, sub.node_sets.at("substrate_bottom"), 0.0, 0.0)};
-  sub.node_sets["substrate_axis_top"] = {nearest_node(xy, sub.node_sets.at("substrate_top"), 0.0, 0.0)};
-  if (quarter) {
-    keep_symmetry_plane(sub, "substrate", "_xmin", "symmetry_x");
-    keep_symmetry_plane(sub, "substrate", "_ymin", "symmetry_y");
-  }
+  axis_node_set(sub, "substrate_axis_bottom", "substrate_bottom", xy);
+  axis_node_set(sub, "substrate_axis_top", "substrate_top", xy);
+  if (quarter) keep_symmetry_planes(sub, "substrate", "symmetry_");
 }
 
 void tip_sets(Mesh& tip, bool quarter, const std::function<std::array<double, 2>(int)>& xy) {
   rename(tip, "tip_zmin", "tip_surface");
   rename(tip, "tip_zmax", "tip_top");
   merge_sides(tip, "tip", "tip_sides", quarter);
-  tip.node_sets["tip_axis_top"] = {nearest_node(xy, tip.node_sets.at("tip_top"), 0.0, 0.0)};
-  tip.node_sets["tip_apex"] = {nearest_node(xy, tip.node_sets.at("tip_surface"), 0.0, 0.0)};
-  if (quarter) {
-    keep_symmetry_plane(tip, "tip", "_xmin", "tip_symmetry_x");
-    keep_symmetry_plane(tip, "tip", "_ymin", "tip_symmetry_y");
-  }
+  axis_node_set(tip, "tip_axis_top", "tip_top", xy);
+  axis_node_set(tip, "tip_apex", "tip_surface", xy);
+  if (quarter) keep_symmetry_planes(tip, "tip", "tip_symmetry_");
 }
 
 // Quarter model: the tip's symmetry-plane nodes join the substrate's (after the two are appended).

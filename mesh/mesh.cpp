@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "mesh/mesh_error.hpp"
@@ -211,6 +212,17 @@ void append(Mesh& into, const Mesh& other) {
     dst.reserve(sides.size());
     for (Side s : sides) dst.push_back({s.element + element_offset, s.face});
   }
+}
+
+BoundingBox bounding_box(const Mesh& mesh) {
+  BoundingBox box;
+  box.lo.fill(std::numeric_limits<double>::infinity());
+  box.hi.fill(-std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
+    box.lo[i % 3] = std::min(box.lo[i % 3], mesh.coordinates[i]);
+    box.hi[i % 3] = std::max(box.hi[i % 3], mesh.coordinates[i]);
+  }
+  return box;
 }
 
 void validate(const Mesh& mesh, const std::string& source) {

@@ -54,6 +54,12 @@ struct Mesh {
   std::vector<int> side_set_nodes(const std::string& name) const;
 };
 
+/// The axis-aligned box around the nodes, m; lo = +inf and hi = -inf on an axis with no node.
+struct BoundingBox {
+  std::array<double, 3> lo, hi;
+};
+BoundingBox bounding_box(const Mesh& mesh);
+
 /// Append `other` to `into`, renumbering its nodes and elements. Blocks, node sets and side sets
 /// keep their names; a name present in both is an error (MeshError). Nodes are not merged.
 void append(Mesh& into, const Mesh& other);

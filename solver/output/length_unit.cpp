@@ -15,14 +15,12 @@ LengthUnit length_unit_named(const std::string& name) {
 }
 
 LengthUnit resolve_length_unit(const std::string& choice, const mesh::Mesh& mesh) {
+  return resolve_length_unit(choice, mesh::bounding_box(mesh));
+}
+
+LengthUnit resolve_length_unit(const std::string& choice, const mesh::BoundingBox& box) {
   if (choice != "auto") return length_unit_named(choice);
-  double lo[3], hi[3];
-  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
-  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
-    lo[i % 3] = std::min(lo[i % 3], mesh.coordinates[i]);
-    hi[i % 3] = std::max(hi[i % 3], mesh.coordinates[i]);
-  }
+  const auto& [lo, hi] = box;
   double extent = 0.0;  // an empty mesh stays in metres
   for (int k = 0; k < 3; ++k)
     if (hi[k] >= lo[k]) extent = std::max(extent, hi[k] - lo[k]);

@@ -20,6 +20,7 @@ LengthUnit length_unit_named(const std::string& name);
 
 /// The deck's `length unit` choice: "auto" is nm for a model whose largest bounding-box extent is
 /// under 1 um, um under 1 mm, else m; any other choice is length_unit_named.
+LengthUnit resolve_length_unit(const std::string& choice, const mesh::BoundingBox& box);
 LengthUnit resolve_length_unit(const std::string& choice, const mesh::Mesh& mesh);
 
 }  // namespace tribex::solver::output

@@ -20,10 +20,8 @@
 // connected pieces).
 #include <malloc.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <memory>
 
 #include "mesh/mesh_error.hpp"
@@ -60,18 +58,13 @@ void validate_part(const parallel::MeshPart& p, const std::string& source) {
   }
 }
 
-// The whole mesh's length unit from the parts' extent (output::resolve_length_unit on the bounding box).
+// The whole mesh's length unit from the parts' boxes reduced over the ranks (output::resolve_length_unit).
 output::LengthUnit distributed_length_unit(const std::string& choice, const mesh::Mesh& part) {
-  double lo[3], hi[3];
-  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
-  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < part.coordinates.size(); ++i) {
-    lo[i % 3] = std::min(lo[i % 3], part.coordinates[i]);
-    hi[i % 3] = std::max(hi[i % 3], part.coordinates[i]);
+  mesh::BoundingBox box = mesh::bounding_box(part);
+  for (int i = 0; i < 3; ++i) {
+    box.lo[i] = parallel::min(box.lo[i]);
+    box.hi[i] = parallel::max(box.hi[i]);
   }
-  mesh::Mesh box;  // two nodes at the corners: the same extent
-  for (int i = 0; i < 3; ++i) box.coordinates.push_back(parallel::min(lo[i]));
-  for (int i = 0; i < 3; ++i) box.coordinates.push_back(parallel::max(hi[i]));
   return output::resolve_length_unit(choice, box);
 }
 
