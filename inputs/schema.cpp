@@ -328,12 +328,13 @@ std::vector<BlockSchema> build_table() {
                        "bisection of the element centroids: planar cuts)"),
                 choice("set-up", ValueKind::enumeration, {"serial", "distributed"}, false, "serial",
                        "where the mesh is made: serial (rank 0 reads or generates the whole mesh and sends every rank "
-                       "its part) or distributed (with method = ptscotch and a generated box or asperity: every rank "
-                       "generates only a slab of the elements, the ranks partition the slabs together and exchange "
-                       "the elements and place the contact patches, so that no rank holds the whole mesh: the same "
-                       "partition as serial with ptscotch; a mesh this cannot make (a mesh file, an AFM surface, "
-                       "gap above surface, surface layer blocks, rigid bodies) or a run writing results.exo is set up serially, and the "
-                       "log says why)"),
+                       "its part) or distributed (with method = ptscotch and a generated box or asperity or an Exodus II "
+                       "file: every rank generates or reads only a slab of the elements (and of a file's nodes and sets), "
+                       "the ranks partition the slabs together and exchange the elements and place the contact patches, "
+                       "so that no rank holds the whole mesh: the same partition as serial with ptscotch; a mesh this "
+                       "cannot make (a gmsh file, an AFM surface, gap above "
+                       "surface, surface layer blocks, rigid bodies, an Exodus mesh whose contact may travel without a "
+                       "coordinate scale) or a run writing results.exo is set up serially, and the log says why)"),
                 reals("coordinate scale", dim::none, 3, positive(), false, "",
                       "sx sy sz: coordinates multiplied by these when the sides of a box are compared (rcb's volume, "
                       "and the contact patches with either method); a small factor on the direction a contact zone "

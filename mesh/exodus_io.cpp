@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,6 +105,38 @@ std::pair<std::vector<int>, std::vector<int>> set_entries(int exo, ex_entity_typ
   return {std::move(entries), std::move(sides)};
 }
 
+// The element blocks in file order (empty ones dropped), each checked HEX8, with their element ranges: Exodus
+// numbers elements block after block. The block count is checked against the header's element count.
+void read_blocks(int exo, const std::string& path, int nblocks, exodus::Header& h) {
+  h.block_ids = entity_ids(exo, EX_ELEM_BLOCK, nblocks, path, "element block");
+  const auto names = entity_names(exo, EX_ELEM_BLOCK, h.block_ids.size(), h.name_length);
+  std::vector<int> kept;
+  int at = 0;
+  for (std::size_t b = 0; b < h.block_ids.size(); ++b) {
+    char type[MAX_STR_LENGTH + 1] = {};
+    int count = 0, per = 0, edges = 0, faces = 0, attrs = 0;
+    if (ex_get_block(exo, EX_ELEM_BLOCK, h.block_ids[b], type, &count, &per, &edges, &faces, &attrs) < 0)
+      fail(path, "cannot read element block " + std::to_string(h.block_ids[b]) + reason());
+    const std::string name = names[b].empty() ? "block_" + std::to_string(h.block_ids[b]) : names[b];
+    if (count == 0) continue;  // an empty block holds no element: dropped
+    const std::string t = lower(type);
+    if (per != 8 || (t != "hex" && t != "hex8" && t != "hexahedron"))
+      fail(path, "element block '" + name + "' (id " + std::to_string(h.block_ids[b]) + ") has " + std::to_string(count) +
+                     " " + type + " elements with " + std::to_string(per) +
+                     " nodes; tribex needs HEX8 only: re-mesh it all-hex, first order (Cubit: block " +
+                     std::to_string(h.block_ids[b]) + " element type hex8)");
+    if (count < 0 || count > h.elements - at)
+      fail(path, "the blocks hold more elements than the header's " + std::to_string(h.elements) + "; the file is inconsistent");
+    h.blocks.push_back({name, at, count});
+    kept.push_back(h.block_ids[b]);
+    at += count;
+  }
+  h.block_ids = std::move(kept);
+  if (at != h.elements)
+    fail(path, "the blocks hold " + std::to_string(at) + " elements but the header says " + std::to_string(h.elements) +
+                   "; the file is inconsistent");
+}
+
 }  // namespace
 
 ExodusLengthUnit exodus::length_unit_of(int exo, const std::string& path) {
@@ -145,41 +178,43 @@ std::string exodus::last_error() {
   return m;
 }
 
-Mesh read_exodus(const std::string& path) {
+exodus::Header exodus::open_checked(const std::string& path, bool walk_header) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, "no such file; check 'database name' (relative to the deck)");
   if (!fs::is_regular_file(path, ec)) fail(path, "not a regular file; give the Exodus II mesh file");
-  const std::string kind = netcdf_kind(path);
-  if (kind.empty())
+  Header h;
+  h.kind = netcdf_kind(path);
+  if (h.kind.empty())
     fail(path, "not an Exodus II file (no netCDF signature in its first bytes, " + std::to_string(fs::file_size(path, ec)) +
                    " bytes); give a .exo/.g file written by Cubit, SEACAS or tribex, or a gmsh .msh file");
   // Every size the header states, checked against the file before the library allocates for it.
-  if (kind != "netCDF-4") prescan_exodus_file(path);
-  else check_netcdf4_exodus(path);
+  if (walk_header && h.kind != "netCDF-4") prescan_exodus_file(path);
+  else if (walk_header) check_netcdf4_exodus(path);
   quiet_exodus();
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0;
   ExoFile f;
   f.id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
-  if (f.id < 0) fail(path, "the Exodus II library cannot open this " + kind + " netCDF file" + reason() + "; is it truncated?");
+  if (f.id < 0) fail(path, "the Exodus II library cannot open this " + h.kind + " netCDF file" + reason() + "; is it truncated?");
   const int exo = f.id;
   const auto used_name_length = ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH);
   if (used_name_length > kMaxNameLength)
     fail(path, "the header states names of up to " + std::to_string(used_name_length) + " characters "
                "(maximum_name_length); Exodus II allows " + std::to_string(kMaxNameLength) + ": a damaged or crafted file");
-  const int name_length = std::max<int>(static_cast<int>(used_name_length), 32);
-  ex_set_max_name_length(exo, name_length);
+  h.name_length = std::max<int>(static_cast<int>(used_name_length), 32);
+  ex_set_max_name_length(exo, h.name_length);
 
   char title[MAX_LINE_LENGTH + 1] = {};
-  int dim = 0, nodes = 0, elements = 0, nblocks = 0, nnode_sets = 0, nside_sets = 0;
-  if (ex_get_init(exo, title, &dim, &nodes, &elements, &nblocks, &nnode_sets, &nside_sets) < 0)
+  int dim = 0, nblocks = 0;
+  if (ex_get_init(exo, title, &dim, &h.nodes, &h.elements, &nblocks, &h.node_sets, &h.side_sets) < 0)
     fail(path, "cannot read the Exodus II header" + reason());
+  const int nodes = h.nodes, elements = h.elements;
   if (dim != 3) fail(path, "a " + std::to_string(dim) + "-D mesh; tribex needs a 3-D all-hex (HEX8) mesh");
   if (nodes <= 0 || elements <= 0) fail(path, "the file has no nodes or no elements; give a 3-D HEX8 mesh");
   // A classic file stores every element's 8 node numbers (4 bytes at least) and 3 coordinates of every
   // node (4 bytes at least): a header that states more than the file can hold is refused before allocating.
-  if (kind != "netCDF-4") {
+  if (h.kind != "netCDF-4") {
     const auto bytes = fs::file_size(path, ec);
     const double need = 32.0 * elements + 12.0 * nodes;
     if (!ec && need > static_cast<double>(bytes))
@@ -192,10 +227,41 @@ Mesh read_exodus(const std::string& path) {
     fail(path, "the header states " + std::to_string(elements) + " elements and " + std::to_string(nodes) +
                    " nodes; tribex reads at most " + std::to_string(kMaxElements) + " elements and " +
                    std::to_string(kMaxNodes) + " nodes from one file (split the model, or check the file)");
+  h.per_metre = exodus::length_unit_of(exo, path).per_metre;
+  read_blocks(exo, path, nblocks, h);
+  h.id = f.id;
+  f.id = -1;  // the caller closes it
+  return h;
+}
 
+exodus::SetOutline exodus::set_outline(int exo, const Header& h, bool side_sets, const std::string& path) {
+  const ex_entity_type type = side_sets ? EX_SIDE_SET : EX_NODE_SET;
+  SetOutline o;
+  o.ids = entity_ids(exo, type, side_sets ? h.side_sets : h.node_sets, path, side_sets ? "side set" : "node set");
+  const auto names = entity_names(exo, type, o.ids.size(), h.name_length);
+  std::set<std::string> seen;
+  for (std::size_t s = 0; s < o.ids.size(); ++s) {
+    const std::string name = !names[s].empty() ? names[s]
+                             : (side_sets ? "surface_" : "nodelist_") + std::to_string(o.ids[s]);
+    const std::string what = std::string(side_sets ? "side set '" : "node set '") + name + "'";
+    int count = 0, factors = 0;
+    if (ex_get_set_param(exo, type, o.ids[s], &count, &factors) < 0 || count < 0) fail(path, "cannot read " + what + reason());
+    if (!seen.insert(name).second)
+      fail(path, std::string("two ") + (side_sets ? "side" : "node") + " sets are named '" + name + "'; rename one of them");
+    o.names.push_back(name);
+    o.entries.push_back(count);
+  }
+  return o;
+}
+
+Mesh read_exodus(const std::string& path) {
+  exodus::Header h = exodus::open_checked(path);
+  ExoFile f;
+  f.id = h.id;
+  const int exo = f.id, nodes = h.nodes, elements = h.elements, name_length = h.name_length;
   Mesh m;
   {
-    const double per_metre = exodus::length_unit_of(exo, path).per_metre;
+    const double per_metre = h.per_metre;
     std::vector<double> x(static_cast<std::size_t>(nodes)), y(x.size()), z(x.size());
     if (ex_get_coord(exo, x.data(), y.data(), z.data()) < 0) fail(path, "cannot read the coordinates" + reason());
     m.coordinates.resize(3 * x.size());
@@ -205,34 +271,16 @@ Mesh read_exodus(const std::string& path) {
       m.coordinates[3 * i + 2] = per_metre == 1.0 ? z[i] : z[i] / per_metre;
     }
   }
-
   // Element blocks, in file order: Exodus numbers elements block after block, and connectivity
   // and side sets use that internal numbering (1-based positions), never the element id map.
-  const std::vector<int> block_ids = entity_ids(exo, EX_ELEM_BLOCK, nblocks, path, "element block");
-  const auto block_names = entity_names(exo, EX_ELEM_BLOCK, block_ids.size(), name_length);
-  m.connectivity.reserve(8 * static_cast<std::size_t>(elements));
-  for (std::size_t b = 0; b < block_ids.size(); ++b) {
-    char type[MAX_STR_LENGTH + 1] = {};
-    int count = 0, per = 0, edges = 0, faces = 0, attrs = 0;
-    if (ex_get_block(exo, EX_ELEM_BLOCK, block_ids[b], type, &count, &per, &edges, &faces, &attrs) < 0)
-      fail(path, "cannot read element block " + std::to_string(block_ids[b]) + reason());
-    const std::string name = block_names[b].empty() ? "block_" + std::to_string(block_ids[b]) : block_names[b];
-    if (count == 0) continue;  // an empty block holds no element: dropped
-    const std::string t = lower(type);
-    if (per != 8 || (t != "hex" && t != "hex8" && t != "hexahedron"))
-      fail(path, "element block '" + name + "' (id " + std::to_string(block_ids[b]) + ") has " + std::to_string(count) +
-                     " " + type + " elements with " + std::to_string(per) +
-                     " nodes; tribex needs HEX8 only: re-mesh it all-hex, first order (Cubit: block " +
-                     std::to_string(block_ids[b]) + " element type hex8)");
-    const std::size_t at = m.connectivity.size();
-    m.connectivity.resize(at + 8 * static_cast<std::size_t>(count));
-    if (ex_get_conn(exo, EX_ELEM_BLOCK, block_ids[b], m.connectivity.data() + at, nullptr, nullptr) < 0)
-      fail(path, "cannot read the connectivity of block '" + name + "'" + reason());
-    m.blocks.push_back({name, static_cast<int>(at / 8), count});
+  m.connectivity.resize(8 * static_cast<std::size_t>(elements));
+  for (std::size_t b = 0; b < h.blocks.size(); ++b) {
+    const Block& blk = h.blocks[b];
+    if (ex_get_conn(exo, EX_ELEM_BLOCK, h.block_ids[b], m.connectivity.data() + 8 * static_cast<std::size_t>(blk.first_element),
+                    nullptr, nullptr) < 0)
+      fail(path, "cannot read the connectivity of block '" + blk.name + "'" + reason());
   }
-  if (m.element_count() != elements)
-    fail(path, "the blocks hold " + std::to_string(m.element_count()) + " elements but the header says " +
-                   std::to_string(elements) + "; the file is inconsistent");
+  m.blocks = h.blocks;
 
   // Nodes no hex uses are dropped (they would carry no mass); the others keep their file order.
   std::vector<int> renumber(static_cast<std::size_t>(nodes), -1);
@@ -253,7 +301,7 @@ Mesh read_exodus(const std::string& path) {
     for (int& n : m.connectivity) n = renumber[static_cast<std::size_t>(n)];
   }
 
-  const std::vector<int> nset_ids = entity_ids(exo, EX_NODE_SET, nnode_sets, path, "node set");
+  const std::vector<int> nset_ids = entity_ids(exo, EX_NODE_SET, h.node_sets, path, "node set");
   const auto nset_names = entity_names(exo, EX_NODE_SET, nset_ids.size(), name_length);
   for (std::size_t s = 0; s < nset_ids.size(); ++s) {
     const std::string name = nset_names[s].empty() ? "nodelist_" + std::to_string(nset_ids[s]) : nset_names[s];
@@ -270,7 +318,7 @@ Mesh read_exodus(const std::string& path) {
       fail(path, "two node sets are named '" + name + "'; rename one of them");
   }
 
-  const std::vector<int> sset_ids = entity_ids(exo, EX_SIDE_SET, nside_sets, path, "side set");
+  const std::vector<int> sset_ids = entity_ids(exo, EX_SIDE_SET, h.side_sets, path, "side set");
   const auto sset_names = entity_names(exo, EX_SIDE_SET, sset_ids.size(), name_length);
   for (std::size_t s = 0; s < sset_ids.size(); ++s) {
     const std::string name = sset_names[s].empty() ? "surface_" + std::to_string(sset_ids[s]) : sset_names[s];

@@ -55,6 +55,32 @@ int create_with_mesh(const Mesh& mesh, const std::string& path, const std::strin
 /// naming `path` for a unit other than m, um, nm.
 ExodusLengthUnit length_unit_of(int exo, const std::string& path);
 
+/// An Exodus file opened with every check read_exodus makes before it reads the arrays (exists, netCDF
+/// signature, the header's sizes against the file: exodus_prescan.hpp, 3-D, counts within the limits,
+/// every non-empty block HEX8 and the blocks' elements the header's). Shared by read_exodus and the
+/// read in slices (exodus_slices.hpp).
+struct Header {
+  int id = -1;  // the open Exodus id: the caller closes it (ex_close)
+  std::string kind;  // "classic", "64-bit offset", "CDF5", "netCDF-4"
+  int name_length = 32;
+  int nodes = 0, elements = 0, node_sets = 0, side_sets = 0;  // as the file states them
+  std::vector<Block> blocks;   // the non-empty blocks in file order, element ranges in Exodus's numbering
+  std::vector<int> block_ids;  // [block] its Exodus id
+  double per_metre = 1.0;      // the coordinates' length unit (length_unit_of)
+};
+/// Throws MeshError (one line, naming `path`). `walk_header` false skips the netCDF header's walk (the
+/// file's first 16 MiB read and checked), for a rank whose file another rank has just walked (exodus_source.hpp).
+Header open_checked(const std::string& path, bool walk_header = true);
+
+/// One kind of set (node or side) of an open file: names (Sierra's defaults for unnamed ones), ids and
+/// entry counts, in file order. MeshError for a set that cannot be read or two sets of one name.
+struct SetOutline {
+  std::vector<std::string> names;
+  std::vector<int> ids;
+  std::vector<long long> entries;
+};
+SetOutline set_outline(int exo, const Header& h, bool side_sets, const std::string& path);
+
 /// The Exodus library's last error text, for messages ("" when it has none).
 std::string last_error();
 

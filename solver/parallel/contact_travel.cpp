@@ -203,6 +203,17 @@ std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh
                    });
 }
 
+std::optional<ContactTravel> contact_travel_one_piece(const inputs::Deck& deck, const mesh::Mesh& surfaces,
+                                                      const std::vector<std::string>& node_sets) {
+  const auto& region = deck.procedure.region;
+  if (!region.contact || region.prescribed_motions.empty()) return std::nullopt;
+  return travel_of(deck, surfaces, 1, [](int) { return 0; },
+                   [&](const std::string& name) -> std::optional<std::vector<int>> {
+                     if (std::find(node_sets.begin(), node_sets.end(), name) == node_sets.end()) return std::nullopt;
+                     return std::vector<int>{0};
+                   });
+}
+
 bool crosses_patches(const ContactTravel& travel, int parts) {
   return travel.distance * parts > travel.zone_extent;
 }

@@ -23,6 +23,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "inputs/deck.hpp"
 #include "mesh/generated_plan.hpp"
@@ -45,6 +46,12 @@ std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh
 /// The same from a generated mesh's plan (mesh/generated_plan.hpp; `set-up = distributed`): the connected
 /// pieces are the plan's grids, the surfaces' faces those of their elements built alone. Every rank alike.
 std::optional<ContactTravel> contact_travel(const inputs::Deck& deck, const mesh::GeneratedPlan& plan);
+/// The same as if the mesh were one connected piece, from `surfaces` (a mesh holding the contact surfaces'
+/// elements and their side sets whole) and the names of the mesh's node sets: every prescribed motion of a
+/// node set counts as moving a contact body, so none means contact_travel finds none on the whole mesh, and
+/// one means it may (an Exodus file read in slices has no connected pieces: the set-up falls back then).
+std::optional<ContactTravel> contact_travel_one_piece(const inputs::Deck& deck, const mesh::Mesh& surfaces,
+                                                      const std::vector<std::string>& node_sets);
 
 /// Whether `travel` carries the zone beyond a patch's width at `parts` ranks: distance > zone_extent / parts.
 bool crosses_patches(const ContactTravel& travel, int parts);

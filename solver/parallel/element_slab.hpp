@@ -4,7 +4,7 @@
 // the whole mesh, the ranks' slabs in rank order and together the whole mesh; each element as its 8
 // node numbers in the whole mesh's numbering (hex8 order, mesh/mesh.hpp). Rank 0 cuts them from the mesh
 // it read (element_slabs.hpp), or, with `set-up = distributed`, every rank generates its own from a
-// generated mesh's plan (generated_parts.hpp; a read in slices of a mesh file would fill it the same way).
+// generated mesh's plan or reads it from an Exodus file (source_parts.hpp, element_source.hpp).
 #pragma once
 
 #include <vector>

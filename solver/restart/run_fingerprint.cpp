@@ -2,6 +2,8 @@
 #include "solver/restart/run_fingerprint.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 #include "inputs/sha256.hpp"
 #include "solver/output/run_log.hpp"
@@ -32,6 +34,37 @@ std::string mesh_sha256(const mesh::GeneratedPlan& plan) {
   }
   for (int first = 0; first < plan.element_count; first += chunk) {
     const std::vector<int> c = mesh::element_nodes(plan, first, std::min(chunk, plan.element_count - first));
+    hash.update({reinterpret_cast<const char*>(c.data()), c.size() * sizeof(int)});
+  }
+  return hash.hex();
+}
+
+std::string mesh_sha256(const mesh::ExodusSlices& file) {
+  // read_exodus's mesh drops the nodes no element uses and numbers the others in file order: a bit per node
+  // marks the used ones (one pass over the connectivity), a count per 64 nodes gives each its new number.
+  constexpr int chunk = 65536;
+  const int nodes = file.node_count(), elements = file.element_count();
+  std::vector<std::uint64_t> used((static_cast<std::size_t>(nodes) + 63) / 64, 0);
+  for (int first = 0; first < elements; first += chunk)
+    for (int n : file.connectivity(first, std::min(chunk, elements - first)))
+      used[static_cast<std::size_t>(n) / 64] |= std::uint64_t(1) << (n % 64);
+  std::vector<int> before(used.size() + 1, 0);  // [word] the used nodes before it
+  for (std::size_t w = 0; w < used.size(); ++w) before[w + 1] = before[w] + std::popcount(used[w]);
+  const auto is_used = [&](int n) { return (used[static_cast<std::size_t>(n) / 64] >> (n % 64)) & 1; };
+  inputs::Sha256 hash;
+  for (int first = 0; first < nodes; first += chunk) {
+    std::vector<double> x = file.coordinates(first, std::min(chunk, nodes - first));
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < x.size() / 3; ++i)
+      if (is_used(first + static_cast<int>(i))) std::copy_n(x.begin() + 3 * static_cast<std::ptrdiff_t>(i), 3, x.begin() + 3 * static_cast<std::ptrdiff_t>(kept++));
+    hash.update({reinterpret_cast<const char*>(x.data()), 3 * kept * sizeof(double)});
+  }
+  for (int first = 0; first < elements; first += chunk) {
+    std::vector<int> c = file.connectivity(first, std::min(chunk, elements - first));
+    for (int& n : c) {
+      const std::uint64_t below = used[static_cast<std::size_t>(n) / 64] & ((std::uint64_t(1) << (n % 64)) - 1);
+      n = before[static_cast<std::size_t>(n) / 64] + std::popcount(below);
+    }
     hash.update({reinterpret_cast<const char*>(c.data()), c.size() * sizeof(int)});
   }
   return hash.hex();

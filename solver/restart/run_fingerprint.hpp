@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/exodus_slices.hpp"
 #include "mesh/generated_plan.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/restart/state_archive.hpp"
@@ -20,6 +21,10 @@ std::string mesh_sha256(const mesh::Mesh& m);
 /// mesh_sha256 of the plan's mesh (mesh/generated_plan.hpp), the arrays generated and hashed 65,536
 /// nodes and elements at a time: the same digest without the whole mesh in memory.
 std::string mesh_sha256(const mesh::GeneratedPlan& plan);
+/// The same of an Exodus file read in slices (mesh/exodus_slices.hpp), 65,536 nodes and elements at a time:
+/// read_exodus's mesh's digest (the nodes no element uses dropped and the others renumbered, as it does, with a
+/// bit per node of the file: two passes over the connectivity, one over the coordinates).
+std::string mesh_sha256(const mesh::ExodusSlices& file);
 /// "" when the restart file was written by this deck and mesh (or by a tribex that did not record
 /// them); else what differs, one line.
 std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "solver/parallel/contact_travel.hpp"
+#include "solver/parallel/source_parts.hpp"
 #include "solver/guards/block_translation.hpp"
 #include "solver/guards/run_guards.hpp"
 #include "solver/guards/strain_guard.hpp"
@@ -75,8 +76,14 @@ class DeckRun {
   void preflight();
   void build_parts();  // parallel: the whole mesh on rank 0, partitioned; every rank builds its part
   bool build_parts_distributed();  // `set-up = distributed`: false (and the log says why) if the mesh needs rank 0
+  bool distributed_contact(const parallel::ElementSource& source, ContactFaces& contact,
+                           std::optional<ContactTravel>& travel, parallel::AxisScale& scale,
+                           std::optional<inputs::ContactSpec>& enforced, std::string& why);  // false: why
+  void finish_distributed_parts(const parallel::ElementSource& source, parallel::SourcePart& g,
+                                const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel,
+                                double seconds);  // check, hash, report, outline, set sizes
   void report_distributed_partition(const parallel::MeshPart& mine, long long shared, const parallel::AxisScale& scale,
-                                    const std::optional<ContactTravel>& travel, double seconds);
+                                    const std::optional<ContactTravel>& travel, double seconds, const char* each_rank);
   void report_partition(const mesh::Mesh& whole, const std::vector<int>& part, const parallel::NodeHolders& holders,
                         const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel, double seconds);
   void report_mesh(const Model& model);

@@ -1,26 +1,33 @@
 // SPDX-License-Identifier: MIT
 // run_deck, stage 1 with `begin decomposition` / `set-up = distributed` (issue 57 scope 2; solver/README.md
-// "Parallel runs"): every rank makes its own part of a generated mesh, no rank holds the whole mesh.
-// What the serial set-up (deck_run_setup.cpp, DeckRun::build_parts) does on rank 0's whole mesh is done
-// here from the plan (mesh/generated_plan.hpp) or from the parts:
-//   - the partition: PT-Scotch on the slabs' dual graph, elements exchanged (parallel/generated_parts.hpp);
-//   - "every node in an element": true of a generated mesh by construction (node_holders' check);
+// "Parallel runs"): every rank makes its own part of the mesh, no rank holds the whole mesh. The mesh comes
+// from an element source (parallel/element_source.hpp): a generated mesh's plan (mesh/generated_plan.hpp)
+// or an Exodus II file read in slices (parallel/exodus_source.hpp). What the serial set-up
+// (deck_run_setup.cpp, DeckRun::build_parts) does on rank 0's whole mesh is done here from the source or
+// from the parts:
+//   - the partition: PT-Scotch on the slabs' dual graph, elements exchanged (parallel/source_parts.hpp);
+//   - "every node in an element": true of a generated mesh by construction; an Exodus source drops the
+//     nodes no element uses and renumbers the others, as read_exodus does;
 //   - the element check (mesh::validate): each rank on its part, agreed on;
 //   - the contact faces, the contact's travel (the scale of the patches' cuts) and the contact patches:
-//     each rank from the plan's side sets (the surfaces' elements alone; parallel/generated_parts.hpp);
+//     each rank from the surfaces' elements alone (parallel/source_parts.hpp);
 //   - the mesh's SHA-256 (restart files): rank 0 streams the mesh through the hash in chunks;
-//   - results.h5's outline: counts and blocks from the plan, the length unit from the extent reduced
+//   - results.h5's outline: counts and blocks from the source, the length unit from the extent reduced
 //     over the parts.
 // Left: results.exo (written by rank 0 from the whole mesh: such a run is set up serially, and the log
-// says why), and the meshes generated_plan cannot describe (solver/model.hpp).
+// says why), the meshes neither source can describe (solver/model.hpp), and an Exodus deck whose contact
+// travels along a tangential prescribed motion without `coordinate scale` (the travel needs the mesh's
+// connected pieces).
 #include <malloc.h>
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "mesh/mesh_error.hpp"
 #include "solver/parallel/contact_travel.hpp"
-#include "solver/parallel/generated_parts.hpp"
+#include "solver/parallel/exodus_source.hpp"
+#include "solver/parallel/source_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 #include "solver/run/deck_run.hpp"
 
@@ -61,94 +68,162 @@ output::LengthUnit distributed_length_unit(const std::string& choice, const mesh
   return output::resolve_length_unit(choice, box);
 }
 
-}  // namespace
-
-bool DeckRun::build_parts_distributed() {
-  std::string why;
-  std::optional<mesh::GeneratedPlan> plan;
+// The deck's mesh as an element source, or none with the reason in `why` (every rank alike). Collective:
+// an Exodus file is opened and read in slices on every rank, its errors agreed on (a bad file: exit 2, the
+// lowest failing rank's one line, nothing written).
+std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck, std::string& why) {
+  std::unique_ptr<parallel::ElementSource> source;
+  std::optional<std::string> path;
   std::exception_ptr error;
   try {
-    plan = generated_plan(deck_, why);  // every rank alike: the same deck, the same plan or error
+    std::string not_exodus;
+    if (auto plan = generated_plan(deck, why)) source = std::make_unique<parallel::PlanSource>(std::move(*plan));
+    else if (!(path = exodus_slices_path(deck, not_exodus)) && !not_exodus.empty()) why = not_exodus;  // a file's reason
   } catch (...) {
     error = std::current_exception();
   }
   agree_on_errors(error);
-  if (plan && region_.results && region_.results->exodus) {
-    plan.reset();
-    why = "results.exo is written by rank 0 from the whole mesh";
+  if (!path) return source;
+  // Rank 0 opens the file first and walks its netCDF header (read_exodus's checks, the file's first 16 MiB);
+  // the other ranks, once it has, open it with the header's remaining checks only (not P reads of 16 MiB).
+  std::unique_ptr<parallel::ExodusSource> exodus;
+  for (const bool first : {true, false}) {
+    try {
+      if (first == parallel::is_root()) exodus = std::make_unique<parallel::ExodusSource>(*path, first);
+    } catch (const mesh::MeshError& e) {
+      error = std::make_exception_ptr(SetupError(e.what()));
+    } catch (...) {
+      error = std::current_exception();
+    }
+    agree_on_errors(error);
   }
-  if (!plan) {
-    log_.say("set-up = distributed: the mesh is made on rank 0 instead (" + why + ")");
-    return false;
-  }
+  exodus->route();  // the nodes no element uses dropped as read_exodus drops them
+  why.clear();
+  return exodus;
+}
+
+// The contact faces, as contact_faces(whole mesh) makes them, from the surfaces' elements alone.
+// `surfaces`: the surfaces' elements (their side sets whole), `global_node` its nodes' global numbers.
+ContactFaces source_contact_faces(const inputs::ContactSpec& contact, const mesh::Mesh& surfaces,
+                                  const std::vector<int>& global_node) {
+  ContactFaces faces = contact_faces(surfaces, contact);
+  for (int& n : faces.global_node) n = global_node[static_cast<std::size_t>(n)];
+  return faces;
+}
+
+}  // namespace
+
+bool DeckRun::build_parts_distributed() {
   // As on rank 0 in the serial set-up: each large temporary freed goes back to the system at once.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
-  const auto start = std::chrono::steady_clock::now();
-  parallel::GeneratedPart g;
+  std::string why;
+  std::unique_ptr<parallel::ElementSource> source;
+  if (region_.results && region_.results->exodus)  // decided before any rank reads a slice of a mesh file
+    why = "results.exo is written by rank 0 from the whole mesh";
+  else
+    source = element_source(deck_, why);
   ContactFaces contact;
   std::optional<ContactTravel> travel;
   parallel::AxisScale scale = parallel::kUnitScale;
-  // Each stage on every rank alike (the same plan, the same deck), each agreed on before the next collective.
+  std::optional<inputs::ContactSpec> enforced;
+  if (source && region_.contact && !distributed_contact(*source, contact, travel, scale, enforced, why)) source.reset();
+  if (!source) {
+    log_.say("set-up = distributed: the mesh is made on rank 0 instead (" + why + ")");
+    return false;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::exception_ptr error;
+  // Each stage on every rank alike (the same source, the same deck), each agreed on before the next collective.
   const auto partition_error = [&](const std::runtime_error& e) {  // rank 0 says it, once
     error = std::make_exception_ptr(SetupError(std::string("cannot partition the mesh for ") + std::to_string(ranks_) +
                                                " ranks: " + e.what() + "; run with fewer ranks (mpirun -np N)"));
   };
   std::vector<int> slab_part;
+  parallel::SourcePart g;
   try {
-    slab_part = parallel::generated_slab_parts(*plan);
+    slab_part = parallel::slab_parts(*source);
   } catch (const std::runtime_error& e) {
     partition_error(e);
   }
   agree_on_errors(error);
-  std::optional<inputs::ContactSpec> enforced;
   try {
-    if (region_.contact) {
-      // As the serial set-up on rank 0's whole mesh, from the plan.
-      contact = contact_faces(*plan, *region_.contact);
-      travel = contact_travel(deck_, *plan);
-      scale = decomposition_scale(region_.decomposition, travel, ranks_);
-      mesh::Mesh blocks;  // block_wave_moduli reads the blocks alone
-      blocks.blocks = plan->blocks;
-      enforced = as_enforced(*region_.contact, contact, block_wave_moduli(deck_, blocks));
-    }
-  } catch (...) {
-    error = std::current_exception();
-  }
-  agree_on_errors(error);
-  try {
-    parallel::place_generated_patches(*plan, enforced ? &*enforced : nullptr, slab_part, scale);
-    g = parallel::generated_part(*plan, std::move(slab_part));
+    parallel::place_source_patches(*source, enforced ? &*enforced : nullptr, slab_part, scale);
+    g = parallel::source_part(*source, std::move(slab_part));
   } catch (const std::runtime_error& e) {
     partition_error(e);
   }
   agree_on_errors(error);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  try {
-    validate_part(g.part, "generated mesh of finite element model '" + deck_.procedure.region.finite_element_model + "'");
-  } catch (...) {
-    error = std::current_exception();
-  }
-  agree_on_errors(error);
-  if (root_) mesh_hash_ = mesh_sha256(*plan);
-  parallel::broadcast(mesh_hash_, 0);
-  report_distributed_partition(g.part, g.shared_nodes, scale, travel, seconds);
-  if (region_.results && region_.results->xdmf) {
-    output::MeshOutline o;
-    o.nodes = plan->node_count;
-    o.elements = plan->element_count;
-    o.blocks = plan->blocks;
-    o.unit = distributed_length_unit(region_.results->length_unit, g.part.mesh);
-    results_outline_ = std::move(o);
-  }
-  plan.reset();
-  for (const auto& [name, size] : g.part.node_set_size) set_size_[name] = double(size);
+  finish_distributed_parts(*source, g, scale, travel, seconds);
+  source.reset();  // the plan, or the file's slices and routed sets (and the open file): not held while the model is built
   model_.emplace(build_model(deck_, std::move(g.part), contact));
   return true;
 }
 
+bool DeckRun::distributed_contact(const parallel::ElementSource& source, ContactFaces& contact,
+                                  std::optional<ContactTravel>& travel, parallel::AxisScale& scale,
+                                  std::optional<inputs::ContactSpec>& enforced, std::string& why) {
+  // As the serial set-up on rank 0's whole mesh, from the surfaces' elements alone (collective).
+  std::vector<int> global_node;
+  const mesh::Mesh surfaces = source.elements_mesh(parallel::contact_elements(source, *region_.contact), global_node);
+  std::exception_ptr error;
+  const auto* plan = dynamic_cast<const parallel::PlanSource*>(&source);
+  try {
+    contact = source_contact_faces(*region_.contact, surfaces, global_node);
+    if (plan) {
+      travel = contact_travel(deck_, plan->plan());
+    } else {
+      // No connected pieces without the whole mesh: a travel that may exist needs the serial set-up unless
+      // the deck's `coordinate scale` decides the cuts itself.
+      std::vector<std::string> sets;
+      for (const auto& [name, size] : source.node_set_sizes()) sets.push_back(name);
+      if (!region_.decomposition.coordinate_scale && contact_travel_one_piece(deck_, surfaces, sets))
+        why = "the contact's travel along a prescribed motion needs the mesh's connected pieces; give "
+              "`coordinate scale` in `begin decomposition` to set it up distributed";
+    }
+    scale = decomposition_scale(region_.decomposition, travel, ranks_);
+    mesh::Mesh blocks;  // block_wave_moduli reads the blocks alone
+    blocks.blocks = source.blocks();
+    enforced = as_enforced(*region_.contact, contact, block_wave_moduli(deck_, blocks));
+  } catch (...) {
+    error = std::current_exception();
+  }
+  agree_on_errors(error);
+  return why.empty();
+}
+
+void DeckRun::finish_distributed_parts(const parallel::ElementSource& source, parallel::SourcePart& g,
+                                       const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel,
+                                       double seconds) {
+  const auto* plan = dynamic_cast<const parallel::PlanSource*>(&source);
+  const auto* exodus = dynamic_cast<const parallel::ExodusSource*>(&source);
+  std::exception_ptr error;
+  try {
+    validate_part(g.part, plan ? "generated mesh of finite element model '" + deck_.procedure.region.finite_element_model + "'"
+                               : exodus->file().path());
+    // Rank 0 streams the mesh through the hash (a file opened again: a read error is agreed on, not a hang).
+    if (root_) mesh_hash_ = plan ? mesh_sha256(plan->plan()) : mesh_sha256(mesh::ExodusSlices(exodus->file().path(), false));
+  } catch (...) {
+    error = std::current_exception();
+  }
+  agree_on_errors(error);
+  parallel::broadcast(mesh_hash_, 0);
+  report_distributed_partition(g.part, g.shared_nodes, scale, travel, seconds,
+                               plan ? "generated a slab of the elements" : "read a slab of the elements from the file");
+  if (region_.results && region_.results->xdmf) {
+    output::MeshOutline o;
+    o.nodes = source.node_count();
+    o.elements = source.element_count();
+    o.blocks = source.blocks();
+    o.unit = distributed_length_unit(region_.results->length_unit, g.part.mesh);
+    results_outline_ = std::move(o);
+  }
+  for (const auto& [name, size] : g.part.node_set_size) set_size_[name] = double(size);
+}
+
 void DeckRun::report_distributed_partition(const parallel::MeshPart& mine, long long shared,
                                           const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel,
-                                          double seconds) {
+                                          double seconds, const char* each_rank) {
   const int elements = static_cast<int>(mine.global_element.size());
   const int fewest = -static_cast<int>(parallel::max(static_cast<long long>(-elements)));
   const int most = static_cast<int>(parallel::max(static_cast<long long>(elements)));
@@ -163,9 +238,9 @@ void DeckRun::report_distributed_partition(const parallel::MeshPart& mine, long 
   const std::string patches =
       region_.contact ? ", contact surfaces in one compact patch per rank" + sides : std::string();
   log_.say(format("parallel: %d ranks, PT-Scotch k-way partition of the element graph by all the ranks (set-up = "
-                  "distributed: each rank generated a slab of the elements, none the whole mesh)%s; %d-%d elements per "
+                  "distributed: each rank %s, none the whole mesh)%s; %d-%d elements per "
                   "rank; %lld nodes on partition boundaries; partitioned in %.3g s; every rank builds only its part",
-                  ranks_, patches.c_str(), fewest, most, shared, seconds));
+                  ranks_, each_rank, patches.c_str(), fewest, most, shared, seconds));
 }
 
 }  // namespace tribex::solver

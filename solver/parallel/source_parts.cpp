@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "solver/parallel/generated_parts.hpp"
+#include "solver/parallel/source_parts.hpp"
 
 #include <mpi.h>
 
@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/parallel/alltoall.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/contact_partition.hpp"
 #include "solver/parallel/element_slab.hpp"
@@ -18,32 +19,10 @@
 namespace tribex::solver::parallel {
 namespace {
 
-// MPI_Alltoallv of ints: `data` holds count[r] ints for rank r in rank order; returns what every rank
-// sent this one in source-rank order, `received[r]` of them from rank r. Counts are ints (MPI's).
-std::vector<int> exchange(const std::vector<int>& count, const std::vector<int>& data, std::vector<int>& received) {
-  const int ranks = size();
-  received.assign(static_cast<std::size_t>(ranks), 0);
-  MPI_Alltoall(count.data(), 1, MPI_INT, received.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  std::vector<int> send_at(static_cast<std::size_t>(ranks) + 1, 0), recv_at(static_cast<std::size_t>(ranks) + 1, 0);
-  long long total = 0;
-  for (int r = 0; r < ranks; ++r) {
-    send_at[r + 1] = send_at[r] + count[r];
-    total += received[r];
-    recv_at[r + 1] = static_cast<int>(std::min<long long>(total, INT32_MAX));
-  }
-  long long most = total;
-  MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_LONG_LONG, MPI_MAX, MPI_COMM_WORLD);
-  if (most > INT32_MAX) throw std::runtime_error("generated_part: more than 2^31 ints to exchange on one rank");
-  std::vector<int> recv(static_cast<std::size_t>(total));
-  MPI_Alltoallv(data.data(), count.data(), send_at.data(), MPI_INT, recv.data(), received.data(), recv_at.data(),
-                MPI_INT, MPI_COMM_WORLD);
-  return recv;
-}
-
 // Step 3: this rank's elements (global numbers, ascending) under the partition of the slabs.
-std::vector<int> partitioned_elements(const mesh::GeneratedPlan& plan, std::vector<int> part) {
+std::vector<int> partitioned_elements(int element_count, std::vector<int> part) {
   const int ranks = size(), me = rank();
-  const int first = slab_offsets(plan.element_count, ranks)[me];
+  const int first = slab_offsets(element_count, ranks)[me];
   std::vector<int> count(static_cast<std::size_t>(ranks), 0);
   for (int p : part) ++count[p];
   std::vector<int> at(static_cast<std::size_t>(ranks) + 1, 0);
@@ -62,8 +41,7 @@ long long fill_holders(const std::vector<int>& global_node, int node_count, Mesh
   const int ranks = size(), me = rank();
   const std::vector<int> home_offset = slab_offsets(node_count, ranks);
   std::vector<int> count(static_cast<std::size_t>(ranks), 0);
-  for (int n : global_node)
-    ++count[static_cast<std::size_t>(std::upper_bound(home_offset.begin(), home_offset.end(), n) - home_offset.begin() - 1)];
+  for (int n : global_node) ++count[static_cast<std::size_t>(home_of(home_offset, n))];
   std::vector<int> from;
   const std::vector<int> asked = exchange(count, global_node, from);  // ascending within each source
   // The home's nodes [lo, hi): each one's holders in source-rank order, i.e. ascending.
@@ -105,51 +83,67 @@ long long fill_holders(const std::vector<int>& global_node, int node_count, Mesh
 
 }  // namespace
 
-std::vector<int> generated_slab_parts(const mesh::GeneratedPlan& plan) {
+std::vector<int> PlanSource::slab_nodes() const {
+  const std::vector<int> offset = slab_offsets(plan_.element_count, size());
+  const int me = rank();
+  return mesh::element_nodes(plan_, offset[me], offset[me + 1] - offset[me]);
+}
+
+std::vector<int> PlanSource::side_set_elements(const std::vector<std::string>& names) const {
+  std::vector<int> elements;
+  for (const auto& name : names)
+    if (const auto it = plan_.side_sets.find(name); it != plan_.side_sets.end())
+      for (const auto& side : it->second) elements.push_back(side.element);
+  std::sort(elements.begin(), elements.end());
+  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  return elements;
+}
+
+std::vector<int> contact_elements(const ElementSource& source, const inputs::ContactSpec& contact) {
+  std::vector<std::string> names;
+  for (const auto& s : contact.surfaces) names.insert(names.end(), s.side_sets.begin(), s.side_sets.end());
+  return source.side_set_elements(names);
+}
+
+std::vector<int> slab_parts(const ElementSource& source) {
   const int ranks = size(), me = rank();
-  const std::vector<int> offset = slab_offsets(plan.element_count, ranks);
+  const std::vector<int> offset = slab_offsets(source.element_count(), ranks);
   ElementSlab slab;
   slab.first = offset[me];
   slab.count = offset[me + 1] - offset[me];
-  slab.nodes = mesh::element_nodes(plan, slab.first, slab.count);
+  slab.nodes = source.slab_nodes();
   const DualGraphRows rows = face_dual_graph(slab);
   slab.nodes = {};
   return ptscotch_parts(rows, ranks);
 }
 
-void place_generated_patches(const mesh::GeneratedPlan& plan, const inputs::ContactSpec* enforced,
-                             std::vector<int>& slab_part, const AxisScale& scale) {
+void place_source_patches(const ElementSource& source, const inputs::ContactSpec* enforced,
+                          std::vector<int>& slab_part, const AxisScale& scale) {
   const int ranks = size();
   if (!enforced || ranks <= 1) return;
-  std::vector<int> surface;  // the contact surfaces' elements, ascending
-  for (const auto& s : enforced->surfaces)
-    for (const auto& set : s.side_sets)
-      if (const auto it = plan.side_sets.find(set); it != plan.side_sets.end())
-        for (const auto& side : it->second) surface.push_back(side.element);
-  std::sort(surface.begin(), surface.end());
-  surface.erase(std::unique(surface.begin(), surface.end()), surface.end());
-  const int first = slab_offsets(plan.element_count, ranks)[rank()];
+  const std::vector<int> surface = contact_elements(source, *enforced);  // ascending
+  const int first = slab_offsets(source.element_count(), ranks)[rank()];
   const int end = first + static_cast<int>(slab_part.size());
   std::vector<int> part(surface.size(), -1);  // each from the rank whose slab holds it
   for (std::size_t k = 0; k < surface.size(); ++k)
     if (surface[k] >= first && surface[k] < end) part[k] = slab_part[static_cast<std::size_t>(surface[k] - first)];
   MPI_Allreduce(MPI_IN_PLACE, part.data(), static_cast<int>(part.size()), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   std::vector<int> global_node;
-  place_contact_patches(mesh::generate_elements(plan, surface, global_node), enforced, ranks, part, scale);
+  place_contact_patches(source.elements_mesh(surface, global_node), enforced, ranks, part, scale);
   for (std::size_t k = 0; k < surface.size(); ++k)
     if (surface[k] >= first && surface[k] < end) slab_part[static_cast<std::size_t>(surface[k] - first)] = part[k];
 }
 
-GeneratedPart generated_part(const mesh::GeneratedPlan& plan, std::vector<int> slab_part) {
-  GeneratedPart g;
+SourcePart source_part(const ElementSource& source, std::vector<int> slab_part) {
+  SourcePart g;
   MeshPart& p = g.part;
-  p.global_element = partitioned_elements(plan, std::move(slab_part));
-  p.mesh = mesh::generate_elements(plan, p.global_element, p.global_node);
-  p.global_node_count = plan.node_count;
-  p.global_element_count = plan.element_count;
-  p.node_set_size = plan.node_set_sizes();
-  p.side_set_size = plan.side_set_sizes();
-  g.shared_nodes = fill_holders(p.global_node, plan.node_count, p);
+  p.global_element = partitioned_elements(source.element_count(), std::move(slab_part));
+  p.mesh = source.elements_mesh(p.global_element, p.global_node);
+  p.global_node_count = source.node_count();
+  p.global_element_count = source.element_count();
+  p.node_set_size = source.node_set_sizes();
+  p.side_set_size = source.side_set_sizes();
+  g.shared_nodes = fill_holders(p.global_node, source.node_count(), p);
   return g;
 }
 
