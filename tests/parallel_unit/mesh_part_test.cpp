@@ -16,6 +16,7 @@
 #include "solver/model.hpp"
 #include "solver/parallel/mesh_part.hpp"
 #include "solver/parallel/partition.hpp"
+#include "tests/support/mesh_part_equal.hpp"
 
 using namespace tribex;
 using solver::parallel::MeshPart;
@@ -121,24 +122,7 @@ TEST(SplitMesh, APartSurvivesItsMessage) {
   const std::vector<int> part = solver::parallel::partition_elements(whole, 2);
   const MeshPart p = solver::parallel::split_mesh(whole, part, solver::parallel::node_holders(whole, part), 1);
   const MeshPart back = solver::parallel::unpack_part(solver::parallel::pack_part(p));
-  EXPECT_EQ(back.mesh.coordinates, p.mesh.coordinates);
-  EXPECT_EQ(back.mesh.connectivity, p.mesh.connectivity);
-  ASSERT_EQ(back.mesh.blocks.size(), p.mesh.blocks.size());
-  for (std::size_t b = 0; b < p.mesh.blocks.size(); ++b) {
-    EXPECT_EQ(back.mesh.blocks[b].name, p.mesh.blocks[b].name);
-    EXPECT_EQ(back.mesh.blocks[b].first_element, p.mesh.blocks[b].first_element);
-    EXPECT_EQ(back.mesh.blocks[b].element_count, p.mesh.blocks[b].element_count);
-  }
-  EXPECT_EQ(back.mesh.node_sets, p.mesh.node_sets);
-  EXPECT_EQ(back.mesh.side_sets, p.mesh.side_sets);
-  EXPECT_EQ(back.global_node, p.global_node);
-  EXPECT_EQ(back.global_element, p.global_element);
-  EXPECT_EQ(back.holder_offset, p.holder_offset);
-  EXPECT_EQ(back.holder_rank, p.holder_rank);
-  EXPECT_EQ(back.global_node_count, p.global_node_count);
-  EXPECT_EQ(back.global_element_count, p.global_element_count);
-  EXPECT_EQ(back.node_set_size, p.node_set_size);
-  EXPECT_EQ(back.side_set_size, p.side_set_size);
+  test::expect_same_part(back, p);
 }
 
 // build_model on a one-rank part (the parallel set-up's code: partial sums, the contact faces given

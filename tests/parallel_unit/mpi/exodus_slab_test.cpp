@@ -17,7 +17,6 @@
 #include <exodusII.h>
 
 #include <algorithm>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -31,6 +30,7 @@
 #include "solver/parallel/mesh_part.hpp"
 #include "solver/parallel/source_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
+#include "tests/support/mesh_part_equal.hpp"
 #include "tests/support/mpi_hertz_asperity.hpp"
 
 namespace tribex {
@@ -69,31 +69,6 @@ void write(const mesh::Mesh& m, const std::string& path, const mesh::ExodusLengt
   MPI_Barrier(MPI_COMM_WORLD);
 }
 
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
-void expect_same_part(const par::MeshPart& got, const par::MeshPart& want) {
-  EXPECT_EQ(got.global_element, want.global_element);
-  EXPECT_EQ(got.global_node, want.global_node);
-  EXPECT_TRUE(same_bits(got.mesh.coordinates, want.mesh.coordinates));
-  EXPECT_EQ(got.mesh.connectivity, want.mesh.connectivity);
-  ASSERT_EQ(got.mesh.blocks.size(), want.mesh.blocks.size());
-  for (std::size_t b = 0; b < got.mesh.blocks.size(); ++b) {
-    EXPECT_EQ(got.mesh.blocks[b].name, want.mesh.blocks[b].name);
-    EXPECT_EQ(got.mesh.blocks[b].first_element, want.mesh.blocks[b].first_element);
-    EXPECT_EQ(got.mesh.blocks[b].element_count, want.mesh.blocks[b].element_count);
-  }
-  EXPECT_EQ(got.mesh.node_sets, want.mesh.node_sets);
-  EXPECT_EQ(got.mesh.side_sets, want.mesh.side_sets);
-  EXPECT_EQ(got.holder_offset, want.holder_offset);
-  EXPECT_EQ(got.holder_rank, want.holder_rank);
-  EXPECT_EQ(got.global_node_count, want.global_node_count);
-  EXPECT_EQ(got.global_element_count, want.global_element_count);
-  EXPECT_EQ(got.node_set_size, want.node_set_size);
-  EXPECT_EQ(got.side_set_size, want.side_set_size);
-}
-
 // The part of this rank from the slices against split_mesh of the serial mesh, under `part` [element].
 void expect_parts(const std::string& path, const std::vector<int>& part, const char* what) {
   SCOPED_TRACE(std::string(what) + ", " + path + ", " + std::to_string(par::size()) + " ranks, rank " +
@@ -105,7 +80,7 @@ void expect_parts(const std::string& path, const std::vector<int>& part, const c
   const std::vector<int> slab_part(part.begin() + offset[par::rank()], part.begin() + offset[par::rank() + 1]);
   const par::SourcePart got = par::source_part(source, slab_part);
   const par::NodeHolders holders = par::node_holders(whole, part);
-  expect_same_part(got.part, par::split_mesh(whole, part, holders, par::rank()));
+  test::expect_same_part(got.part, par::split_mesh(whole, part, holders, par::rank()));
   long long shared = 0;
   for (int n = 0; n < whole.node_count(); ++n) shared += holders.count(n) > 1;
   EXPECT_EQ(got.shared_nodes, shared);

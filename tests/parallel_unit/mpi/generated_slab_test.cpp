@@ -13,7 +13,6 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include <cstring>
 #include <numeric>
 #include <vector>
 
@@ -23,6 +22,7 @@
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/element_slab.hpp"
 #include "solver/parallel/mesh_part.hpp"
+#include "tests/support/mesh_part_equal.hpp"
 #include "tests/support/mpi_hertz_asperity.hpp"
 
 namespace tribex {
@@ -81,10 +81,6 @@ Case tip_alone() {
   return {mesh::generate_asperity(a), mesh::plan_asperity(a)};
 }
 
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
 // Slab `r` of `slabs` from the plan against split_mesh of the serial mesh under the slab partition.
 void expect_slab(const Case& c, int slabs, int r, std::vector<int>& covered) {
   const int ne = c.whole.element_count();
@@ -99,16 +95,7 @@ void expect_slab(const Case& c, int slabs, int r, std::vector<int>& covered) {
   SCOPED_TRACE("slab " + std::to_string(r) + " of " + std::to_string(slabs));
   EXPECT_EQ(elements, want.global_element);
   EXPECT_EQ(global_node, want.global_node);
-  EXPECT_TRUE(same_bits(got.coordinates, want.mesh.coordinates));
-  EXPECT_EQ(got.connectivity, want.mesh.connectivity);
-  ASSERT_EQ(got.blocks.size(), want.mesh.blocks.size());
-  for (std::size_t b = 0; b < got.blocks.size(); ++b) {
-    EXPECT_EQ(got.blocks[b].name, want.mesh.blocks[b].name);
-    EXPECT_EQ(got.blocks[b].first_element, want.mesh.blocks[b].first_element);
-    EXPECT_EQ(got.blocks[b].element_count, want.mesh.blocks[b].element_count);
-  }
-  EXPECT_EQ(got.node_sets, want.mesh.node_sets);
-  EXPECT_EQ(got.side_sets, want.mesh.side_sets);
+  test::expect_same_mesh(got, want.mesh);
   EXPECT_EQ(c.plan.node_set_sizes(), want.node_set_size);
   EXPECT_EQ(c.plan.side_set_sizes(), want.side_set_size);
   const std::vector<int> corners = mesh::element_nodes(c.plan, offset[r], offset[r + 1] - offset[r]);
