@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+// A gmsh MSH 4.1 file read in slices (mesh/msh_slices.hpp through solver/parallel/exodus_source.hpp,
+// `set-up = distributed`), run under mpiexec at 1, 2 and 4 ranks (tests/parallel_unit/CMakeLists.txt).
+// Rank 0 writes the file (write_gmsh: blocks as physical volumes, side sets as physical surfaces of quads,
+// the node sets that are not a side set's as physical points); every rank reads it whole as well (read_gmsh:
+// the serial reference, small here) and checks that the part it builds from its slices alone (source_part)
+// is split_mesh's part of the serial mesh under the same partition: the same global element and node
+// numbers, bitwise the same coordinates, the same connectivity, blocks, node sets (a physical surface's
+// nodes made one, as read_gmsh does) and side sets (quads matched to hex faces) in the set's order, the same
+// holders and whole-mesh set sizes. ASCII and binary files; the slabs and a scattered partition. Also: the
+// streamed SHA-256 is the serial mesh's, and a truncated file is a one-line MeshError naming a byte.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "mesh/asperity.hpp"
+#include "mesh/box.hpp"
+#include "mesh/gmsh_io.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/msh_slices.hpp"
+#include "solver/parallel/communicator.hpp"
+#include "solver/parallel/element_slab.hpp"
+#include "solver/parallel/exodus_source.hpp"
+#include "solver/parallel/mesh_part.hpp"
+#include "solver/parallel/source_parts.hpp"
+#include "solver/restart/run_fingerprint.hpp"
+#include "tests/support/mesh_part_equal.hpp"
+#include "tests/support/mpi_hertz_asperity.hpp"
+
+namespace tribex {
+namespace {
+
+namespace par = solver::parallel;
+
+// A graded box beside tests/parallel/mpi_hertz.i's asperity: two blocks of hexes, side sets on both bodies.
+mesh::Mesh box_and_asperity() {
+  mesh::BoxSpec block;
+  block.name = "block";
+  block.origin = {-60e-9, -40e-9, -30e-9};
+  block.size = {20e-9, 15e-9, 12e-9};
+  block.intervals = {7, 5, 4};
+  block.grade_toward = "zmax";
+  block.grading_ratio = 1.3;
+  mesh::Mesh m;
+  mesh::add_box(m, block);
+  mesh::append(m, mesh::generate_asperity(test::mpi_hertz_asperity()));
+  return m;
+}
+
+std::string file(const std::string& name) { return "msh_slab_np" + std::to_string(par::size()) + "_" + name; }
+
+// Rank 0 writes `m` to `path`; the others wait for it.
+void write(const mesh::Mesh& m, const std::string& path, bool binary) {
+  if (par::rank() == 0) mesh::write_gmsh(m, path, binary);
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
+// The part of this rank from the slices against split_mesh of the serial mesh, under `part` [element].
+void expect_parts(const std::string& path, const std::vector<int>& part, const char* what) {
+  SCOPED_TRACE(std::string(what) + ", " + path + ", " + std::to_string(par::size()) + " ranks, rank " +
+               std::to_string(par::rank()));
+  const mesh::Mesh whole = mesh::read_gmsh(path);
+  auto slices = std::make_unique<mesh::MshSlices>(path);
+  ASSERT_EQ(slices->unsupported(), "");
+  par::ExodusSource source(std::move(slices));
+  source.route();
+  EXPECT_EQ(source.node_count(), whole.node_count());
+  const std::vector<int> offset = par::slab_offsets(whole.element_count(), par::size());
+  const std::vector<int> slab_part(part.begin() + offset[par::rank()], part.begin() + offset[par::rank() + 1]);
+  const par::SourcePart got = par::source_part(source, slab_part);
+  const par::NodeHolders holders = par::node_holders(whole, part);
+  test::expect_same_part(got.part, par::split_mesh(whole, part, holders, par::rank()));
+  long long shared = 0;
+  for (int n = 0; n < whole.node_count(); ++n) shared += holders.count(n) > 1;
+  EXPECT_EQ(got.shared_nodes, shared);
+  const std::vector<int> slab = source.slab_nodes();
+  EXPECT_TRUE(std::equal(slab.begin(), slab.end(), whole.connectivity.begin() + 8 * offset[par::rank()]));
+  EXPECT_EQ(solver::mesh_sha256(mesh::MshSlices(path)), solver::mesh_sha256(whole));
+  std::vector<int> want;
+  for (const char* name : {"tip_surface", "substrate_top"})
+    for (const auto& s : whole.side_sets.at(name)) want.push_back(s.element);
+  std::sort(want.begin(), want.end());
+  want.erase(std::unique(want.begin(), want.end()), want.end());
+  EXPECT_EQ(source.side_set_elements({"tip_surface", "substrate_top", "no_such_set"}), want);
+}
+
+void expect_file(const std::string& path, int elements) {
+  const int ranks = par::size();
+  std::vector<int> slabs(static_cast<std::size_t>(elements)), scattered(slabs.size());
+  const std::vector<int> offset = par::slab_offsets(elements, ranks);
+  for (int r = 0; r < ranks; ++r) std::fill(slabs.begin() + offset[r], slabs.begin() + offset[r + 1], r);
+  for (int e = 0; e < elements; ++e) scattered[static_cast<std::size_t>(e)] = (7 * e + e / 13) % ranks;
+  expect_parts(path, slabs, "slab partition");
+  expect_parts(path, scattered, "scattered partition");
+}
+
+TEST(MshSlab, BinaryPartsAreSplitMeshParts) {
+  const mesh::Mesh m = box_and_asperity();
+  write(m, file("binary.msh"), true);
+  // The file holds physical points (node sets that are no side set's nodes): the 0-D path is exercised.
+  const mesh::MshSlices slices(file("binary.msh"));
+  EXPECT_FALSE(slices.node_sets().names.empty());
+  EXPECT_EQ(slices.element_count(), m.element_count());
+  expect_file(file("binary.msh"), m.element_count());
+}
+
+TEST(MshSlab, AsciiPartsAreSplitMeshParts) {
+  const mesh::Mesh m = box_and_asperity();
+  write(m, file("ascii.msh"), false);
+  expect_file(file("ascii.msh"), m.element_count());
+}
+
+TEST(MshSlab, TruncatedFileIsOneLineNamingAByte) {
+  const mesh::Mesh m = box_and_asperity();
+  for (const bool binary : {true, false}) {
+    const std::string path = file(binary ? "cut_binary.msh" : "cut_ascii.msh");
+    write(m, path, binary);
+    if (par::rank() == 0) std::filesystem::resize_file(path, std::filesystem::file_size(path) * 2 / 3);
+    MPI_Barrier(MPI_COMM_WORLD);
+    try {
+      mesh::MshSlices slices(path);
+      ADD_FAILURE() << path << ": no error";
+    } catch (const mesh::MeshError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(path + ": byte ", 0), 0u) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tribex
