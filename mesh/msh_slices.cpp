@@ -35,6 +35,8 @@ class Reader {
   Reader(const std::string& path, bool binary) : path_(path), binary_(binary), buf_(1 << 20) {
     f_ = std::fopen(path.c_str(), "rb");
     if (!f_) throw MeshError(path + ": cannot be opened for reading; check its permissions");
+    if (fseeko(f_, 0, SEEK_END) != 0 || (size_ = ftello(f_)) < 0 || fseeko(f_, 0, SEEK_SET) != 0)
+      throw MeshError(path + ": cannot be read (seek failed)");
   }
   ~Reader() { std::fclose(f_); }
   Reader(const Reader&) = delete;
@@ -47,6 +49,11 @@ class Reader {
     if (offset >= start_ && offset <= start_ + static_cast<std::int64_t>(len_)) {
       at_ = static_cast<std::size_t>(offset - start_);  // inside the buffer: no read
       return;
+    }
+    if (offset > size_) {  // a count that skips past the end: a truncated file, said at its end
+      start_ = size_;
+      at_ = len_ = 0;
+      fail("file ends inside a section");
     }
     if (fseeko(f_, offset, SEEK_SET) != 0) fail("cannot seek");
     start_ = offset;
@@ -119,6 +126,7 @@ class Reader {
   std::FILE* f_ = nullptr;
   std::vector<char> buf_;
   std::int64_t start_ = 0;  // the file offset of buf_[0]
+  std::int64_t size_ = 0;   // the file's
   std::size_t at_ = 0, len_ = 0;
   std::string tok_;
 };
