@@ -208,7 +208,8 @@ void ExodusSource::route_node_sets() {
   const int lo = node_offset_[rank()], hi = node_offset_[rank() + 1];
   member_offset_.assign(static_cast<std::size_t>(hi - lo) + 1, 0);
   member_set_.clear();
-  std::vector<long long> sizes(node_set_names_.size() + 1, 0);  // [set] its home nodes; last: the unused nodes
+  // [set] its home nodes; then the unused nodes; then the unused nodes' set memberships (read_gmsh refuses those)
+  std::vector<long long> sizes(node_set_names_.size() + 2, 0);
   std::vector<char> in_element(static_cast<std::size_t>(hi - lo), 0);
   std::size_t k = 0;
   for (int n = lo; n < hi; ++n) {
@@ -218,14 +219,18 @@ void ExodusSource::route_node_sets() {
       if (pairs[k].second < 0) mine = 1;
       else member_set_.push_back(pairs[k].second);
     }
+    if (!mine) sizes.back() += static_cast<long long>(member_set_.size() - start);
     if (!mine) member_set_.resize(start);  // read_exodus drops a node no element uses from its sets
     for (std::size_t j = start; j < member_set_.size(); ++j) ++sizes[static_cast<std::size_t>(member_set_[j])];
-    sizes.back() += !mine;
+    sizes[node_set_names_.size()] += !mine;
     member_offset_[static_cast<std::size_t>(n - lo) + 1] = static_cast<int>(member_set_.size());
   }
   MPI_Allreduce(MPI_IN_PLACE, sizes.data(), static_cast<int>(sizes.size()), MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
   for (std::size_t s = 0; s < node_set_names_.size(); ++s) node_set_size_[node_set_names_[s]] = static_cast<int>(sizes[s]);
-  unused_ = sizes.back();
+  unused_ = sizes[node_set_names_.size()];
+  if (file_->sides_are_quads() && sizes.back() > 0)  // every rank alike
+    throw mesh::MeshError(file_->path() + ": a physical point or curve group has a node that belongs to no hex; sets "
+                          "must lie on the volume mesh");
   if (unused_ > 0) renumber(in_element);
 }
 
