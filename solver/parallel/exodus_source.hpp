@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
-// An Exodus II mesh file as an element source of the distributed set-up (element_source.hpp,
-// `set-up = distributed`, issue 57 scope 2): no rank reads or holds the whole mesh.
+// A mesh file read in slices as an element source of the distributed set-up (element_source.hpp,
+// `set-up = distributed`, issue 57 scope 2): no rank reads or holds the whole mesh. The file is any
+// mesh::MeshSlices (mesh/mesh_slices.hpp): an Exodus II file (mesh/exodus_slices.hpp, the name this class
+// kept) or a gmsh MSH 4.1 file (mesh/msh_slices.hpp), whose side sets are quads: match_quads() turns them
+// into (element, face) sides in route(), before they are routed as an Exodus file's are.
 //
-// What each rank reads (mesh/exodus_slices.hpp, the library's partial reads):
+// What each rank reads (for Exodus, the library's partial reads):
 //   - the connectivity of its slab of the elements (slab_offsets' even split): 32 B per element;
 //   - the coordinates of its even share of the node numbers, the nodes it is "home" to: 24 B per node;
 //   - an even share of the entries of every node set and side set.
