@@ -283,6 +283,51 @@ std::string read_format(Reader& r, bool& binary) {
   return "";
 }
 
+// The index as bytes and back (every member below; the same binary on every rank, so plain copies).
+struct Pack {
+  std::string bytes;
+  template <class T>
+  void pod(const T& v) {
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  template <class T>
+  void vec(const std::vector<T>& v) {
+    pod(v.size());
+    bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  void str(const std::string& v) {
+    pod(v.size());
+    bytes += v;
+  }
+};
+
+struct Unpack {
+  const std::string& bytes;
+  std::size_t at = 0;
+  template <class T>
+  void pod(T& v) {
+    if (at + sizeof v > bytes.size()) throw MeshError("a gmsh index that is cut short");
+    std::memcpy(&v, bytes.data() + at, sizeof v);
+    at += sizeof v;
+  }
+  template <class T>
+  void vec(std::vector<T>& v) {
+    std::size_t n = 0;
+    pod(n);
+    if (n > (bytes.size() - at) / sizeof(T)) throw MeshError("a gmsh index that is cut short");
+    v.resize(n);
+    std::memcpy(v.data(), bytes.data() + at, n * sizeof(T));
+    at += n * sizeof(T);
+  }
+  void str(std::string& v) {
+    std::size_t n = 0;
+    pod(n);
+    if (n > bytes.size() - at) throw MeshError("a gmsh index that is cut short");
+    v = bytes.substr(at, n);
+    at += n;
+  }
+};
+
 }  // namespace
 
 MshSlices::MshSlices(const std::string& path) : path_(path) {
@@ -487,6 +532,52 @@ std::vector<int> MshSlices::quads(std::size_t set, long long first, long long co
   std::vector<int> q(raw.size());
   for (std::size_t k = 0; k < raw.size(); ++k) q[k] = static_cast<int>(k % 5 == 0 ? raw[k] : raw[k] - 1);
   return q;
+}
+
+// Every member the reads use, in one list for both directions.
+template <class Archive>
+void MshSlices::fields(Archive& a) {
+  a.str(unsupported_);
+  a.pod(binary_);
+  a.pod(node_count_);
+  a.pod(element_count_);
+  a.vec(nodes_);
+  a.vec(elements_);
+  a.vec(hexes_);
+  a.vec(hex_first_);
+  std::size_t n = blocks_.size();
+  a.pod(n);
+  blocks_.resize(n);
+  for (Block& b : blocks_) {
+    a.str(b.name);
+    a.pod(b.first_element);
+    a.pod(b.element_count);
+  }
+  for (exodus::SetOutline* sets : {&node_sets_, &side_sets_}) {
+    n = sets->names.size();
+    a.pod(n);
+    sets->names.resize(n);
+    for (std::string& name : sets->names) a.str(name);
+    a.vec(sets->ids);
+    a.vec(sets->entries);
+  }
+  for (auto* blocks : {&node_set_blocks_, &side_set_blocks_}) {
+    n = blocks->size();
+    a.pod(n);
+    blocks->resize(n);
+    for (auto& b : *blocks) a.vec(b);
+  }
+}
+
+std::string MshSlices::index() const {
+  Pack p;
+  const_cast<MshSlices*>(this)->fields(p);  // Pack only reads (the resizes keep the sizes)
+  return p.bytes;
+}
+
+MshSlices::MshSlices(const std::string& path, const std::string& index) : path_(path) {
+  Unpack u{index};
+  fields(u);
 }
 
 }  // namespace tribex::mesh

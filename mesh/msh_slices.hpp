@@ -27,8 +27,12 @@ namespace tribex::mesh {
 
 class MshSlices final : public MeshSlices {
  public:
-  /// Walks the file (MeshError for a corrupt one); every rank may, the walk holding only the index.
+  /// Walks the file (MeshError for a corrupt one), holding only the index.
   explicit MshSlices(const std::string& path);
+  /// The index of a walk of the same file elsewhere (index() of another rank's MshSlices): no walk.
+  MshSlices(const std::string& path, const std::string& index);
+  /// The index as bytes (for MshSlices(path, index) on the other ranks: one rank walks the file, not P).
+  std::string index() const;
   /// Why the file cannot be read in slices ("" when it can); the reads below need it empty.
   const std::string& unsupported() const { return unsupported_; }
 
@@ -45,7 +49,7 @@ class MshSlices final : public MeshSlices {
   bool sides_are_quads() const override { return true; }
   std::vector<int> quads(std::size_t set, long long first, long long count) const override;
   void close() override {}
-  std::unique_ptr<MeshSlices> reopen(bool) const override { return std::make_unique<MshSlices>(path_); }
+  std::unique_ptr<MeshSlices> reopen(bool) const override { return std::make_unique<MshSlices>(*this); }
 
   /// One entity block of $Nodes or $Elements.
   struct EntityBlock {
@@ -63,6 +67,8 @@ class MshSlices final : public MeshSlices {
     std::string name;
     std::vector<std::size_t> blocks;  // its element blocks (indices into elements_), in file order
   };
+  template <class Archive>
+  void fields(Archive& a);
   void index(const std::vector<Group>& groups);
   void index_volumes(std::vector<Group> volumes);
   void index_sets(const std::vector<Group>& groups, int dim, exodus::SetOutline& sets,

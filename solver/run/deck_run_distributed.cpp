@@ -88,23 +88,37 @@ std::unique_ptr<parallel::ExodusSource> exodus_source(const std::string& path) {
   return exodus;
 }
 
-// An MSH 4.1 file's source: every rank walks the file for its index (mesh/msh_slices.hpp: a stream through a
-// 1 MiB buffer; the same file, the same verdict on every rank), then reads its slices. None, with the reason
-// in `why`, for a file that is not sliced (MSH 2.2, ...): the serial reader reads it.
+// An MSH 4.1 file's source: rank 0 walks the file for its index (mesh/msh_slices.hpp: a stream through a
+// 1 MiB buffer, msh_prescan's checks) and broadcasts it (a few kB: one walk, not P); then every rank reads its
+// slices. None, with the reason in `why` (every rank alike: it is in the index), for a file that is not sliced
+// (MSH 2.2, ...): the serial reader reads it.
 std::unique_ptr<parallel::ExodusSource> msh_source(const std::string& path, std::string& why) {
   std::unique_ptr<mesh::MshSlices> file;
-  std::unique_ptr<parallel::ExodusSource> source;
+  std::string index;
   std::exception_ptr error;
-  try {
+  const auto agree = [&](auto&& step) {
+    try {
+      step();
+    } catch (const mesh::MeshError& e) {
+      error = std::make_exception_ptr(SetupError(e.what()));
+    } catch (...) {
+      error = std::current_exception();
+    }
+    agree_on_errors(error);
+  };
+  agree([&] {
+    if (!parallel::is_root()) return;
     file = std::make_unique<mesh::MshSlices>(path);
-    if (!file->unsupported().empty()) why = "the gmsh file is not read in slices: it holds " + file->unsupported();
-    else source = std::make_unique<parallel::ExodusSource>(std::move(file));
-  } catch (const mesh::MeshError& e) {
-    error = std::make_exception_ptr(SetupError(e.what()));
-  } catch (...) {
-    error = std::current_exception();
+    index = file->index();
+  });
+  parallel::broadcast(index, 0);
+  if (!parallel::is_root()) file = std::make_unique<mesh::MshSlices>(path, index);
+  if (!file->unsupported().empty()) {
+    why = "the gmsh file is not read in slices: it holds " + file->unsupported();
+    return nullptr;
   }
-  agree_on_errors(error);
+  std::unique_ptr<parallel::ExodusSource> source;
+  agree([&] { source = std::make_unique<parallel::ExodusSource>(std::move(file)); });
   return source;
 }
 

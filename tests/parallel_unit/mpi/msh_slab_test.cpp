@@ -8,7 +8,8 @@
 // numbers, bitwise the same coordinates, the same connectivity, blocks, node sets (a physical surface's
 // nodes made one, as read_gmsh does) and side sets (quads matched to hex faces) in the set's order, the same
 // holders and whole-mesh set sizes. ASCII and binary files; the slabs and a scattered partition. Also: the
-// streamed SHA-256 is the serial mesh's, and a truncated file is a one-line MeshError naming a byte.
+// streamed SHA-256 is the serial mesh's, and a truncated file is a one-line MeshError naming a byte. Rank 0
+// walks the file and the others take its index, as the set-up does.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -64,7 +65,16 @@ void expect_parts(const std::string& path, const std::vector<int>& part, const c
   SCOPED_TRACE(std::string(what) + ", " + path + ", " + std::to_string(par::size()) + " ranks, rank " +
                std::to_string(par::rank()));
   const mesh::Mesh whole = mesh::read_gmsh(path);
-  auto slices = std::make_unique<mesh::MshSlices>(path);
+  // As the set-up does: rank 0 walks the file, the others take its index.
+  std::unique_ptr<mesh::MshSlices> slices;
+  std::string index;
+  if (par::rank() == 0) {
+    slices = std::make_unique<mesh::MshSlices>(path);
+    index = slices->index();
+  }
+  par::broadcast(index, 0);
+  if (par::rank() != 0) slices = std::make_unique<mesh::MshSlices>(path, index);
+  EXPECT_EQ(slices->index(), index);
   ASSERT_EQ(slices->unsupported(), "");
   par::ExodusSource source(std::move(slices));
   source.route();
