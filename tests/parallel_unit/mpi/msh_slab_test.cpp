@@ -9,7 +9,10 @@
 // nodes made one, as read_gmsh does) and side sets (quads matched to hex faces) in the set's order, the same
 // holders and whole-mesh set sizes. ASCII and binary files; the slabs and a scattered partition. Also: the
 // streamed SHA-256 is the serial mesh's, and a truncated file is a one-line MeshError naming a byte. Rank 0
-// walks the file and the others take its index, as the set-up does.
+// walks the file and the others take its index, as the set-up does. Also files gmsh's own mesher writes (nodes
+// in an entity block per point, curve, surface and volume; elements of every dimension), with and without
+// physical groups.
+#include <gmsh.h>
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -21,6 +24,7 @@
 #include "mesh/asperity.hpp"
 #include "mesh/box.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/msh_slices.hpp"
 #include "solver/parallel/communicator.hpp"
@@ -61,7 +65,8 @@ void write(const mesh::Mesh& m, const std::string& path, bool binary) {
 }
 
 // The part of this rank from the slices against split_mesh of the serial mesh, under `part` [element].
-void expect_parts(const std::string& path, const std::vector<int>& part, const char* what) {
+void expect_parts(const std::string& path, const std::vector<int>& part, const char* what,
+                  const std::vector<std::string>& sets = {"tip_surface", "substrate_top"}) {
   SCOPED_TRACE(std::string(what) + ", " + path + ", " + std::to_string(par::size()) + " ranks, rank " +
                std::to_string(par::rank()));
   const mesh::Mesh whole = mesh::read_gmsh(path);
@@ -91,11 +96,13 @@ void expect_parts(const std::string& path, const std::vector<int>& part, const c
   EXPECT_TRUE(std::equal(slab.begin(), slab.end(), whole.connectivity.begin() + 8 * offset[par::rank()]));
   EXPECT_EQ(solver::mesh_sha256(mesh::MshSlices(path)), solver::mesh_sha256(whole));
   std::vector<int> want;
-  for (const char* name : {"tip_surface", "substrate_top"})
+  for (const auto& name : sets)
     for (const auto& s : whole.side_sets.at(name)) want.push_back(s.element);
   std::sort(want.begin(), want.end());
   want.erase(std::unique(want.begin(), want.end()), want.end());
-  EXPECT_EQ(source.side_set_elements({"tip_surface", "substrate_top", "no_such_set"}), want);
+  std::vector<std::string> asked = sets;
+  asked.push_back("no_such_set");
+  EXPECT_EQ(source.side_set_elements(asked), want);
 }
 
 void expect_file(const std::string& path, int elements) {
@@ -122,6 +129,68 @@ TEST(MshSlab, AsciiPartsAreSplitMeshParts) {
   const mesh::Mesh m = box_and_asperity();
   write(m, file("ascii.msh"), false);
   expect_file(file("ascii.msh"), m.element_count());
+}
+
+// Rank 0 meshes an OCC box 1 x 2 x 0.5 with gmsh (transfinite 6 x 5 x 4 intervals, recombined to hexes) and
+// writes it: with a physical volume, the top as a physical surface and a corner as a physical point, or with
+// no physical group (every element written; one block "block_1", no sets).
+void mesh_box_with_gmsh(const std::string& path, bool binary, bool groups) {
+  if (par::rank() == 0) {
+    mesh::GmshSession session;
+    mesh::GmshScratchModel model("msh slab test");
+    gmsh::model::occ::addBox(0, 0, 0, 1.0, 2.0, 0.5);
+    gmsh::model::occ::synchronize();
+    gmsh::vectorpair curves, surfaces, top, corner;
+    gmsh::model::getEntities(curves, 1);
+    for (const auto& [dim, tag] : curves) {
+      double x0, y0, z0, x1, y1, z1;
+      gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
+      gmsh::model::mesh::setTransfiniteCurve(tag, (x1 - x0 > 0.1 ? 6 : y1 - y0 > 0.1 ? 5 : 4) + 1);
+    }
+    gmsh::model::getEntities(surfaces, 2);
+    for (const auto& [dim, tag] : surfaces) {
+      gmsh::model::mesh::setTransfiniteSurface(tag);
+      gmsh::model::mesh::setRecombine(dim, tag);
+    }
+    gmsh::model::mesh::setTransfiniteVolume(1);
+    gmsh::model::mesh::generate(3);
+    if (groups) {
+      gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "solid");
+      gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, 0.4, 1.1, 2.1, 0.6, top, 2);
+      gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, -0.1, 0.1, 0.1, 0.1, corner, 0);
+      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {top.at(0).second}), "top");
+      gmsh::model::addPhysicalGroup(0, {corner.at(0).second}, 7);  // unnamed: "nodes_7"
+    }
+    gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::write(path);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
+TEST(MshSlab, FilesOfGmshsOwnMesher) {
+  for (const bool binary : {true, false})
+    for (const bool groups : {true, false}) {
+      const std::string path = file(std::string("gmsh_") + (binary ? "binary" : "ascii") + (groups ? "" : "_bare") + ".msh");
+      mesh_box_with_gmsh(path, binary, groups);
+      const mesh::Mesh whole = mesh::read_gmsh(path);
+      ASSERT_EQ(whole.element_count(), 6 * 5 * 4) << path;
+      EXPECT_EQ(whole.node_sets.count("nodes_7"), groups ? 1u : 0u) << path;
+      EXPECT_EQ(whole.side_sets.count("top"), groups ? 1u : 0u) << path;
+      const int elements = whole.element_count(), ranks = par::size();
+      std::vector<int> scattered(static_cast<std::size_t>(elements));
+      for (int e = 0; e < elements; ++e) scattered[static_cast<std::size_t>(e)] = (7 * e + e / 13) % ranks;
+      if (!groups) {  // expect_parts asks for tip_surface / substrate_top: only the part here
+        par::ExodusSource source(std::make_unique<mesh::MshSlices>(path));
+        source.route();
+        const std::vector<int> offset = par::slab_offsets(elements, ranks);
+        const par::SourcePart got = par::source_part(
+            source, std::vector<int>(scattered.begin() + offset[par::rank()], scattered.begin() + offset[par::rank() + 1]));
+        test::expect_same_part(got.part, par::split_mesh(whole, scattered, par::node_holders(whole, scattered), par::rank()));
+        continue;
+      }
+      expect_parts(path, scattered, "scattered partition", {"top"});
+    }
 }
 
 TEST(MshSlab, TruncatedFileIsOneLineNamingAByte) {
