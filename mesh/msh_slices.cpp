@@ -21,6 +21,10 @@ namespace tribex::mesh {
 namespace {
 
 constexpr int gmsh_hex8 = 5, gmsh_quad4 = 3;
+// An ASCII block's entries have no fixed size: the walk notes the offset of every 4096th, so that a range is
+// found by one seek and at most 4095 entries skipped (a range read alone costs its own size, not the block's
+// earlier bytes: rank 0's hash reads the whole mesh in 65,536-entry chunks).
+constexpr long long kMarkEvery = 4096;
 
 // Nodes per gmsh element type (the first-order and the common second-order ones; gmsh's table); 0: unknown.
 int nodes_of_type(long long type) {
@@ -136,6 +140,8 @@ struct Walk {
   std::map<std::pair<int, int>, std::string> names;          // (dim, physical tag) -> name
   std::map<std::pair<int, int>, std::vector<int>> physicals;  // (dim, entity tag) -> physical tags
   std::vector<MshSlices::EntityBlock> nodes, elements;
+  std::vector<std::int64_t> marks;  // ASCII: see kMarkEvery
+  bool binary = false;
   std::uint64_t max_node = 0;
   std::string unsupported;
 };
@@ -226,7 +232,12 @@ void read_nodes(Reader& r, Walk& w) {
       e.last_tag = t;
     }
     e.at = r.tell();
-    r.skip(static_cast<std::uint64_t>(e.n * e.per), 8);
+    e.mark = static_cast<long long>(w.marks.size());
+    if (w.binary) r.skip(static_cast<std::uint64_t>(e.n * e.per), 8);
+    for (long long i = 0; !w.binary && i < e.n; ++i) {
+      if (i % kMarkEvery == 0) w.marks.push_back(r.tell());
+      r.skip(static_cast<std::uint64_t>(e.per), 8);
+    }
     w.nodes.push_back(e);
   }
   if (seen != count) r.fail("$Nodes blocks hold " + std::to_string(seen) + " nodes, not the declared " + std::to_string(count));
@@ -245,7 +256,9 @@ void read_element_section(Reader& r, Walk& w) {
       return;
     }
     e.at = r.tell();
+    e.mark = static_cast<long long>(w.marks.size());
     for (long long i = 0; i < e.n; ++i) {
+      if (!w.binary && i % kMarkEvery == 0) w.marks.push_back(r.tell());
       const auto t = static_cast<long long>(r.size());
       check_range(r, "element", static_cast<std::uint64_t>(t), lo, hi);
       if (i == 0) e.first_tag = t;
@@ -281,6 +294,16 @@ std::string read_format(Reader& r, bool& binary) {
   }
   section_end(r, "MeshFormat");
   return "";
+}
+
+// To entry k of block e, `tokens` values each: binary entries have a fixed size; an ASCII block's nearest mark
+// at or before k, then the entries after it skipped.
+void seek_entry(Reader& r, bool binary, const std::vector<std::int64_t>& marks, const MshSlices::EntityBlock& e,
+                long long k, int tokens) {
+  if (binary) return r.seek(e.at + k * tokens * 8);
+  const long long m = k / kMarkEvery;
+  r.seek(marks.at(static_cast<std::size_t>(e.mark + m)));
+  r.skip(static_cast<std::uint64_t>((k - m * kMarkEvery) * tokens), 8);
 }
 
 // The index as bytes and back (every member below; the same binary on every rank, so plain copies).
@@ -335,6 +358,7 @@ MshSlices::MshSlices(const std::string& path) : path_(path) {
   unsupported_ = read_format(r, binary_);
   if (!unsupported_.empty()) return;
   Walk w;
+  w.binary = binary_;
   std::string text;
   while (w.unsupported.empty() && r.line(text)) {
     if (text.empty() || text[0] != '$') continue;
@@ -365,6 +389,7 @@ MshSlices::MshSlices(const std::string& path) : path_(path) {
   node_count_ = static_cast<int>(next - 1);
   nodes_ = std::move(w.nodes);
   elements_ = std::move(w.elements);
+  marks_ = std::move(w.marks);
   // The physical groups as gmsh lists them: each (dim, tag) some entity carries, by (dim, tag).
   std::map<std::pair<int, int>, Group> groups;
   for (const auto& [entity, tags] : w.physicals)
@@ -466,8 +491,7 @@ std::vector<long long> MshSlices::read_elements(const std::vector<std::size_t>& 
     const EntityBlock& e = elements_[b];
     const long long lo = std::max(first, start), hi = std::min(first + count, start + e.n);
     if (lo < hi) {
-      r.seek(e.at);
-      r.skip(static_cast<std::uint64_t>((lo - start) * (1 + e.per)), 8);
+      seek_entry(r, binary_, marks_, e, lo - start, 1 + e.per);
       for (long long k = lo; k < hi; ++k)
         for (int j = 0; j <= e.per; ++j) out.push_back(static_cast<long long>(r.size()));
     }
@@ -496,8 +520,7 @@ std::vector<double> MshSlices::coordinates(int first, int count) const {
     const long long start = e.first_tag - 1;
     const long long lo = std::max<long long>(first, start), hi = std::min<long long>(first + count, start + e.n);
     if (lo >= hi) continue;
-    r.seek(e.at);
-    r.skip(static_cast<std::uint64_t>((lo - start) * e.per), 8);
+    seek_entry(r, binary_, marks_, e, lo - start, e.per);
     for (long long k = lo; k < hi; ++k) {
       for (int i = 0; i < 3; ++i) xyz.push_back(r.real());
       r.skip(static_cast<std::uint64_t>(e.per - 3), 8);
@@ -543,6 +566,7 @@ void MshSlices::fields(Archive& a) {
   a.pod(element_count_);
   a.vec(nodes_);
   a.vec(elements_);
+  a.vec(marks_);
   a.vec(hexes_);
   a.vec(hex_first_);
   std::size_t n = blocks_.size();

@@ -59,6 +59,7 @@ class MshSlices final : public MeshSlices {
     std::int64_t at = 0;                 // byte offset of the first entry ($Nodes: of the coordinates)
     long long first_tag = 0, last_tag = 0;
     bool ascending = true;  // tags ascending by one ($Nodes) or ascending ($Elements)
+    long long mark = 0;     // ASCII: its first entry in marks_ (the offset of every kMarkEvery-th entry)
   };
 
  private:
@@ -80,6 +81,7 @@ class MshSlices final : public MeshSlices {
   bool binary_ = false;
   int node_count_ = 0, element_count_ = 0;
   std::vector<EntityBlock> nodes_, elements_;  // $Nodes' blocks by first tag; $Elements' in file order
+  std::vector<std::int64_t> marks_;            // ASCII: byte offsets of every kMarkEvery-th entry of each block
   std::vector<std::size_t> hexes_;             // the hex blocks in the serial order
   std::vector<long long> hex_first_;           // [hexes_ + 1] the first element of each
   std::vector<Block> blocks_;
