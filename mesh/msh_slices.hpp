@@ -3,9 +3,9 @@
 // whole files, so this walks the file itself (the layout of msh_prescan.cpp): the constructor (on one rank;
 // the others take its index()) streams it once through a 1 MiB buffer, checking what msh_prescan checks
 // (counts, tag ranges, section ends: MeshError "PATH: byte N: ...") and keeping only an index: each
-// entity's physical groups, and the byte offset, count and tags of each entity block of $Nodes and $Elements. A range of elements or nodes is then read alone
-// from those offsets (binary: one seek; ASCII: a seek to the mark the walk noted every 4,096 entries, then
-// at most 4,095 entries skipped).
+// entity's physical groups, and the byte offset, count and tags of each entity block of $Nodes and
+// $Elements. A range of elements or nodes is then read alone from those offsets (binary: one seek; ASCII:
+// a seek to the mark the walk noted every 4,096 entries, then at most 4,095 entries skipped).
 //
 // What read_gmsh (gmsh_io.cpp) makes, this gives in the same numbering: blocks from the 3-D physical groups
 // by tag (or one "block_1"), each block's hexes by element tag; nodes by tag, those no hex uses dropped by
