@@ -18,6 +18,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -192,6 +194,31 @@ TEST(MshSlab, FilesOfGmshsOwnMesher) {
       }
       expect_parts(path, scattered, "scattered partition", {"top"});
     }
+}
+
+// A corrupt (not cut) ASCII file: the first hex's first node tag made 999999999, outside $Nodes' range.
+TEST(MshSlab, CorruptTagIsOneLineNamingAByte) {
+  const std::string path = file("corrupt.msh");
+  write(box_and_asperity(), path, false);
+  if (par::rank() == 0) {
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // $Elements, its header line, the first block's header line, then "tag node ...": the node replaced.
+    std::size_t at = text.find("$Elements\n");
+    for (int line = 0; line < 3; ++line) at = text.find('\n', at) + 1;
+    const std::size_t node = text.find(' ', at) + 1, end = text.find(' ', node);
+    text.replace(node, end - node, "999999999");
+    std::ofstream(path) << text;
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  try {
+    mesh::MshSlices slices(path);
+    ADD_FAILURE() << path << ": no error";
+  } catch (const mesh::MeshError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(path + ": byte ", 0), 0u) << what;
+    EXPECT_NE(what.find("element node tag 999999999 is outside the declared range"), std::string::npos) << what;
+  }
 }
 
 TEST(MshSlab, TruncatedFileIsOneLineNamingAByte) {
