@@ -3,7 +3,7 @@
 """Rank 0's set-up memory and the partition's wall time by `begin decomposition` method (issue 57 scope 1;
 tools/bench/README.md "Partition by all the ranks").
 
-  partition_methods.py TRIBEX DECK OUT --ranks 4 16 --methods metis ptscotch distributed
+  partition_methods.py TRIBEX DECK OUT --ranks 4 16 --methods metis ptscotch distributed [--results h5|both]
 
 Method `distributed` is `method = ptscotch` with `set-up = distributed` (issue 57 scope 2: every rank
 generates its slab of a generated mesh; its partition time is that of the whole distributed set-up of the
@@ -15,6 +15,11 @@ summary.json is already there, then prints one markdown row per run: rank 0's pe
 set-up, the largest of the other ranks', the partition's wall time on rank 0 and the nodes on partition
 boundaries (both from the log's `parallel:` line), the elements per rank. Times are one run each on a
 shared machine; the RSS is a count. Exit 2 with one line on bad arguments or a run that fails.
+
+--results h5|both (issue 57's counts "with results output on"): the copy also writes a results output
+(displacement and stress, every step; `format = both` adds results.exo) into OUT/METHOD_results-FORMAT, and the
+rows gain rank 0's and the other ranks' peak RSS over the whole run (summary.json `peak_rss_bytes`), which
+then includes the output steps.
 """
 import argparse
 import json
@@ -32,8 +37,18 @@ def fail(message):
     sys.exit(2)
 
 
-def deck_with_method(deck, method, out):
-    """DECK with `begin decomposition` / `method = METHOD` in its region, written to OUT/deck.i."""
+def results_block(results):
+    """A results output every step (the first output step is then inside the 5-step run), or none."""
+    if not results:
+        return []
+    return ["      begin results output fields", "        step increment = 1",
+            "        nodal variables = displacement", "        element variables = stress",
+            f"        format = {'xdmf' if results == 'h5' else 'both'}", "      end results output fields"]
+
+
+def deck_with_method(deck, method, out, results=None):
+    """DECK with `begin decomposition` / `method = METHOD` (and a results output) in its region, written to
+    OUT/deck.i."""
     try:
         with open(deck) as f:
             lines = f.read().split("\n")
@@ -44,7 +59,8 @@ def deck_with_method(deck, method, out):
         fail(f"{deck}: no 'use finite element model' line to put the decomposition block after")
     # "distributed": PT-Scotch with `set-up = distributed` (every rank generates its slab, issue 57 scope 2).
     block = ["      begin decomposition", f"        method = {'ptscotch' if method == 'distributed' else method}",
-             *(["        set-up = distributed"] if method == "distributed" else []), "      end decomposition"]
+             *(["        set-up = distributed"] if method == "distributed" else []), "      end decomposition",
+             *results_block(results)]
     os.makedirs(out, exist_ok=True)
     path = os.path.join(out, "deck.i")
     with open(path, "w") as f:
@@ -62,7 +78,7 @@ def run(tribex, deck, out, n):
         fail(f"{' '.join(cmd)}: exit {p.returncode}: {first}")
 
 
-def row(method, n, out):
+def row(method, n, out, results=None):
     with open(os.path.join(out, "summary.json")) as f:
         counts = json.load(f)["rank_counts"]
     with open(os.path.join(out, "log.txt")) as f:
@@ -71,8 +87,12 @@ def row(method, n, out):
     if not m:
         fail(f"{out}/log.txt: no partition line with its time")
     others = max((r["peak_rss_setup_bytes"] for r in counts[1:]), default=0)
-    return (f"| {method} | {n} | {counts[0]['peak_rss_setup_bytes'] / MB:.0f} | {others / MB:.0f} | {m.group(4)} "
+    text = (f"| {method} | {n} | {counts[0]['peak_rss_setup_bytes'] / MB:.0f} | {others / MB:.0f} | {m.group(4)} "
             f"| {int(m.group(3)):,} | {int(m.group(1)):,}-{int(m.group(2)):,} |")
+    if results:
+        whole = max((r["peak_rss_bytes"] for r in counts[1:]), default=0)
+        text += f" {counts[0]['peak_rss_bytes'] / MB:.0f} | {whole / MB:.0f} |"
+    return text
 
 
 def main():
@@ -83,21 +103,24 @@ def main():
     ap.add_argument("--ranks", type=int, nargs="+", default=[4, 16])
     ap.add_argument("--methods", nargs="+", default=["metis", "ptscotch"],
                     choices=["metis", "ptscotch", "rcb", "distributed"])
+    ap.add_argument("--results", choices=["h5", "both"], default=None,
+                    help="write results every step (h5: results.h5; both: and results.exo)")
     a = ap.parse_args()
     if any(n < 2 for n in a.ranks):
         fail("--ranks: 2 or more (one rank does not partition)")
     rows = []
     for n in a.ranks:
         for method in a.methods:
-            out = os.path.join(a.out, method)
+            out = os.path.join(a.out, method + (f"_results-{a.results}" if a.results else ""))
             run_out = os.path.join(out, f"np{n}")
             if not os.path.exists(os.path.join(run_out, "summary.json")):
-                run(a.tribex, deck_with_method(a.deck, method, out), run_out, n)
-            rows.append(row(method, n, run_out))
+                run(a.tribex, deck_with_method(a.deck, method, out, a.results), run_out, n)
+            rows.append(row(method, n, run_out, a.results))
             print(rows[-1], flush=True)
+    whole = " rank 0 peak RSS, whole run (MB) | other ranks, whole run (MB) |" if a.results else ""
     print("| method | ranks | rank 0 peak RSS, set-up (MB) | other ranks, max (MB) | partition wall time, rank 0 (s) "
-          "| nodes on partition boundaries | elements per rank |")
-    print("|---|---|---|---|---|---|---|")
+          "| nodes on partition boundaries | elements per rank |" + whole)
+    print("|---|---|---|---|---|---|---|" + ("---|---|" if a.results else ""))
     print("\n".join(rows))
 
 
