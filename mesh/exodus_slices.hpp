@@ -20,34 +20,38 @@
 
 #include "mesh/exodus_io.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_slices.hpp"
 
 namespace tribex::mesh {
 
-class ExodusSlices {
+class ExodusSlices final : public MeshSlices {
  public:
   /// MeshError, one line. `walk_header`: as exodus::open_checked's (false: another rank walked this file).
   explicit ExodusSlices(const std::string& path, bool walk_header = true);
-  ~ExodusSlices();
+  ~ExodusSlices() override;
   ExodusSlices(const ExodusSlices&) = delete;
   ExodusSlices& operator=(const ExodusSlices&) = delete;
 
-  const std::string& path() const { return path_; }
-  int node_count() const { return h_.nodes; }
-  int element_count() const { return h_.elements; }
-  const std::vector<Block>& blocks() const { return h_.blocks; }
-  const exodus::SetOutline& node_sets() const { return node_sets_; }
-  const exodus::SetOutline& side_sets() const { return side_sets_; }
+  const std::string& path() const override { return path_; }
+  int node_count() const override { return h_.nodes; }
+  int element_count() const override { return h_.elements; }
+  const std::vector<Block>& blocks() const override { return h_.blocks; }
+  const exodus::SetOutline& node_sets() const override { return node_sets_; }
+  const exodus::SetOutline& side_sets() const override { return side_sets_; }
 
   /// The 8 nodes of elements [first, first + count), [element][8], 0-based.
-  std::vector<int> connectivity(int first, int count) const;
+  std::vector<int> connectivity(int first, int count) const override;
   /// The coordinates of nodes [first, first + count), [node][3], m.
-  std::vector<double> coordinates(int first, int count) const;
+  std::vector<double> coordinates(int first, int count) const override;
   /// Entries [first, first + count) of node set `set` (index into node_sets()), 0-based nodes, file order.
-  std::vector<int> node_set(std::size_t set, long long first, long long count) const;
+  std::vector<int> node_set(std::size_t set, long long first, long long count) const override;
   /// Entries [first, first + count) of side set `set`, 0-based (element, face), file order.
-  std::vector<Side> side_set(std::size_t set, long long first, long long count) const;
+  std::vector<Side> side_set(std::size_t set, long long first, long long count) const override;
   /// Closes the file (the library's buffers freed); the outline above stays, the reads throw MeshError.
-  void close();
+  void close() override;
+  std::unique_ptr<MeshSlices> reopen(bool walk) const override {
+    return std::make_unique<ExodusSlices>(path_, walk);
+  }
 
  private:
   std::string path_;

@@ -391,7 +391,7 @@ Mesh read_gmsh(const std::string& path) {
   return mesh;
 }
 
-void write_gmsh(const Mesh& mesh, const std::string& path) {
+void write_gmsh(const Mesh& mesh, const std::string& path, bool binary, double version) {
   validate(mesh, "mesh to write to " + path);
   if (mesh.node_count() == 0) throw MeshError(path + ": refusing to write an empty mesh");
   const std::filesystem::path target(path);
@@ -474,8 +474,8 @@ void write_gmsh(const Mesh& mesh, const std::string& path) {
     for (const auto& [name, entities] : points_of)
       gmsh::model::setPhysicalName(0, gmsh::model::addPhysicalGroup(0, entities), name);
 
-    gmsh::option::setNumber("Mesh.Binary", 1);
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
+    gmsh::option::setNumber("Mesh.MshFileVersion", version);
     gmsh::option::setNumber("Mesh.SaveAll", 0);
     gmsh::logger::start();
     gmsh::write(tmp.string());

@@ -19,7 +19,8 @@ namespace tribex::mesh {
 Mesh read_gmsh(const std::string& path);
 
 /// Writes blocks as 3-D physical groups, side sets as 2-D physical groups (quads), node sets
-/// that are not the node set of a side set as 0-D physical groups. Binary 4.1.
-void write_gmsh(const Mesh& mesh, const std::string& path);
+/// that are not the node set of a side set as 0-D physical groups. MSH 4.1, binary (`binary` false: ASCII;
+/// `version` 2.2: the older format; both for the tests of the readers).
+void write_gmsh(const Mesh& mesh, const std::string& path, bool binary = true, double version = 4.1);
 
 }  // namespace tribex::mesh

@@ -3,9 +3,9 @@
 // holds it whole: an element source answers, on every rank, the few questions the pipeline asks (the
 // counts; this rank's slab of the even split of the elements; the mesh of any sorted list of elements;
 // the elements of named side sets). Two sources: a generated mesh's plan (PlanSource: every rank computes
-// any element from the grids alone, mesh/generated_plan.hpp) and an Exodus II file read in slices
-// (ExodusSource, exodus_source.hpp: each rank reads a slab of the elements and an even share of the
-// nodes and sets, and serves the other ranks' requests). The pipeline calls every member on every rank
+// any element from the grids alone, mesh/generated_plan.hpp) and an Exodus II or gmsh MSH 4.1 file read
+// in slices (ExodusSource, exodus_source.hpp: each rank reads a slab of the elements and an even share of
+// the nodes and sets, and serves the other ranks' requests). The pipeline calls every member on every rank
 // at the same point, so that a source may answer collectively (the Exodus one does; the plan's does not
 // need to).
 #pragma once

@@ -5,6 +5,8 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -12,6 +14,7 @@
 #include "solver/parallel/alltoall.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/element_slab.hpp"
+#include "mesh/mesh_error.hpp"
 
 namespace tribex::solver::parallel {
 namespace {
@@ -42,33 +45,63 @@ std::vector<int> send_records(const std::vector<int>& data, int width, To to) {
   return exchange(count, out, received);
 }
 
+// True if the quad's 4 nodes are `face` up to a cyclic rotation (the same outward normal: read_gmsh's test).
+bool same_rotation(const int* quad, const std::array<int, 4>& face) {
+  for (int r = 0; r < 4; ++r) {
+    bool equal = true;
+    for (int k = 0; k < 4 && equal; ++k) equal = quad[k] == face[static_cast<std::size_t>((k + r) % 4)];
+    if (equal) return true;
+  }
+  return false;
+}
+
+// Every rank's `mine`, in rank order, on every rank.
+std::vector<int> gather_all(const std::vector<int>& mine) {
+  const int ranks = size(), n = static_cast<int>(mine.size());
+  std::vector<int> count(static_cast<std::size_t>(ranks)), at(static_cast<std::size_t>(ranks) + 1, 0);
+  MPI_Allgather(&n, 1, MPI_INT, count.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 0; r < ranks; ++r) at[r + 1] = at[r] + count[r];
+  std::vector<int> all(static_cast<std::size_t>(at[ranks]));
+  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), count.data(), at.data(), MPI_INT, MPI_COMM_WORLD);
+  return all;
+}
+
 }  // namespace
 
-ExodusSource::ExodusSource(const std::string& path, bool walk_header) : file_(path, walk_header) {
-  node_count_ = file_.node_count();
+ExodusSource::ExodusSource(const std::string& path, bool walk_header)
+    : ExodusSource(std::make_unique<mesh::ExodusSlices>(path, walk_header)) {}
+
+ExodusSource::ExodusSource(std::unique_ptr<mesh::MeshSlices> file) : file_(std::move(file)) {
+  node_count_ = file_->node_count();
   const int ranks = size(), me = rank();
-  element_offset_ = slab_offsets(file_.element_count(), ranks);
-  node_offset_ = slab_offsets(file_.node_count(), ranks);
-  slab_ = file_.connectivity(element_offset_[me], element_offset_[me + 1] - element_offset_[me]);
-  xyz_ = file_.coordinates(node_offset_[me], node_offset_[me + 1] - node_offset_[me]);
+  element_offset_ = slab_offsets(file_->element_count(), ranks);
+  node_offset_ = slab_offsets(file_->node_count(), ranks);
+  slab_ = file_->connectivity(element_offset_[me], element_offset_[me + 1] - element_offset_[me]);
+  xyz_ = file_->coordinates(node_offset_[me], node_offset_[me + 1] - node_offset_[me]);
   read_set_slices();
-  file_.close();  // all this rank reads of it: the library's buffers are not held through the partition
+  file_->close();  // all this rank reads of it: the library's buffers are not held through the partition
 }
 
 void ExodusSource::read_set_slices() {
-  const auto& ss = file_.side_sets();
+  const auto& ss = file_->side_sets();
   for (std::size_t s = 0; s < ss.names.size(); ++s) {
     const auto [first, count] = my_share(ss.entries[s]);
-    const std::vector<mesh::Side> sides = file_.side_set(s, first, count);
+    if (file_->sides_are_quads()) {  // matched to hex faces in route()
+      const std::vector<int> q = file_->quads(s, first, count);
+      for (std::size_t k = 0; k < q.size(); k += 5)
+        my_quads_.insert(my_quads_.end(), {q[k], static_cast<int>(s), q[k + 1], q[k + 2], q[k + 3], q[k + 4]});
+      continue;
+    }
+    const std::vector<mesh::Side> sides = file_->side_set(s, first, count);
     for (std::size_t k = 0; k < sides.size(); ++k)
       my_sides_.push_back({sides[k].element, static_cast<int>(s), static_cast<int>(first + static_cast<long long>(k)),
                            sides[k].face});
   }
-  const auto& ns = file_.node_sets();
+  const auto& ns = file_->node_sets();
   node_set_names_ = ns.names;
   for (std::size_t s = 0; s < ns.names.size(); ++s) {
     const auto [first, count] = my_share(ns.entries[s]);
-    for (int n : file_.node_set(s, first, count)) {
+    for (int n : file_->node_set(s, first, count)) {
       my_set_nodes_.push_back(n);
       my_set_nodes_.push_back(static_cast<int>(s));
     }
@@ -78,7 +111,56 @@ void ExodusSource::read_set_slices() {
     if (std::find(ns.names.begin(), ns.names.end(), name) == ns.names.end()) node_set_names_.push_back(name);
 }
 
+// A gmsh file's side sets are quads: read_gmsh (mesh/gmsh_io.cpp) matches each to the hex face with its
+// nodes whose outward order (hex8_face_nodes) is the quad's up to a rotation; an interior face belongs to two
+// hexes, one per orientation. Every rank gets every quad (the side sets' size, the mesh's surface, not its
+// volume) and offers its slab's faces; the smallest matching (element, face) wins, one of the orientation if
+// any (read_gmsh's pick among two faces of neither orientation is its sort's; a mesh has none). A side's
+// position in its set is element * 6 + face: read_gmsh sorts each side set by (element, face).
+void ExodusSource::match_quads() {
+  const std::vector<int> quads = gather_all(my_quads_);  // [quad][6]: tag, set, 4 nodes
+  my_quads_ = {};
+  const std::size_t n = quads.size() / 6;
+  std::vector<std::pair<std::array<int, 4>, std::size_t>> keys(n);
+  for (std::size_t q = 0; q < n; ++q) {
+    std::copy_n(&quads[6 * q + 2], 4, keys[q].first.begin());
+    std::sort(keys[q].first.begin(), keys[q].first.end());
+    keys[q].second = q;
+  }
+  std::sort(keys.begin(), keys.end());
+  constexpr long long none = std::numeric_limits<long long>::max();
+  std::vector<long long> best(2 * n, none);  // [quad] of its orientation; [n + quad] of either
+  const int first = element_offset_[rank()];
+  for (std::size_t e = 0; e < slab_.size() / 8; ++e)
+    for (int f = 0; f < 6; ++f) {
+      std::array<int, 4> face{}, key{};
+      for (int k = 0; k < 4; ++k) face[k] = slab_[8 * e + static_cast<std::size_t>(mesh::hex8_face_nodes[f][k])];
+      key = face;
+      std::sort(key.begin(), key.end());
+      const long long side = 6 * (first + static_cast<long long>(e)) + f;
+      auto it = std::lower_bound(keys.begin(), keys.end(), std::pair(key, std::size_t{0}));
+      for (; it != keys.end() && it->first == key; ++it) {
+        const std::size_t q = it->second;
+        best[n + q] = std::min(best[n + q], side);
+        if (same_rotation(&quads[6 * q + 2], face)) best[q] = std::min(best[q], side);
+      }
+    }
+  MPI_Allreduce(MPI_IN_PLACE, best.data(), static_cast<int>(best.size()), MPI_LONG_LONG, MPI_MIN, MPI_COMM_WORLD);
+  const auto& ss = file_->side_sets();
+  for (std::size_t q = 0; q < n; ++q) {
+    const long long side = best[q] != none ? best[q] : best[n + q];
+    const std::string& set = ss.names[static_cast<std::size_t>(quads[6 * q + 1])];
+    if (side == none)  // read_gmsh's words: every rank alike
+      throw mesh::MeshError(file_->path() + ": quad element tag " + std::to_string(quads[6 * q]) + " of physical surface '" +
+                            set + "' is not a face of any hex; side sets must be faces of the volume mesh");
+    const int element = static_cast<int>(side / 6);
+    if (home_of(element_offset_, element) == rank())
+      my_sides_.push_back({element, quads[6 * q + 1], static_cast<int>(side), static_cast<int>(side % 6)});
+  }
+}
+
 void ExodusSource::route() {
+  if (file_->sides_are_quads()) match_quads();
   route_sides();
   route_node_sets();
 }
@@ -101,12 +183,12 @@ void ExodusSource::route_node_sets() {
   // sets, and (node, -1) for every node of the slab (the nodes some element uses).
   std::vector<int> data = std::move(my_set_nodes_);
   my_set_nodes_ = {};
-  const auto& ss = file_.side_sets();
+  const auto& ss = file_->side_sets();
   const int first = element_offset_[rank()];
   for (const SideEntry& e : sides_) {
     const auto it = std::find(node_set_names_.begin(), node_set_names_.end(), ss.names[static_cast<std::size_t>(e.set)]);
     const int set = static_cast<int>(it - node_set_names_.begin());
-    if (set < static_cast<int>(file_.node_sets().names.size())) continue;  // the file has a node set of its name
+    if (set < static_cast<int>(file_->node_sets().names.size())) continue;  // the file has a node set of its name
     for (int a : mesh::hex8_face_nodes[e.face])
       data.insert(data.end(), {slab_[8 * static_cast<std::size_t>(e.element - first) + a], set});
   }
@@ -126,7 +208,8 @@ void ExodusSource::route_node_sets() {
   const int lo = node_offset_[rank()], hi = node_offset_[rank() + 1];
   member_offset_.assign(static_cast<std::size_t>(hi - lo) + 1, 0);
   member_set_.clear();
-  std::vector<long long> sizes(node_set_names_.size() + 1, 0);  // [set] its home nodes; last: the unused nodes
+  // [set] its home nodes; then the unused nodes; then the unused nodes' set memberships (read_gmsh refuses those)
+  std::vector<long long> sizes(node_set_names_.size() + 2, 0);
   std::vector<char> in_element(static_cast<std::size_t>(hi - lo), 0);
   std::size_t k = 0;
   for (int n = lo; n < hi; ++n) {
@@ -136,14 +219,18 @@ void ExodusSource::route_node_sets() {
       if (pairs[k].second < 0) mine = 1;
       else member_set_.push_back(pairs[k].second);
     }
+    if (!mine) sizes.back() += static_cast<long long>(member_set_.size() - start);
     if (!mine) member_set_.resize(start);  // read_exodus drops a node no element uses from its sets
     for (std::size_t j = start; j < member_set_.size(); ++j) ++sizes[static_cast<std::size_t>(member_set_[j])];
-    sizes.back() += !mine;
+    sizes[node_set_names_.size()] += !mine;
     member_offset_[static_cast<std::size_t>(n - lo) + 1] = static_cast<int>(member_set_.size());
   }
   MPI_Allreduce(MPI_IN_PLACE, sizes.data(), static_cast<int>(sizes.size()), MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
   for (std::size_t s = 0; s < node_set_names_.size(); ++s) node_set_size_[node_set_names_[s]] = static_cast<int>(sizes[s]);
-  unused_ = sizes.back();
+  unused_ = sizes[node_set_names_.size()];
+  if (file_->sides_are_quads() && sizes.back() > 0)  // every rank alike
+    throw mesh::MeshError(file_->path() + ": a physical point or curve group has a node that belongs to no hex; sets "
+                          "must lie on the volume mesh");
   if (unused_ > 0) renumber(in_element);
 }
 
@@ -186,7 +273,7 @@ void ExodusSource::renumber(const std::vector<char>& used) {
 
 std::map<std::string, int> ExodusSource::side_set_sizes() const {
   std::map<std::string, int> sizes;
-  const auto& ss = file_.side_sets();
+  const auto& ss = file_->side_sets();
   for (std::size_t s = 0; s < ss.names.size(); ++s) sizes[ss.names[s]] = static_cast<int>(ss.entries[s]);
   return sizes;
 }
@@ -269,7 +356,7 @@ mesh::Mesh ExodusSource::elements_mesh(const std::vector<int>& elements, std::ve
     n = static_cast<int>(std::lower_bound(global_node.begin(), global_node.end(), n) - global_node.begin());
   ask_nodes(global_node, m);
   // Blocks are contiguous ranges of global elements, so of local ones too (split_mesh).
-  for (const auto& b : file_.blocks()) {
+  for (const auto& b : file_->blocks()) {
     const auto lo = std::lower_bound(elements.begin(), elements.end(), b.first_element);
     const auto hi = std::lower_bound(lo, elements.end(), b.first_element + b.element_count);
     m.blocks.push_back({b.name, static_cast<int>(lo - elements.begin()), static_cast<int>(hi - lo)});
@@ -277,14 +364,14 @@ mesh::Mesh ExodusSource::elements_mesh(const std::vector<int>& elements, std::ve
   // Side sets in each set's order (by position), every set by name.
   std::sort(sides.begin(), sides.end(),
             [](const SideEntry& a, const SideEntry& b) { return std::tie(a.set, a.position) < std::tie(b.set, b.position); });
-  const auto& ss = file_.side_sets();
+  const auto& ss = file_->side_sets();
   for (const auto& name : ss.names) m.side_sets[name];
   for (const SideEntry& e : sides) m.side_sets[ss.names[static_cast<std::size_t>(e.set)]].push_back({e.element, e.face});
   return m;
 }
 
 std::vector<int> ExodusSource::side_set_elements(const std::vector<std::string>& names) const {
-  const auto& ss = file_.side_sets();
+  const auto& ss = file_->side_sets();
   std::set<int> wanted;
   for (const auto& name : names)
     if (const auto it = std::find(ss.names.begin(), ss.names.end(), name); it != ss.names.end())
@@ -293,14 +380,7 @@ std::vector<int> ExodusSource::side_set_elements(const std::vector<std::string>&
   for (const SideEntry& e : sides_)
     if (wanted.count(e.set) && (mine.empty() || mine.back() != e.element)) mine.push_back(e.element);
   // Every rank's (ascending, disjoint slabs in rank order): gathered in rank order is ascending.
-  const int ranks = size();
-  std::vector<int> count(static_cast<std::size_t>(ranks)), at(static_cast<std::size_t>(ranks) + 1, 0);
-  const int n = static_cast<int>(mine.size());
-  MPI_Allgather(&n, 1, MPI_INT, count.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  for (int r = 0; r < ranks; ++r) at[r + 1] = at[r] + count[r];
-  std::vector<int> all(static_cast<std::size_t>(at[ranks]));
-  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), count.data(), at.data(), MPI_INT, MPI_COMM_WORLD);
-  return all;
+  return gather_all(mine);
 }
 
 }  // namespace tribex::solver::parallel

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
-// An Exodus II mesh file as an element source of the distributed set-up (element_source.hpp,
-// `set-up = distributed`, issue 57 scope 2): no rank reads or holds the whole mesh.
+// A mesh file read in slices as an element source of the distributed set-up (element_source.hpp,
+// `set-up = distributed`, issue 57 scope 2): no rank reads or holds the whole mesh. The file is any
+// mesh::MeshSlices (mesh/mesh_slices.hpp): an Exodus II file (mesh/exodus_slices.hpp, the name this class
+// kept) or a gmsh MSH 4.1 file (mesh/msh_slices.hpp), whose side sets are quads: match_quads() turns them
+// into (element, face) sides in route(), before they are routed as an Exodus file's are.
 //
-// What each rank reads (mesh/exodus_slices.hpp, the library's partial reads):
+// What each rank reads (for Exodus, the library's partial reads):
 //   - the connectivity of its slab of the elements (slab_offsets' even split): 32 B per element;
 //   - the coordinates of its even share of the node numbers, the nodes it is "home" to: 24 B per node;
 //   - an even share of the entries of every node set and side set.
@@ -23,10 +26,12 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "mesh/exodus_slices.hpp"
+#include "mesh/mesh_slices.hpp"
 #include "solver/parallel/element_source.hpp"
 
 namespace tribex::solver::parallel {
@@ -37,12 +42,14 @@ class ExodusSource final : public ElementSource {
   /// file, thrown by the rank that meets it: the caller agrees on it before route(). `walk_header` false:
   /// the netCDF header's walk (16 MiB read per rank) is left to one rank that opened the file first.
   explicit ExodusSource(const std::string& path, bool walk_header = true);
+  /// The same of any file read in slices (mesh/mesh_slices.hpp: an Exodus or an MSH 4.1 file).
+  explicit ExodusSource(std::unique_ptr<mesh::MeshSlices> file);
   /// Collective over MPI_COMM_WORLD: the routing above.
   void route();
 
-  int element_count() const override { return file_.element_count(); }
+  int element_count() const override { return file_->element_count(); }
   int node_count() const override { return node_count_; }  // the nodes some element uses (read_exodus's)
-  const std::vector<mesh::Block>& blocks() const override { return file_.blocks(); }
+  const std::vector<mesh::Block>& blocks() const override { return file_->blocks(); }
   std::map<std::string, int> node_set_sizes() const override { return node_set_size_; }
   std::map<std::string, int> side_set_sizes() const override;
   std::vector<int> slab_nodes() const override { return slab_; }
@@ -53,20 +60,21 @@ class ExodusSource final : public ElementSource {
   /// in file order, as read_exodus does.
   long long unused_nodes() const { return unused_; }
   /// The file's outline (counts, blocks, sets); closed once the constructor has read this rank's share.
-  const mesh::ExodusSlices& file() const { return file_; }
+  const mesh::MeshSlices& file() const { return *file_; }
 
  private:
   struct SideEntry {
     int element, set, position, face;  // global element, side set index, position in the set, face 0..5
   };
   void read_set_slices();
+  void match_quads();
   void route_sides();
   void route_node_sets();
   void renumber(const std::vector<char>& used);
   void ask_elements(const std::vector<int>& elements, std::vector<int>& conn, std::vector<SideEntry>& sides) const;
   void ask_nodes(const std::vector<int>& global_node, mesh::Mesh& m) const;
 
-  mesh::ExodusSlices file_;
+  std::unique_ptr<mesh::MeshSlices> file_;
   std::vector<int> element_offset_, node_offset_;  // the even splits (slab_offsets)
   std::vector<int> slab_;                          // [slab element][8] global nodes
   std::vector<double> xyz_;                        // [home node][3], m
@@ -75,6 +83,7 @@ class ExodusSource final : public ElementSource {
   std::vector<int> member_offset_, member_set_;    // [home node + 1] CSR: the node sets holding it, ascending
   std::map<std::string, int> node_set_size_;
   std::vector<SideEntry> my_sides_;       // this rank's slices of the side sets, until routed
+  std::vector<int> my_quads_;             // gmsh: this rank's slices of the side sets' quads (tag, set, 4 nodes)
   std::vector<int> my_set_nodes_;         // this rank's slices of the node sets as (node, set) pairs, until routed
   long long unused_ = 0;
   int node_count_ = 0;

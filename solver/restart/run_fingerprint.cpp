@@ -39,7 +39,7 @@ std::string mesh_sha256(const mesh::GeneratedPlan& plan) {
   return hash.hex();
 }
 
-std::string mesh_sha256(const mesh::ExodusSlices& file) {
+std::string mesh_sha256(const mesh::MeshSlices& file) {
   // read_exodus's mesh drops the nodes no element uses and numbers the others in file order: a bit per node
   // marks the used ones (one pass over the connectivity), a count per 64 nodes gives each its new number.
   constexpr int chunk = 65536;

@@ -21,10 +21,10 @@ std::string mesh_sha256(const mesh::Mesh& m);
 /// mesh_sha256 of the plan's mesh (mesh/generated_plan.hpp), the arrays generated and hashed 65,536
 /// nodes and elements at a time: the same digest without the whole mesh in memory.
 std::string mesh_sha256(const mesh::GeneratedPlan& plan);
-/// The same of an Exodus file read in slices (mesh/exodus_slices.hpp), 65,536 nodes and elements at a time:
-/// read_exodus's mesh's digest (the nodes no element uses dropped and the others renumbered, as it does, with a
+/// The same of an Exodus or MSH 4.1 file read in slices (mesh/mesh_slices.hpp), 65,536 nodes and elements at a time:
+/// read_exodus's (read_gmsh's) mesh's digest (the nodes no element uses dropped and the others renumbered, as it does, with a
 /// bit per node of the file: two passes over the connectivity, one over the coordinates).
-std::string mesh_sha256(const mesh::ExodusSlices& file);
+std::string mesh_sha256(const mesh::MeshSlices& file);
 /// "" when the restart file was written by this deck and mesh (or by a tribex that did not record
 /// them); else what differs, one line.
 std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash);

@@ -2,7 +2,7 @@
 // run_deck, stage 1 with `begin decomposition` / `set-up = distributed` (issue 57 scope 2; solver/README.md
 // "Parallel runs"): every rank makes its own part of the mesh, no rank holds the whole mesh. The mesh comes
 // from an element source (parallel/element_source.hpp): a generated mesh's plan (mesh/generated_plan.hpp)
-// or an Exodus II file read in slices (parallel/exodus_source.hpp). What the serial set-up
+// or an Exodus II or MSH 4.1 file read in slices (parallel/exodus_source.hpp, mesh/mesh_slices.hpp). What the serial set-up
 // (deck_run_setup.cpp, DeckRun::build_parts) does on rank 0's whole mesh is done here from the source or
 // from the parts:
 //   - the partition: PT-Scotch on the slabs' dual graph, elements exchanged (parallel/source_parts.hpp);
@@ -25,6 +25,7 @@
 #include <memory>
 
 #include "mesh/mesh_error.hpp"
+#include "mesh/msh_slices.hpp"
 #include "solver/parallel/contact_travel.hpp"
 #include "solver/parallel/exodus_source.hpp"
 #include "solver/parallel/source_parts.hpp"
@@ -68,28 +69,15 @@ output::LengthUnit distributed_length_unit(const std::string& choice, const mesh
   return output::resolve_length_unit(choice, box);
 }
 
-// The deck's mesh as an element source, or none with the reason in `why` (every rank alike). Collective:
-// an Exodus file is opened and read in slices on every rank, its errors agreed on (a bad file: exit 2, the
-// lowest failing rank's one line, nothing written).
-std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck, std::string& why) {
-  std::unique_ptr<parallel::ElementSource> source;
-  std::optional<std::string> path;
-  std::exception_ptr error;
-  try {
-    std::string not_exodus;
-    if (auto plan = generated_plan(deck, why)) source = std::make_unique<parallel::PlanSource>(std::move(*plan));
-    else if (!(path = exodus_slices_path(deck, not_exodus)) && !not_exodus.empty()) why = not_exodus;  // a file's reason
-  } catch (...) {
-    error = std::current_exception();
-  }
-  agree_on_errors(error);
-  if (!path) return source;
-  // Rank 0 opens the file first and walks its netCDF header (read_exodus's checks, the file's first 16 MiB);
-  // the other ranks, once it has, open it with the header's remaining checks only (not P reads of 16 MiB).
+// An Exodus file's source. Rank 0 opens the file first and walks its netCDF header (read_exodus's checks,
+// the file's first 16 MiB); the other ranks, once it has, open it with the header's remaining checks only
+// (not P reads of 16 MiB).
+std::unique_ptr<parallel::ExodusSource> exodus_source(const std::string& path) {
   std::unique_ptr<parallel::ExodusSource> exodus;
+  std::exception_ptr error;
   for (const bool first : {true, false}) {
     try {
-      if (first == parallel::is_root()) exodus = std::make_unique<parallel::ExodusSource>(*path, first);
+      if (first == parallel::is_root()) exodus = std::make_unique<parallel::ExodusSource>(path, first);
     } catch (const mesh::MeshError& e) {
       error = std::make_exception_ptr(SetupError(e.what()));
     } catch (...) {
@@ -97,9 +85,70 @@ std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck
     }
     agree_on_errors(error);
   }
-  exodus->route();  // the nodes no element uses dropped as read_exodus drops them
-  why.clear();
   return exodus;
+}
+
+// An MSH 4.1 file's source: rank 0 walks the file for its index (mesh/msh_slices.hpp: a stream through a
+// 1 MiB buffer, msh_prescan's checks) and broadcasts it (a few kB: one walk, not P); then every rank reads its
+// slices. None, with the reason in `why` (every rank alike: it is in the index), for a file that is not sliced
+// (MSH 2.2, ...): the serial reader reads it.
+std::unique_ptr<parallel::ExodusSource> msh_source(const std::string& path, std::string& why) {
+  std::unique_ptr<mesh::MshSlices> file;
+  std::string index;
+  std::exception_ptr error;
+  const auto agree = [&](auto&& step) {
+    try {
+      step();
+    } catch (const mesh::MeshError& e) {
+      error = std::make_exception_ptr(SetupError(e.what()));
+    } catch (...) {
+      error = std::current_exception();
+    }
+    agree_on_errors(error);
+  };
+  agree([&] {
+    if (!parallel::is_root()) return;
+    file = std::make_unique<mesh::MshSlices>(path);
+    index = file->index();
+  });
+  parallel::broadcast(index, 0);
+  if (!parallel::is_root()) file = std::make_unique<mesh::MshSlices>(path, index);
+  if (!file->unsupported().empty()) {
+    why = "the gmsh file is not read in slices: it holds " + file->unsupported();
+    return nullptr;
+  }
+  std::unique_ptr<parallel::ExodusSource> source;
+  agree([&] { source = std::make_unique<parallel::ExodusSource>(std::move(file)); });
+  return source;
+}
+
+// The deck's mesh as an element source, or none with the reason in `why` (every rank alike). Collective:
+// an Exodus or MSH 4.1 file is opened and read in slices on every rank, its errors agreed on (a bad file:
+// exit 2, the lowest failing rank's one line, nothing written).
+std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck, std::string& why) {
+  std::unique_ptr<parallel::ElementSource> source;
+  std::optional<std::string> path;
+  bool gmsh = false;
+  std::exception_ptr error;
+  try {
+    std::string not_file;
+    if (auto plan = generated_plan(deck, why)) source = std::make_unique<parallel::PlanSource>(std::move(*plan));
+    else if (!(path = mesh_slices_path(deck, not_file, gmsh)) && !not_file.empty()) why = not_file;  // a file's reason
+  } catch (...) {
+    error = std::current_exception();
+  }
+  agree_on_errors(error);
+  if (!path) return source;
+  std::unique_ptr<parallel::ExodusSource> file = gmsh ? msh_source(*path, why) : exodus_source(*path);
+  if (!file) return nullptr;
+  try {
+    file->route();  // the nodes no element uses dropped as the serial readers drop them; gmsh's quads matched
+  } catch (const mesh::MeshError& e) {
+    error = std::make_exception_ptr(SetupError(e.what()));
+  }
+  agree_on_errors(error);
+  why.clear();
+  return file;
 }
 
 // The contact faces, as contact_faces(whole mesh) makes them, from the surfaces' elements alone.
@@ -202,7 +251,7 @@ void DeckRun::finish_distributed_parts(const parallel::ElementSource& source, pa
     validate_part(g.part, plan ? "generated mesh of finite element model '" + deck_.procedure.region.finite_element_model + "'"
                                : exodus->file().path());
     // Rank 0 streams the mesh through the hash (a file opened again: a read error is agreed on, not a hang).
-    if (root_) mesh_hash_ = plan ? mesh_sha256(plan->plan()) : mesh_sha256(mesh::ExodusSlices(exodus->file().path(), false));
+    if (root_) mesh_hash_ = plan ? mesh_sha256(plan->plan()) : mesh_sha256(*exodus->file().reopen(false));
   } catch (...) {
     error = std::current_exception();
   }

@@ -240,13 +240,13 @@ std::optional<mesh::GeneratedPlan> generated_plan(const inputs::Deck& deck, std:
   return plan;
 }
 
-std::optional<std::string> exodus_slices_path(const inputs::Deck& deck, std::string& why_not) {
+std::optional<std::string> mesh_slices_path(const inputs::Deck& deck, std::string& why_not, bool& gmsh) {
   const inputs::FiniteElementModelSpec& spec = model_spec(deck);
   // What build_mesh adds to the file's mesh needs the whole mesh (as for generated_plan).
   why_not.clear();
-  if (spec.source == inputs::FiniteElementModelSpec::Source::gmsh) why_not = "the mesh is read from a gmsh file (Exodus II only is read in slices)";
-  else if (spec.source != inputs::FiniteElementModelSpec::Source::exodus) return std::nullopt;  // generated_plan's case
-  else if (!spec.surface_layers.empty()) why_not = "surface layer blocks are split off the whole mesh";
+  gmsh = spec.source == inputs::FiniteElementModelSpec::Source::gmsh;
+  if (!gmsh && spec.source != inputs::FiniteElementModelSpec::Source::exodus) return std::nullopt;  // generated_plan's case
+  if (!spec.surface_layers.empty()) why_not = "surface layer blocks are split off the whole mesh";
   else if (!deck.procedure.region.rigid_bodies.empty()) why_not = "rigid bodies collect their nodes from the whole mesh";
   if (!why_not.empty()) return std::nullopt;
   return spec.database_path;
