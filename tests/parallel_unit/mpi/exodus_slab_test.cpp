@@ -39,16 +39,7 @@ namespace {
 namespace par = solver::parallel;
 
 mesh::Mesh box_and_asperity() {
-  mesh::BoxSpec block;
-  block.name = "block";
-  block.origin = {-60e-9, -40e-9, -30e-9};
-  block.size = {20e-9, 15e-9, 12e-9};
-  block.intervals = {7, 5, 4};
-  block.grade_toward = "zmax";
-  block.grading_ratio = 1.3;
-  mesh::Mesh m;
-  mesh::add_box(m, block);
-  mesh::append(m, mesh::generate_asperity(test::mpi_hertz_asperity()));
+  mesh::Mesh m = test::box_beside_mpi_hertz_asperity({7, 5, 4});
   // Side sets with no node set of their name: read_exodus makes them node sets (so must the slices).
   m.node_sets.erase("tip_surface");
   m.node_sets.erase("block_zmax");

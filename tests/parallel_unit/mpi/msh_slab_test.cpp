@@ -45,19 +45,7 @@ namespace par = solver::parallel;
 
 // A graded box beside tests/parallel/mpi_hertz.i's asperity: two blocks of hexes, side sets on both bodies.
 // The box's 4,320 hexes and 5,168 nodes pass the 4,096 entries between an ASCII block's marks (msh_slices.cpp).
-mesh::Mesh box_and_asperity() {
-  mesh::BoxSpec block;
-  block.name = "block";
-  block.origin = {-60e-9, -40e-9, -30e-9};
-  block.size = {20e-9, 15e-9, 12e-9};
-  block.intervals = {18, 16, 15};
-  block.grade_toward = "zmax";
-  block.grading_ratio = 1.3;
-  mesh::Mesh m;
-  mesh::add_box(m, block);
-  mesh::append(m, mesh::generate_asperity(test::mpi_hertz_asperity()));
-  return m;
-}
+mesh::Mesh box_and_asperity() { return test::box_beside_mpi_hertz_asperity({18, 16, 15}); }
 
 std::string file(const std::string& name) { return "msh_slab_np" + std::to_string(par::size()) + "_" + name; }
 
