@@ -30,7 +30,7 @@
 #include "solver/parallel/mesh_part.hpp"
 #include "solver/parallel/source_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
-#include "tests/support/mesh_part_equal.hpp"
+#include "tests/parallel_unit/mpi/source_part_checks.hpp"
 #include "tests/support/mpi_hertz_asperity.hpp"
 
 namespace tribex {
@@ -67,36 +67,15 @@ void expect_parts(const std::string& path, const std::vector<int>& part, const c
   const mesh::Mesh whole = mesh::read_exodus(path);
   par::ExodusSource source(path);
   source.route();
-  const std::vector<int> offset = par::slab_offsets(whole.element_count(), par::size());
-  const std::vector<int> slab_part(part.begin() + offset[par::rank()], part.begin() + offset[par::rank() + 1]);
-  const par::SourcePart got = par::source_part(source, slab_part);
-  const par::NodeHolders holders = par::node_holders(whole, part);
-  test::expect_same_part(got.part, par::split_mesh(whole, part, holders, par::rank()));
-  long long shared = 0;
-  for (int n = 0; n < whole.node_count(); ++n) shared += holders.count(n) > 1;
-  EXPECT_EQ(got.shared_nodes, shared);
-  // The slab is the serial connectivity's, the streamed hash the serial mesh's.
-  const std::vector<int> slab = source.slab_nodes();
-  EXPECT_TRUE(std::equal(slab.begin(), slab.end(), whole.connectivity.begin() + 8 * offset[par::rank()]));
+  test::expect_source_part(source, whole, part, {"tip_surface", "substrate_top"});
+  // The streamed hash is the serial mesh's; the file was closed after this rank's reads.
   EXPECT_EQ(solver::mesh_sha256(mesh::ExodusSlices(path)), solver::mesh_sha256(whole));
-  EXPECT_THROW(source.file().coordinates(0, 1), mesh::MeshError);  // closed after this rank's reads
-  // The elements of two side sets, on every rank.
-  std::vector<int> want;
-  for (const char* name : {"tip_surface", "substrate_top"})
-    for (const auto& s : whole.side_sets.at(name)) want.push_back(s.element);
-  std::sort(want.begin(), want.end());
-  want.erase(std::unique(want.begin(), want.end()), want.end());
-  EXPECT_EQ(source.side_set_elements({"tip_surface", "substrate_top", "no_such_set"}), want);
+  EXPECT_THROW(source.file().coordinates(0, 1), mesh::MeshError);
 }
 
 void expect_file(const std::string& path, int elements) {
-  const int ranks = par::size();
-  std::vector<int> slabs(static_cast<std::size_t>(elements)), scattered(slabs.size());
-  const std::vector<int> offset = par::slab_offsets(elements, ranks);
-  for (int r = 0; r < ranks; ++r) std::fill(slabs.begin() + offset[r], slabs.begin() + offset[r + 1], r);
-  for (int e = 0; e < elements; ++e) scattered[static_cast<std::size_t>(e)] = (7 * e + e / 13) % ranks;
-  expect_parts(path, slabs, "slab partition");
-  expect_parts(path, scattered, "scattered partition");
+  test::for_slab_and_scattered_partitions(
+      elements, [&](const std::vector<int>& part, const char* what) { expect_parts(path, part, what); });
 }
 
 std::string file(const std::string& name) { return "exodus_slab_np" + std::to_string(par::size()) + "_" + name; }
