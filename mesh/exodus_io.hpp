@@ -69,7 +69,7 @@ struct Header {
   double per_metre = 1.0;      // the coordinates' length unit (length_unit_of)
 };
 /// Throws MeshError (one line, naming `path`). `walk_header` false skips the netCDF header's walk (the
-/// file's first 16 MiB read and checked), for a rank whose file another rank has just walked (exodus_source.hpp).
+/// file's first 16 MiB read and checked), for a rank whose file another rank has just walked (file_slice_source.hpp).
 Header open_checked(const std::string& path, bool walk_header = true);
 
 /// One kind of set (node or side) of an open file: names (Sierra's defaults for unnamed ones), ids and

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // An Exodus II mesh file read in slices (issue 57 scope 2: `set-up = distributed`, no rank holding the
-// whole mesh; solver/parallel/exodus_source.hpp routes the slices between the ranks). The file is opened
+// whole mesh; solver/parallel/file_slice_source.hpp routes the slices between the ranks). The file is opened
 // with read_exodus's checks (exodus::open_checked: the netCDF header walked against the file's size,
 // HEX8 blocks, the stated limits); then any contiguous range of the elements' connectivity (the netCDF
 // hyperslab of each block's `connect` variable, ex_get_partial_conn), of the nodes' coordinates
@@ -11,7 +11,7 @@
 // with read_exodus's arithmetic: the same doubles).
 //
 // What read_exodus does on the whole mesh and a slice cannot: drop the nodes no element uses and renumber
-// the others, add a side set's nodes as a node set of its name (exodus_source.hpp does both by routing),
+// the others, add a side set's nodes as a node set of its name (file_slice_source.hpp does both by routing),
 // validate the elements (the set-up validates each rank's part).
 #pragma once
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A mesh file read in slices (issue 57 scope 2: `set-up = distributed`, no rank holding the whole mesh):
-// what solver/parallel/exodus_source.hpp asks of a file, answered by an Exodus II file (exodus_slices.hpp)
+// what solver/parallel/file_slice_source.hpp asks of a file, answered by an Exodus II file (exodus_slices.hpp)
 // or an MSH 4.1 file (msh_slices.hpp). Numbers are 0-based in the file's numbering: elements in the order
 // the serial reader gives them, nodes in the file's order; the source drops the nodes no element uses and
 // renumbers the others in that order, as read_exodus and read_gmsh both do.

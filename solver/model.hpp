@@ -127,7 +127,7 @@ mesh::Mesh build_mesh(const inputs::FiniteElementModelSpec& spec);
 /// bodies). Throws as build_mesh does for a bad box or asperity.
 std::optional<mesh::GeneratedPlan> generated_plan(const inputs::Deck& deck, std::string& why_not);
 /// The Exodus II or gmsh file of the deck's mesh (`gmsh` says which) where build_mesh(deck) is that file
-/// alone, so that the ranks can read it in slices (`set-up = distributed`, parallel/exodus_source.hpp); else
+/// alone, so that the ranks can read it in slices (`set-up = distributed`, parallel/file_slice_source.hpp); else
 /// none with the reason in `why_not` (surface layer blocks, rigid bodies; a generated mesh: none, `why_not`
 /// empty).
 std::optional<std::string> mesh_slices_path(const inputs::Deck& deck, std::string& why_not, bool& gmsh);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // One MPI_Alltoallv of plain values, the message of the distributed set-up's exchanges (source_parts.cpp,
-// exodus_source.cpp): every rank sends each rank a run of values and receives theirs in source-rank order.
+// file_slice_source.cpp): every rank sends each rank a run of values and receives theirs in source-rank order.
 #pragma once
 
 #include <mpi.h>

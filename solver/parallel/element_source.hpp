@@ -4,7 +4,7 @@
 // counts; this rank's slab of the even split of the elements; the mesh of any sorted list of elements;
 // the elements of named side sets). Two sources: a generated mesh's plan (PlanSource: every rank computes
 // any element from the grids alone, mesh/generated_plan.hpp) and an Exodus II or gmsh MSH 4.1 file read
-// in slices (ExodusSource, exodus_source.hpp: each rank reads a slab of the elements and an even share of
+// in slices (FileSliceSource, file_slice_source.hpp: each rank reads a slab of the elements and an even share of
 // the nodes and sets, and serves the other ranks' requests). The pipeline calls every member on every rank
 // at the same point, so that a source may answer collectively (the Exodus one does; the plan's does not
 // need to).

@@ -14,7 +14,7 @@
 //      holder its nodes' lists back (two all-to-alls).
 // The part is distribute_mesh's for the same partition (the same local numbering, sets, holders and
 // whole-mesh sizes). Every node is in an element (a grid's nodes are its elements' corners; an Exodus
-// source checks it, exodus_source.hpp), so node_holders' check has nothing to find here.
+// source checks it, file_slice_source.hpp), so node_holders' check has nothing to find here.
 #pragma once
 
 #include <vector>

@@ -2,7 +2,7 @@
 // run_deck, stage 1 with `begin decomposition` / `set-up = distributed` (issue 57 scope 2; solver/README.md
 // "Parallel runs"): every rank makes its own part of the mesh, no rank holds the whole mesh. The mesh comes
 // from an element source (parallel/element_source.hpp): a generated mesh's plan (mesh/generated_plan.hpp)
-// or an Exodus II or MSH 4.1 file read in slices (parallel/exodus_source.hpp, mesh/mesh_slices.hpp). What the serial set-up
+// or an Exodus II or MSH 4.1 file read in slices (parallel/file_slice_source.hpp, mesh/mesh_slices.hpp). What the serial set-up
 // (deck_run_setup.cpp, DeckRun::build_parts) does on rank 0's whole mesh is done here from the source or
 // from the parts:
 //   - the partition: PT-Scotch on the slabs' dual graph, elements exchanged (parallel/source_parts.hpp);
@@ -27,7 +27,7 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/msh_slices.hpp"
 #include "solver/parallel/contact_travel.hpp"
-#include "solver/parallel/exodus_source.hpp"
+#include "solver/parallel/file_slice_source.hpp"
 #include "solver/parallel/source_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 #include "solver/run/deck_run.hpp"
@@ -72,12 +72,12 @@ output::LengthUnit distributed_length_unit(const std::string& choice, const mesh
 // An Exodus file's source. Rank 0 opens the file first and walks its netCDF header (read_exodus's checks,
 // the file's first 16 MiB); the other ranks, once it has, open it with the header's remaining checks only
 // (not P reads of 16 MiB).
-std::unique_ptr<parallel::ExodusSource> exodus_source(const std::string& path) {
-  std::unique_ptr<parallel::ExodusSource> exodus;
+std::unique_ptr<parallel::FileSliceSource> file_slice_source(const std::string& path) {
+  std::unique_ptr<parallel::FileSliceSource> exodus;
   std::exception_ptr error;
   for (const bool first : {true, false}) {
     try {
-      if (first == parallel::is_root()) exodus = std::make_unique<parallel::ExodusSource>(path, first);
+      if (first == parallel::is_root()) exodus = std::make_unique<parallel::FileSliceSource>(path, first);
     } catch (const mesh::MeshError& e) {
       error = std::make_exception_ptr(SetupError(e.what()));
     } catch (...) {
@@ -92,7 +92,7 @@ std::unique_ptr<parallel::ExodusSource> exodus_source(const std::string& path) {
 // 1 MiB buffer, msh_prescan's checks) and broadcasts it (a few kB: one walk, not P); then every rank reads its
 // slices. None, with the reason in `why` (every rank alike: it is in the index), for a file that is not sliced
 // (MSH 2.2, ...): the serial reader reads it.
-std::unique_ptr<parallel::ExodusSource> msh_source(const std::string& path, std::string& why) {
+std::unique_ptr<parallel::FileSliceSource> msh_source(const std::string& path, std::string& why) {
   std::unique_ptr<mesh::MshSlices> file;
   std::string index;
   std::exception_ptr error;
@@ -117,8 +117,8 @@ std::unique_ptr<parallel::ExodusSource> msh_source(const std::string& path, std:
     why = "the gmsh file is not read in slices: it holds " + file->unsupported();
     return nullptr;
   }
-  std::unique_ptr<parallel::ExodusSource> source;
-  agree([&] { source = std::make_unique<parallel::ExodusSource>(std::move(file)); });
+  std::unique_ptr<parallel::FileSliceSource> source;
+  agree([&] { source = std::make_unique<parallel::FileSliceSource>(std::move(file)); });
   return source;
 }
 
@@ -139,7 +139,7 @@ std::unique_ptr<parallel::ElementSource> element_source(const inputs::Deck& deck
   }
   agree_on_errors(error);
   if (!path) return source;
-  std::unique_ptr<parallel::ExodusSource> file = gmsh ? msh_source(*path, why) : exodus_source(*path);
+  std::unique_ptr<parallel::FileSliceSource> file = gmsh ? msh_source(*path, why) : file_slice_source(*path);
   if (!file) return nullptr;
   try {
     file->route();  // the nodes no element uses dropped as the serial readers drop them; gmsh's quads matched
@@ -245,7 +245,7 @@ void DeckRun::finish_distributed_parts(const parallel::ElementSource& source, pa
                                        const parallel::AxisScale& scale, const std::optional<ContactTravel>& travel,
                                        double seconds) {
   const auto* plan = dynamic_cast<const parallel::PlanSource*>(&source);
-  const auto* exodus = dynamic_cast<const parallel::ExodusSource*>(&source);
+  const auto* exodus = dynamic_cast<const parallel::FileSliceSource*>(&source);
   std::exception_ptr error;
   try {
     validate_part(g.part, plan ? "generated mesh of finite element model '" + deck_.procedure.region.finite_element_model + "'"

@@ -2,7 +2,7 @@
 // tribex_write_deck_mesh DECK OUT.exo|OUT.msh [--unused-node|--msh22]: the mesh of DECK's region (build_mesh,
 // as a run builds it) written as Exodus II (or, for a name ending .msh, as binary gmsh MSH 4.1; --msh22: ASCII
 // MSH 2.2, which the set-up does not read in slices), so that the tests
-// of the read in slices (`set-up = distributed`, solver/parallel/exodus_source.hpp) run a deck's mesh from a
+// of the read in slices (`set-up = distributed`, solver/parallel/file_slice_source.hpp) run a deck's mesh from a
 // file without a file over the repository's size limit. --unused-node adds one node no element uses.
 #include <cstdio>
 #include <exception>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// An Exodus II file read in slices (solver/parallel/exodus_source.hpp, `set-up = distributed`), run under
+// An Exodus II file read in slices (solver/parallel/file_slice_source.hpp, `set-up = distributed`), run under
 // mpiexec at 1, 2 and 4 ranks (tests/parallel_unit/CMakeLists.txt). Rank 0 writes the file; every rank reads
 // it whole as well (read_exodus: the serial reference, small here) and checks that the part it builds from
 // its slices alone (source_part) is distribute_mesh's part of the serial mesh under the same partition
@@ -26,7 +26,7 @@
 #include "mesh/mesh_error.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/element_slab.hpp"
-#include "solver/parallel/exodus_source.hpp"
+#include "solver/parallel/file_slice_source.hpp"
 #include "solver/parallel/mesh_part.hpp"
 #include "solver/parallel/source_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
@@ -65,7 +65,7 @@ void expect_parts(const std::string& path, const std::vector<int>& part, const c
   SCOPED_TRACE(std::string(what) + ", " + path + ", " + std::to_string(par::size()) + " ranks, rank " +
                std::to_string(par::rank()));
   const mesh::Mesh whole = mesh::read_exodus(path);
-  par::ExodusSource source(path);
+  par::FileSliceSource source(path);
   source.route();
   test::expect_source_part(source, whole, part, {"tip_surface", "substrate_top"});
   // The streamed hash is the serial mesh's; the file was closed after this rank's reads.
@@ -123,7 +123,7 @@ TEST(ExodusSlab, UnusedNodesAreDroppedAsReadExodusDoes) {
   write(m, file("unused.exo"), {});
   const mesh::Mesh whole = mesh::read_exodus(file("unused.exo"));
   ASSERT_LT(whole.node_count(), m.node_count());
-  par::ExodusSource source(file("unused.exo"));
+  par::FileSliceSource source(file("unused.exo"));
   source.route();
   EXPECT_EQ(source.unused_nodes(), m.node_count() - whole.node_count());
   EXPECT_EQ(source.node_count(), whole.node_count());

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A gmsh MSH 4.1 file read in slices (mesh/msh_slices.hpp through solver/parallel/exodus_source.hpp,
+// A gmsh MSH 4.1 file read in slices (mesh/msh_slices.hpp through solver/parallel/file_slice_source.hpp,
 // `set-up = distributed`), run under mpiexec at 1, 2 and 4 ranks (tests/parallel_unit/CMakeLists.txt).
 // Rank 0 writes the file (write_gmsh: blocks as physical volumes, side sets as physical surfaces of quads,
 // the node sets that are not a side set's as physical points); every rank reads it whole as well (read_gmsh:
@@ -31,7 +31,7 @@
 #include "mesh/msh_slices.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/element_slab.hpp"
-#include "solver/parallel/exodus_source.hpp"
+#include "solver/parallel/file_slice_source.hpp"
 #include "solver/parallel/mesh_part.hpp"
 #include "solver/parallel/source_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
@@ -72,7 +72,7 @@ void expect_parts(const std::string& path, const std::vector<int>& part, const c
   if (par::rank() != 0) slices = std::make_unique<mesh::MshSlices>(path, index);
   EXPECT_EQ(slices->index(), index);
   ASSERT_EQ(slices->unsupported(), "");
-  par::ExodusSource source(std::move(slices));
+  par::FileSliceSource source(std::move(slices));
   source.route();
   EXPECT_EQ(source.node_count(), whole.node_count());
   test::expect_source_part(source, whole, part, sets);
@@ -150,7 +150,7 @@ TEST(MshSlab, FilesOfGmshsOwnMesher) {
       std::vector<int> scattered(static_cast<std::size_t>(elements));
       for (int e = 0; e < elements; ++e) scattered[static_cast<std::size_t>(e)] = (7 * e + e / 13) % ranks;
       if (!groups) {  // expect_parts asks for tip_surface / substrate_top: only the part here
-        par::ExodusSource source(std::make_unique<mesh::MshSlices>(path));
+        par::FileSliceSource source(std::make_unique<mesh::MshSlices>(path));
         source.route();
         test::expect_source_part(source, whole, scattered, {});
         continue;

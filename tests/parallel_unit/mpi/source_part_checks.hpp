@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The checks the file-slice tests (exodus_slab_test.cpp, msh_slab_test.cpp) make on a routed element source
-// (solver/parallel/exodus_source.hpp, over Exodus or gmsh slices): the part this rank builds from its slices is
+// (solver/parallel/file_slice_source.hpp, over Exodus or gmsh slices): the part this rank builds from its slices is
 // split_mesh's part of the serial mesh under the same partition, under the two partitions both tests use.
 #pragma once
 
@@ -14,7 +14,7 @@
 #include "mesh/mesh.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/element_slab.hpp"
-#include "solver/parallel/exodus_source.hpp"
+#include "solver/parallel/file_slice_source.hpp"
 #include "solver/parallel/mesh_part.hpp"
 #include "solver/parallel/source_parts.hpp"
 #include "tests/support/mesh_part_equal.hpp"
@@ -37,7 +37,7 @@ inline void for_slab_and_scattered_partitions(int elements,
 // The routed `source` against the serial mesh `whole` under `part` [element]: this rank's part, the nodes on
 // partition boundaries, the slab's connectivity, and the elements of the side sets `sets` (and of one set the
 // file lacks: none).
-inline void expect_source_part(solver::parallel::ExodusSource& source, const mesh::Mesh& whole,
+inline void expect_source_part(solver::parallel::FileSliceSource& source, const mesh::Mesh& whole,
                                const std::vector<int>& part, std::vector<std::string> sets) {
   namespace par = solver::parallel;
   const std::vector<int> offset = par::slab_offsets(whole.element_count(), par::size());

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// exodus_source.hpp: an Exodus file in slices, routed between the ranks.
-#include "solver/parallel/exodus_source.hpp"
+// file_slice_source.hpp: an Exodus file in slices, routed between the ranks.
+#include "solver/parallel/file_slice_source.hpp"
 
 #include <mpi.h>
 
@@ -68,10 +68,10 @@ std::vector<int> gather_all(const std::vector<int>& mine) {
 
 }  // namespace
 
-ExodusSource::ExodusSource(const std::string& path, bool walk_header)
-    : ExodusSource(std::make_unique<mesh::ExodusSlices>(path, walk_header)) {}
+FileSliceSource::FileSliceSource(const std::string& path, bool walk_header)
+    : FileSliceSource(std::make_unique<mesh::ExodusSlices>(path, walk_header)) {}
 
-ExodusSource::ExodusSource(std::unique_ptr<mesh::MeshSlices> file) : file_(std::move(file)) {
+FileSliceSource::FileSliceSource(std::unique_ptr<mesh::MeshSlices> file) : file_(std::move(file)) {
   node_count_ = file_->node_count();
   const int ranks = size(), me = rank();
   element_offset_ = slab_offsets(file_->element_count(), ranks);
@@ -82,7 +82,7 @@ ExodusSource::ExodusSource(std::unique_ptr<mesh::MeshSlices> file) : file_(std::
   file_->close();  // all this rank reads of it: the library's buffers are not held through the partition
 }
 
-void ExodusSource::read_set_slices() {
+void FileSliceSource::read_set_slices() {
   const auto& ss = file_->side_sets();
   for (std::size_t s = 0; s < ss.names.size(); ++s) {
     const auto [first, count] = my_share(ss.entries[s]);
@@ -117,7 +117,7 @@ void ExodusSource::read_set_slices() {
 // volume) and offers its slab's faces; the smallest matching (element, face) wins, one of the orientation if
 // any (read_gmsh's pick among two faces of neither orientation is its sort's; a mesh has none). A side's
 // position in its set is element * 6 + face: read_gmsh sorts each side set by (element, face).
-void ExodusSource::match_quads() {
+void FileSliceSource::match_quads() {
   const std::vector<int> quads = gather_all(my_quads_);  // [quad][6]: tag, set, 4 nodes
   my_quads_ = {};
   const std::size_t n = quads.size() / 6;
@@ -159,13 +159,13 @@ void ExodusSource::match_quads() {
   }
 }
 
-void ExodusSource::route() {
+void FileSliceSource::route() {
   if (file_->sides_are_quads()) match_quads();
   route_sides();
   route_node_sets();
 }
 
-void ExodusSource::route_sides() {
+void FileSliceSource::route_sides() {
   std::vector<int> data;
   data.reserve(4 * my_sides_.size());
   for (const SideEntry& e : my_sides_) data.insert(data.end(), {e.element, e.set, e.position, e.face});
@@ -178,7 +178,7 @@ void ExodusSource::route_sides() {
   });
 }
 
-void ExodusSource::route_node_sets() {
+void FileSliceSource::route_node_sets() {
   // (node, set) pairs to the nodes' homes: the node sets' slices, the sides' nodes of the side sets made node
   // sets, and (node, -1) for every node of the slab (the nodes some element uses).
   std::vector<int> data = std::move(my_set_nodes_);
@@ -237,7 +237,7 @@ void ExodusSource::route_node_sets() {
 // read_exodus drops the nodes no element uses and numbers the others in file order; so does this. A home's
 // used nodes are one run of the new numbering, so each home keeps its nodes (coordinates and sets compacted)
 // under a new, uneven range, and the slab ranks ask the old homes for their nodes' new numbers.
-void ExodusSource::renumber(const std::vector<char>& used) {
+void FileSliceSource::renumber(const std::vector<char>& used) {
   const int ranks = size(), me = rank(), lo = node_offset_[me];
   int kept = 0;
   for (char u : used) kept += u;
@@ -271,7 +271,7 @@ void ExodusSource::renumber(const std::vector<char>& used) {
   node_count_ = node_offset_[static_cast<std::size_t>(ranks)];
 }
 
-std::map<std::string, int> ExodusSource::side_set_sizes() const {
+std::map<std::string, int> FileSliceSource::side_set_sizes() const {
   std::map<std::string, int> sizes;
   const auto& ss = file_->side_sets();
   for (std::size_t s = 0; s < ss.names.size(); ++s) sizes[ss.names[s]] = static_cast<int>(ss.entries[s]);
@@ -280,7 +280,7 @@ std::map<std::string, int> ExodusSource::side_set_sizes() const {
 
 // Asks the slab ranks for `elements` (ascending): `conn` gets their 8 global nodes each, `sides` their
 // side-set entries (the element's index in `elements`).
-void ExodusSource::ask_elements(const std::vector<int>& elements, std::vector<int>& conn,
+void FileSliceSource::ask_elements(const std::vector<int>& elements, std::vector<int>& conn,
                                             std::vector<SideEntry>& sides) const {
   const int ranks = size(), first = element_offset_[rank()];
   std::vector<int> count(static_cast<std::size_t>(ranks), 0);
@@ -315,7 +315,7 @@ void ExodusSource::ask_elements(const std::vector<int>& elements, std::vector<in
 }
 
 // Asks the homes of `global_node` (ascending) for their coordinates and node sets, into m.
-void ExodusSource::ask_nodes(const std::vector<int>& global_node, mesh::Mesh& m) const {
+void FileSliceSource::ask_nodes(const std::vector<int>& global_node, mesh::Mesh& m) const {
   const int ranks = size(), lo = node_offset_[rank()];
   std::vector<int> count(static_cast<std::size_t>(ranks), 0);
   for (int n : global_node) ++count[static_cast<std::size_t>(home_of(node_offset_, n))];
@@ -345,7 +345,7 @@ void ExodusSource::ask_nodes(const std::vector<int>& global_node, mesh::Mesh& m)
   }
 }
 
-mesh::Mesh ExodusSource::elements_mesh(const std::vector<int>& elements, std::vector<int>& global_node) const {
+mesh::Mesh FileSliceSource::elements_mesh(const std::vector<int>& elements, std::vector<int>& global_node) const {
   mesh::Mesh m;
   std::vector<SideEntry> sides;
   ask_elements(elements, m.connectivity, sides);
@@ -370,7 +370,7 @@ mesh::Mesh ExodusSource::elements_mesh(const std::vector<int>& elements, std::ve
   return m;
 }
 
-std::vector<int> ExodusSource::side_set_elements(const std::vector<std::string>& names) const {
+std::vector<int> FileSliceSource::side_set_elements(const std::vector<std::string>& names) const {
   const auto& ss = file_->side_sets();
   std::set<int> wanted;
   for (const auto& name : names)

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A mesh file read in slices as an element source of the distributed set-up (element_source.hpp,
 // `set-up = distributed`, issue 57 scope 2): no rank reads or holds the whole mesh. The file is any
-// mesh::MeshSlices (mesh/mesh_slices.hpp): an Exodus II file (mesh/exodus_slices.hpp, the name this class
-// kept) or a gmsh MSH 4.1 file (mesh/msh_slices.hpp), whose side sets are quads: match_quads() turns them
+// mesh::MeshSlices (mesh/mesh_slices.hpp): an Exodus II file (mesh/exodus_slices.hpp)
+// or a gmsh MSH 4.1 file (mesh/msh_slices.hpp), whose side sets are quads: match_quads() turns them
 // into (element, face) sides in route(), before they are routed as an Exodus file's are.
 //
 // What each rank reads (for Exodus, the library's partial reads):
@@ -36,14 +36,14 @@
 
 namespace tribex::solver::parallel {
 
-class ExodusSource final : public ElementSource {
+class FileSliceSource final : public ElementSource {
  public:
   /// Not collective: opens the file and reads this rank's slab, nodes and set entries. MeshError for a bad
   /// file, thrown by the rank that meets it: the caller agrees on it before route(). `walk_header` false:
   /// the netCDF header's walk (16 MiB read per rank) is left to one rank that opened the file first.
-  explicit ExodusSource(const std::string& path, bool walk_header = true);
+  explicit FileSliceSource(const std::string& path, bool walk_header = true);
   /// The same of any file read in slices (mesh/mesh_slices.hpp: an Exodus or an MSH 4.1 file).
-  explicit ExodusSource(std::unique_ptr<mesh::MeshSlices> file);
+  explicit FileSliceSource(std::unique_ptr<mesh::MeshSlices> file);
   /// Collective over MPI_COMM_WORLD: the routing above.
   void route();
 
