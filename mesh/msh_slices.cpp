@@ -339,7 +339,7 @@ struct Unpack {
     pod(n);
     if (n > (bytes.size() - at) / sizeof(T)) throw MeshError("a gmsh index that is cut short");
     v.resize(n);
-    std::memcpy(v.data(), bytes.data() + at, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), bytes.data() + at, n * sizeof(T));  // an empty vector's data() may be null
     at += n * sizeof(T);
   }
   void str(std::string& v) {
