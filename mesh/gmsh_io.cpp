@@ -194,10 +194,8 @@ bool same_orientation(const std::array<int, 4>& a, const std::array<int, 4>& b) 
   return false;
 }
 
-Mesh extract_mesh(const std::string& path) {
-  const std::vector<PhysicalGroup> groups = physical_groups();
-
-  // 1. Volume elements: hex8 only.
+// Step 1: the file's volume elements are hex8 and there are some.
+void check_volume_types(const std::string& path) {
   std::vector<int> types;
   gmsh::model::mesh::getElementTypes(types, 3, -1);
   for (int t : types)
@@ -207,23 +205,28 @@ Mesh extract_mesh(const std::string& path) {
                       "(or Mesh.SubdivisionAlgorithm = 2) and Mesh.ElementOrder = 1");
   if (types.empty())
     throw MeshError(path + ": has no volume (3-D) elements; tribex needs a hex8 volume mesh (gmsh: Mesh > 3D)");
+}
 
-  // 2. Blocks from 3-D physical groups (or one block "block_1" when the file has none).
-  struct RawBlock {
-    std::string name;
-    std::vector<std::pair<std::size_t, std::array<std::size_t, 8>>> elements;  // (gmsh tag, node tags)
-  };
-  std::vector<RawBlock> raw;
+// A block's hexes as gmsh gives them, sorted by element tag.
+struct RawBlock {
+  std::string name;
+  std::vector<std::pair<std::size_t, std::array<std::size_t, 8>>> elements;  // (gmsh tag, node tags)
+};
+
+// Step 2: blocks from the 3-D physical groups (or one block "block_1" when the file has none); a volume
+// holding hexes in no physical volume is an error.
+std::vector<RawBlock> raw_blocks(const std::string& path, const std::vector<PhysicalGroup>& groups) {
   std::vector<PhysicalGroup> volume_groups;
   for (const PhysicalGroup& g : groups)
     if (g.dim == 3) volume_groups.push_back(g);
+  gmsh::vectorpair volumes;
+  gmsh::model::getEntities(volumes, 3);
   if (volume_groups.empty()) {
-    gmsh::vectorpair volumes;
-    gmsh::model::getEntities(volumes, 3);
     PhysicalGroup all{3, 1, "block_1", {}};
     for (const auto& dt : volumes) all.entities.push_back(dt.second);
     volume_groups.push_back(all);
   }
+  std::vector<RawBlock> raw;
   std::set<int> entities_in_blocks;
   for (const PhysicalGroup& g : volume_groups) {
     RawBlock b{g.name, {}};
@@ -240,19 +243,18 @@ Mesh extract_mesh(const std::string& path) {
     std::sort(b.elements.begin(), b.elements.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     raw.push_back(std::move(b));
   }
-  {
-    gmsh::vectorpair volumes;
-    gmsh::model::getEntities(volumes, 3);
-    for (const auto& [dim, tag] : volumes) {
-      std::vector<std::size_t> tags, nodes;
-      gmsh::model::mesh::getElementsByType(gmsh_hex8, tags, nodes, tag);
-      if (!tags.empty() && !entities_in_blocks.count(tag))
-        throw MeshError(path + ": volume " + std::to_string(tag) + " holds " + std::to_string(tags.size()) +
-                        " hexes but is in no physical volume; add it to one (Physical Volume) so it becomes a block");
-    }
+  for (const auto& [dim, tag] : volumes) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(gmsh_hex8, tags, nodes, tag);
+    if (!tags.empty() && !entities_in_blocks.count(tag))
+      throw MeshError(path + ": volume " + std::to_string(tag) + " holds " + std::to_string(tags.size()) +
+                      " hexes but is in no physical volume; add it to one (Physical Volume) so it becomes a block");
   }
+  return raw;
+}
 
-  // 3. Nodes: those used by hexes, ordered by gmsh tag, renumbered 0..N-1.
+// Step 3: the node tags the hexes use, sorted and unique (our node i is used[i]).
+std::vector<std::size_t> used_node_tags(const std::string& path, const std::vector<RawBlock>& raw) {
   std::vector<std::size_t> used;
   for (const RawBlock& b : raw)
     for (const auto& el : b.elements) used.insert(used.end(), el.second.begin(), el.second.end());
@@ -260,27 +262,29 @@ Mesh extract_mesh(const std::string& path) {
   used.erase(std::unique(used.begin(), used.end()), used.end());
   if (used.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 3))
     throw MeshError(path + ": too many nodes for int indices");
-  const NodeIndex index(used);
+  return used;
+}
 
-  Mesh mesh;
+// Step 3: the used nodes' coordinates, in our order; a used node without coordinates is an error.
+void read_coordinates(const std::string& path, const std::vector<std::size_t>& used, const NodeIndex& index, Mesh& mesh) {
   mesh.coordinates.resize(used.size() * 3);
-  {
-    std::vector<std::size_t> tags;
-    std::vector<double> xyz, parametric;
-    gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
-    std::vector<char> seen(used.size(), 0);
-    for (std::size_t i = 0; i < tags.size(); ++i) {
-      const int n = index(tags[i]);
-      if (n < 0) continue;
-      std::copy_n(xyz.begin() + static_cast<std::ptrdiff_t>(3 * i), 3, mesh.coordinates.begin() + 3 * n);
-      seen[n] = 1;
-    }
-    for (std::size_t n = 0; n < used.size(); ++n)
-      if (!seen[n])
-        throw MeshError(path + ": node tag " + std::to_string(used[n]) + " is used by a hex but has no coordinates; the file is incomplete");
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, parametric;
+  gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+  std::vector<char> seen(used.size(), 0);
+  for (std::size_t i = 0; i < tags.size(); ++i) {
+    const int n = index(tags[i]);
+    if (n < 0) continue;
+    std::copy_n(xyz.begin() + static_cast<std::ptrdiff_t>(3 * i), 3, mesh.coordinates.begin() + 3 * n);
+    seen[n] = 1;
   }
+  for (std::size_t n = 0; n < used.size(); ++n)
+    if (!seen[n])
+      throw MeshError(path + ": node tag " + std::to_string(used[n]) + " is used by a hex but has no coordinates; the file is incomplete");
+}
 
-  // 4. Elements, block by block (blocks need contiguous element ranges).
+// Step 4: the elements, block by block (blocks need contiguous element ranges); a hex in two blocks is an error.
+void add_elements(const std::string& path, const std::vector<RawBlock>& raw, const NodeIndex& index, Mesh& mesh) {
   std::set<std::size_t> element_tags_seen;
   for (const RawBlock& b : raw) {
     Block block{b.name, mesh.element_count(), static_cast<int>(b.elements.size())};
@@ -292,25 +296,73 @@ Mesh extract_mesh(const std::string& path) {
     }
     mesh.blocks.push_back(block);
   }
+}
 
-  // 5. Side sets (2-D groups, quads matched to hex faces) and node sets (every non-volume group).
+// The sorted unique nodes of a non-volume physical group; a node on no hex is an error.
+std::vector<int> group_nodes(const std::string& path, const PhysicalGroup& g, const NodeIndex& index) {
+  std::vector<std::size_t> node_tags;
+  std::vector<double> xyz;
+  gmsh::model::mesh::getNodesForPhysicalGroup(g.dim, g.tag, node_tags, xyz);
+  std::vector<int> nodes;
+  for (std::size_t t : node_tags) {
+    const int n = index(t);
+    if (n < 0)
+      throw MeshError(path + ": physical group '" + g.name + "' (dim " + std::to_string(g.dim) + ") has node tag " +
+                      std::to_string(t) + " that belongs to no hex; sets must lie on the volume mesh");
+    nodes.push_back(n);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+// The sides of a physical surface: each quad4 of its entities matched to a hex face (`faces`: all_faces).
+std::vector<Side> surface_sides(const std::string& path, const PhysicalGroup& g, const NodeIndex& index,
+                                const std::vector<FaceKey>& faces, const Mesh& mesh) {
+  std::vector<Side> sides;
+  for (int entity : g.entities) {
+    std::vector<int> surface_types;
+    gmsh::model::mesh::getElementTypes(surface_types, 2, entity);
+    for (int t : surface_types)
+      if (t != gmsh_quad4)
+        throw MeshError(path + ": physical surface '" + g.name + "' holds elements of type '" + element_type_name(t) +
+                        "'; side sets must be quad4 faces of the hex mesh (recombine the surface mesh)");
+    std::vector<std::size_t> tags, quad_nodes;
+    gmsh::model::mesh::getElementsByType(gmsh_quad4, tags, quad_nodes, entity);
+    for (std::size_t q = 0; q < tags.size(); ++q) {
+      std::array<int, 4> quad{};
+      for (int k = 0; k < 4; ++k) quad[k] = index(quad_nodes[4 * q + k]);
+      std::array<int, 4> key = quad;
+      std::sort(key.begin(), key.end());
+      const auto [lo, hi] = std::equal_range(faces.begin(), faces.end(), FaceKey{key, 0, 0},
+                                             [](const FaceKey& a, const FaceKey& b) { return a.sorted < b.sorted; });
+      if (key[0] < 0 || lo == hi)
+        throw MeshError(path + ": quad element tag " + std::to_string(tags[q]) + " of physical surface '" + g.name +
+                        "' is not a face of any hex; side sets must be faces of the volume mesh");
+      // An interior face is shared by two hexes: take the one whose outward normal the quad's
+      // node order gives (a boundary face has one candidate).
+      auto pick = lo;
+      for (auto it = lo; it != hi; ++it)
+        if (same_orientation(quad, mesh.side_nodes({it->element, it->face}))) {
+          pick = it;
+          break;
+        }
+      sides.push_back({pick->element, pick->face});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return std::pair(a.element, a.face) < std::pair(b.element, b.face);
+  });
+  return sides;
+}
+
+// Step 5: side sets (2-D groups, quads matched to hex faces) and node sets (every non-volume group).
+void add_sets(const std::string& path, const std::vector<PhysicalGroup>& groups, const NodeIndex& index, Mesh& mesh) {
   std::vector<FaceKey> faces;
   std::set<std::string> explicit_node_sets;  // from 0-D/1-D groups: they win over a 2-D group's nodes
   for (const PhysicalGroup& g : groups) {
     if (g.dim == 3) continue;
-    std::vector<std::size_t> node_tags;
-    std::vector<double> xyz;
-    gmsh::model::mesh::getNodesForPhysicalGroup(g.dim, g.tag, node_tags, xyz);
-    std::vector<int> nodes;
-    for (std::size_t t : node_tags) {
-      const int n = index(t);
-      if (n < 0)
-        throw MeshError(path + ": physical group '" + g.name + "' (dim " + std::to_string(g.dim) + ") has node tag " +
-                        std::to_string(t) + " that belongs to no hex; sets must lie on the volume mesh");
-      nodes.push_back(n);
-    }
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    std::vector<int> nodes = group_nodes(path, g, index);
     if (g.dim < 2) {
       if (!explicit_node_sets.insert(g.name).second)
         throw MeshError(path + ": two point/curve physical groups are named '" + g.name + "'; rename one");
@@ -320,43 +372,21 @@ Mesh extract_mesh(const std::string& path) {
     if (mesh.side_sets.count(g.name))
       throw MeshError(path + ": two physical surfaces are named '" + g.name + "'; rename one");
     if (!explicit_node_sets.count(g.name)) mesh.node_sets[g.name] = nodes;
-
     if (faces.empty()) faces = all_faces(mesh);
-    std::vector<Side>& sides = mesh.side_sets[g.name];
-    for (int entity : g.entities) {
-      std::vector<int> surface_types;
-      gmsh::model::mesh::getElementTypes(surface_types, 2, entity);
-      for (int t : surface_types)
-        if (t != gmsh_quad4)
-          throw MeshError(path + ": physical surface '" + g.name + "' holds elements of type '" + element_type_name(t) +
-                          "'; side sets must be quad4 faces of the hex mesh (recombine the surface mesh)");
-      std::vector<std::size_t> tags, quad_nodes;
-      gmsh::model::mesh::getElementsByType(gmsh_quad4, tags, quad_nodes, entity);
-      for (std::size_t q = 0; q < tags.size(); ++q) {
-        std::array<int, 4> quad{};
-        for (int k = 0; k < 4; ++k) quad[k] = index(quad_nodes[4 * q + k]);
-        std::array<int, 4> key = quad;
-        std::sort(key.begin(), key.end());
-        const auto [lo, hi] = std::equal_range(faces.begin(), faces.end(), FaceKey{key, 0, 0},
-                                               [](const FaceKey& a, const FaceKey& b) { return a.sorted < b.sorted; });
-        if (key[0] < 0 || lo == hi)
-          throw MeshError(path + ": quad element tag " + std::to_string(tags[q]) + " of physical surface '" + g.name +
-                          "' is not a face of any hex; side sets must be faces of the volume mesh");
-        // An interior face is shared by two hexes: take the one whose outward normal the quad's
-        // node order gives (a boundary face has one candidate).
-        auto pick = lo;
-        for (auto it = lo; it != hi; ++it)
-          if (same_orientation(quad, mesh.side_nodes({it->element, it->face}))) {
-            pick = it;
-            break;
-          }
-        sides.push_back({pick->element, pick->face});
-      }
-    }
-    std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
-      return std::pair(a.element, a.face) < std::pair(b.element, b.face);
-    });
+    mesh.side_sets[g.name] = surface_sides(path, g, index, faces, mesh);
   }
+}
+
+Mesh extract_mesh(const std::string& path) {
+  const std::vector<PhysicalGroup> groups = physical_groups();
+  check_volume_types(path);
+  const std::vector<RawBlock> raw = raw_blocks(path, groups);
+  const std::vector<std::size_t> used = used_node_tags(path, raw);
+  const NodeIndex index(used);
+  Mesh mesh;
+  read_coordinates(path, used, index, mesh);
+  add_elements(path, raw, index, mesh);
+  add_sets(path, groups, index, mesh);
   return mesh;
 }
 
