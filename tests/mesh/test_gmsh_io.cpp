@@ -18,6 +18,7 @@
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_error.hpp"
 #include "tests/mesh/support.hpp"
+#include "tests/support/gmsh_box.hpp"
 
 namespace tribex::mesh {
 namespace {
@@ -170,24 +171,11 @@ TEST_F(GmshIo, OverlappingSetsAreWrittenWithoutDuplicateElements) {
 void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false, int order = 1, bool groups = true) {
   GmshSession session;
   GmshScratchModel model("test");
-  gmsh::model::occ::addBox(0, 0, 0, 1.0, 2.0, 0.5);
-  gmsh::model::occ::synchronize();
   if (hexes) {
-    gmsh::vectorpair curves;
-    gmsh::model::getEntities(curves, 1);
-    for (const auto& [dim, tag] : curves) {
-      double xmin, ymin, zmin, xmax, ymax, zmax;
-      gmsh::model::getBoundingBox(dim, tag, xmin, ymin, zmin, xmax, ymax, zmax);
-      const int intervals = xmax - xmin > 0.1 ? 3 : ymax - ymin > 0.1 ? 4 : 2;
-      gmsh::model::mesh::setTransfiniteCurve(tag, intervals + 1);
-    }
-    gmsh::vectorpair surfaces;
-    gmsh::model::getEntities(surfaces, 2);
-    for (const auto& [dim, tag] : surfaces) {
-      gmsh::model::mesh::setTransfiniteSurface(tag);
-      gmsh::model::mesh::setRecombine(dim, tag);
-    }
-    gmsh::model::mesh::setTransfiniteVolume(1);
+    test::add_transfinite_gmsh_box({3, 4, 2});
+  } else {
+    gmsh::model::occ::addBox(0, 0, 0, 1.0, 2.0, 0.5);
+    gmsh::model::occ::synchronize();
   }
   gmsh::model::mesh::generate(3);
   if (order > 1) gmsh::model::mesh::setOrder(order);
@@ -195,14 +183,7 @@ void mesh_box_with_gmsh(const std::string& path, bool hexes, bool msh2 = false, 
     gmsh::write(path);
     return;
   }
-  gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "solid");
-  gmsh::vectorpair top, corner;
-  gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, 0.4, 1.1, 2.1, 0.6, top, 2);
-  gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, -0.1, 0.1, 0.1, 0.1, corner, 0);
-  EXPECT_EQ(top.size(), 1u);
-  EXPECT_EQ(corner.size(), 1u);
-  gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {top[0].second}), "top");
-  gmsh::model::addPhysicalGroup(0, {corner[0].second}, 7);  // unnamed: becomes "nodes_7"
+  test::add_gmsh_box_groups();  // the corner's group is unnamed: it becomes "nodes_7"
   gmsh::option::setNumber("Mesh.Binary", 0);
   gmsh::option::setNumber("Mesh.MshFileVersion", msh2 ? 2.2 : 4.1);
   gmsh::write(path);

@@ -36,6 +36,7 @@
 #include "solver/parallel/source_parts.hpp"
 #include "solver/restart/run_fingerprint.hpp"
 #include "tests/parallel_unit/mpi/source_part_checks.hpp"
+#include "tests/support/gmsh_box.hpp"
 #include "tests/support/mpi_hertz_asperity.hpp"
 
 namespace tribex {
@@ -107,29 +108,9 @@ void mesh_box_with_gmsh(const std::string& path, bool binary, bool groups) {
   if (par::rank() == 0) {
     mesh::GmshSession session;
     mesh::GmshScratchModel model("msh slab test");
-    gmsh::model::occ::addBox(0, 0, 0, 1.0, 2.0, 0.5);
-    gmsh::model::occ::synchronize();
-    gmsh::vectorpair curves, surfaces, top, corner;
-    gmsh::model::getEntities(curves, 1);
-    for (const auto& [dim, tag] : curves) {
-      double x0, y0, z0, x1, y1, z1;
-      gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
-      gmsh::model::mesh::setTransfiniteCurve(tag, (x1 - x0 > 0.1 ? 6 : y1 - y0 > 0.1 ? 5 : 4) + 1);
-    }
-    gmsh::model::getEntities(surfaces, 2);
-    for (const auto& [dim, tag] : surfaces) {
-      gmsh::model::mesh::setTransfiniteSurface(tag);
-      gmsh::model::mesh::setRecombine(dim, tag);
-    }
-    gmsh::model::mesh::setTransfiniteVolume(1);
+    test::add_transfinite_gmsh_box({6, 5, 4});
     gmsh::model::mesh::generate(3);
-    if (groups) {
-      gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "solid");
-      gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, 0.4, 1.1, 2.1, 0.6, top, 2);
-      gmsh::model::getEntitiesInBoundingBox(-0.1, -0.1, -0.1, 0.1, 0.1, 0.1, corner, 0);
-      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {top.at(0).second}), "top");
-      gmsh::model::addPhysicalGroup(0, {corner.at(0).second}, 7);  // unnamed: "nodes_7"
-    }
+    if (groups) test::add_gmsh_box_groups();
     gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
     gmsh::write(path);
