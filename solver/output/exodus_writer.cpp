@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <stdexcept>
 
@@ -14,6 +15,7 @@
 #include "mesh/exodus_prescan.hpp"
 #include "mesh/mesh_error.hpp"
 #include "solver/errors.hpp"
+#include "solver/output/exodus_rank_file.hpp"
 #include "solver/output/mesh_outline.hpp"
 #include "solver/parallel/communicator.hpp"
 
@@ -82,6 +84,17 @@ struct ExodusWriter::Impl {
   std::vector<int> counts, displs;
   std::vector<double> send, receive, whole;
   std::vector<double> component;  // one component of one field, whole mesh (rank 0)
+  // One file per rank (the rank-part constructor): the file's mesh and Nemesis counts, and the rows of
+  // the nodes owned by lower ranks, fetched for every nodal field of a step.
+  bool spread = false;
+  const parallel::Domain* domain = nullptr;
+  output::MeshOutline outline;
+  mesh::Mesh file_mesh;
+  output::RankGlobals rank_globals;
+  std::unique_ptr<output::SharedNodeRows> shared;
+  std::deque<std::vector<double>> spread_rows;  // [nodal field] local rows (a deque: spans into it stay valid)
+  std::vector<FieldView> spread_views;
+  std::vector<double> spread_globals;
 
   ~Impl() {
     if (exo >= 0) ex_close(exo);
@@ -93,11 +106,16 @@ struct ExodusWriter::Impl {
       const std::vector<std::string> notes = {
           "coordinates and length fields (unit m: displacement, gap) in " + unit.name,
           "every other field SI; the global variables (history.csv columns) SI"};
-      exo = mesh::exodus::create_with_mesh(mesh, path, "tribex results", mesh::ExodusFormat::offset64, unit, notes);
+      exo = mesh::exodus::create_with_mesh(spread ? file_mesh : mesh, path, "tribex results",
+                                           mesh::ExodusFormat::offset64, unit, notes, spread);
     } catch (const mesh::MeshError& e) {
       throw SetupError(std::string("cannot create results file: ") + e.what() +
                        "; choose another output directory or fix its permissions");
     }
+    if (spread && output::put_rank_maps(exo, file_mesh, *domain, outline, rank_globals) < 0)
+      throw SetupError("cannot write the number maps and Nemesis records of '" + path + "'" +
+                       (mesh::exodus::last_error().empty() ? "" : " (" + mesh::exodus::last_error() + ")") +
+                       "; check the disk space");
   }
 
   std::vector<std::string> exodus_names(const std::vector<FieldSpec>& fields) const {
@@ -195,7 +213,7 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
   const auto element = read_variable_names(old.id, EX_ELEM_BLOCK);
 
   const std::string final_path = path;
-  const std::string partial = (fs::path(directory) / ".results.exo.partial").string();
+  const std::string partial = (fs::path(directory) / ("." + fs::path(path).filename().string() + ".partial")).string();
   path = partial;
   try {
     create(mesh);
@@ -217,6 +235,7 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
       }
       for (int v = 1; v <= static_cast<int>(element.size()); ++v)
         for (std::size_t b = 0; b < blocks.size(); ++b) {
+          if (blocks[b].count == 0) continue;  // a rank file's block this rank has no element of
           copy(ex_get_var(old.id, k, EX_ELEM_BLOCK, v, old_block_ids[b], blocks[b].count, values.data()),
                "element variables");
           copy(ex_put_var(exo, k, EX_ELEM_BLOCK, v, blocks[b].id, blocks[b].count, values.data()), "element variables");
@@ -319,6 +338,38 @@ ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& mesh,
   m.create(mesh);
 }
 
+ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& local, const parallel::Domain& domain,
+                           const output::MeshOutline& outline, std::vector<std::string> global_names,
+                           std::optional<double> resume_time)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.spread = true;
+  m.domain = &domain;
+  m.outline = outline;
+  m.directory = directory;
+  m.path = (std::filesystem::path(directory) / output::rank_file_name(domain.ranks, domain.rank)).string();
+  m.unit = {outline.unit.name, outline.unit.per_metre};
+  m.global_names = std::move(global_names);
+  // Collective first (the set names, the global counts, the shared nodes' owners); files after.
+  m.file_mesh = output::rank_file_mesh(local, outline);
+  m.rank_globals = output::rank_globals(m.file_mesh, domain);
+  m.shared = std::make_unique<output::SharedNodeRows>(domain);
+  m.nodes = m.file_mesh.node_count();
+  m.elements = m.file_mesh.element_count();
+  m.node_rows = domain.owned_node_count();
+  m.element_rows = m.elements;
+  for (std::size_t b = 0; b < m.file_mesh.blocks.size(); ++b)
+    m.blocks.push_back({static_cast<int>(b + 1), m.file_mesh.blocks[b].first_element, m.file_mesh.blocks[b].element_count});
+  std::error_code ec;
+  std::filesystem::create_directories(directory, ec);
+  if (ec || !std::filesystem::is_directory(directory))
+    throw SetupError("cannot create output directory '" + directory + "': " +
+                     (ec ? ec.message() : std::string("a file of that name exists")) +
+                     "; choose another output directory or fix its permissions");
+  if (resume_time && m.open_for_resume(m.file_mesh, *resume_time)) return;
+  m.create(m.file_mesh);
+}
+
 ExodusWriter::~ExodusWriter() = default;
 
 void ExodusWriter::Impl::write(double time, std::span<const FieldView> nodal, std::span<const FieldView> element,
@@ -357,7 +408,8 @@ void ExodusWriter::Impl::write(double time, std::span<const FieldView> nodal, st
       for (int i = 0; i < elements; ++i) component[i] = s == 1.0 ? v[static_cast<std::size_t>(c) * i + j] : v[static_cast<std::size_t>(c) * i + j] * s;
       ++var;
       for (const auto& b : blocks)
-        check(ex_put_var(exo, k, EX_ELEM_BLOCK, var, b.id, b.count, component.data() + b.first),
+        if (b.count > 0)
+          check(ex_put_var(exo, k, EX_ELEM_BLOCK, var, b.id, b.count, component.data() + b.first),
               "element variable '" + file_element[var - 1] + "'");
     }
     gathered += static_cast<std::size_t>(c) * elements;
@@ -375,8 +427,8 @@ void ExodusWriter::write_step(double time, std::span<const FieldView> nodal, std
   if (globals.size() != m.global_names.size())
     throw std::invalid_argument("ExodusWriter: " + std::to_string(globals.size()) + " global values for " +
                                 std::to_string(m.global_names.size()) + " global variables");
-  const long long node_rows = m.parallel ? m.node_rows : m.nodes;
-  const long long element_rows = m.parallel ? m.element_rows : m.elements;
+  const long long node_rows = m.parallel || m.spread ? m.node_rows : m.nodes;
+  const long long element_rows = m.parallel || m.spread ? m.element_rows : m.elements;
   std::vector<FieldSpec> ns, es;
   for (const auto* list : {&nodal, &element}) {
     const bool is_nodal = list == &nodal;
@@ -445,13 +497,38 @@ void ExodusWriter::write_step(double time, std::span<const FieldView> nodal, std
     }
   }
 
+  if (m.spread) {
+    // The owned rows as given, the other nodes' rows from their owners (collective); rank 0's globals.
+    m.spread_views.clear();
+    m.spread_rows.resize(std::max(m.spread_rows.size(), nodal.size()));
+    for (std::size_t f = 0; f < nodal.size(); ++f) {
+      m.shared->fill(nodal[f].values.data(), nodal[f].components, m.spread_rows[f]);
+      m.spread_views.push_back({nodal[f].name, nodal[f].components, m.spread_rows[f], nodal[f].unit});
+    }
+    m.spread_globals.assign(globals.begin(), globals.end());
+    if (!m.spread_globals.empty())
+      MPI_Bcast(m.spread_globals.data(), static_cast<int>(m.spread_globals.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  }
   std::string failure;
   if (m.root) {
     try {
-      m.write(time, nodal, element, globals);
+      if (m.spread)
+        m.write(time, m.spread_views, element, m.spread_globals);
+      else
+        m.write(time, nodal, element, globals);
     } catch (const OutputError& e) {
       failure = e.what();
     }
+  }
+  if (m.spread) {
+    // Each rank writes its own file: the lowest rank that failed says why, on every rank.
+    int first = failure.empty() ? m.domain->ranks : m.domain->rank;
+    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first < m.domain->ranks) {
+      parallel::broadcast(failure, first);
+      throw OutputError(failure);
+    }
+    return;
   }
   if (m.parallel) {
     int failed = failure.empty() ? 0 : 1;

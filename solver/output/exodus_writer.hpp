@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "solver/output/mesh_outline.hpp"
 #include "solver/output/results_writer.hpp"
+#include "solver/parallel/domain.hpp"
 
 namespace tribex::solver {
 
@@ -20,10 +22,19 @@ namespace tribex::solver {
 /// global variables. 64-bit-offset netCDF (no HDF5 inside). ex_update after every step, so a
 /// killed run leaves every completed step readable.
 ///
-/// Parallel runs: every rank constructs it with the whole mesh and its slab and calls write_step
-/// (collective); the values are gathered to rank 0 (MPI_Gatherv), which alone writes the file.
+/// Parallel runs, two forms: one file per rank (the rank-part constructor: each rank writes its part to
+/// DIR/results.exo.N.r, joined by `tribex join`; README.md "Exodus II output"), or the earlier one with
+/// the whole mesh and a slab (the values gathered to rank 0, which alone writes DIR/results.exo).
+/// Every rank calls write_step (collective) in both.
 class ExodusWriter {
  public:
+  /// A parallel run's rank: `local` its elements and the nodes they use (local numbering, as `domain`
+  /// numbers them), `outline` the whole mesh's counts, blocks and resolved length unit. Collective.
+  /// Each rank creates (or, resumed, rewrites as below) DIR/results.exo.N.r; a SetupError is this
+  /// rank's alone (the caller agrees on errors afterwards).
+  ExodusWriter(const std::string& directory, const mesh::Mesh& local, const parallel::Domain& domain,
+               const output::MeshOutline& outline, std::vector<std::string> global_names,
+               std::optional<double> resume_time = std::nullopt);
   /// global_names: the global variables written with every step (same order as the values).
   /// Creates DIR and the file (truncating an old one); SetupError (one line, path and reason) when
   /// it cannot. resume_time (a restarted run, s): an existing DIR/results.exo of this mesh is
