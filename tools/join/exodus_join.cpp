@@ -108,11 +108,16 @@ int rank_count(const std::string& folder, int ranks) {
 }
 
 void open_rank(RankFile& f) {
+  mesh::NetcdfHeader header;
   try {  // the header walk first: the library trusts the file's sizes (mesh/README.md)
-    mesh::prescan_exodus_file(f.path);
+    header = mesh::prescan_exodus_file(f.path);
   } catch (const mesh::MeshError& e) {
     throw BadInput(std::string(e.what()) + "; the rank file is incomplete or damaged: run again, or resume from a restart file");
   }
+  // netCDF reads a record beyond the end of a cut file as fill values, silently: every step must be whole.
+  if (header.file_size < header.records_end)
+    f.fail("truncated: its steps need " + std::to_string(header.records_end) + " bytes, the file has " +
+           std::to_string(header.file_size));
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0;
   ex_opts(EX_DEFAULT);
