@@ -22,10 +22,9 @@ namespace tribex::solver {
 /// global variables. 64-bit-offset netCDF (no HDF5 inside). ex_update after every step, so a
 /// killed run leaves every completed step readable.
 ///
-/// Parallel runs, two forms: one file per rank (the rank-part constructor: each rank writes its part to
-/// DIR/results.exo.N.r, joined by `tribex join`; README.md "Exodus II output"), or the earlier one with
-/// the whole mesh and a slab (the values gathered to rank 0, which alone writes DIR/results.exo).
-/// Every rank calls write_step (collective) in both.
+/// Parallel runs: one file per rank (the rank-part constructor: each rank writes its part to
+/// DIR/results.exo.N.r, joined by `tribex join`; README.md "Exodus II output", "Parallel: one file per
+/// rank"); every rank calls write_step (collective). No rank gathers a field.
 class ExodusWriter {
  public:
   /// A parallel run's rank: `local` its elements and the nodes they use (local numbering, as `domain`
@@ -39,13 +38,11 @@ class ExodusWriter {
   /// Creates DIR and the file (truncating an old one); SetupError (one line, path and reason) when
   /// it cannot. resume_time (a restarted run, s): an existing DIR/results.exo of this mesh is
   /// rewritten with its steps before that time (SetupError if it is another mesh's file).
-  /// Collective in a parallel run, but only rank 0 touches files and can throw; the caller
-  /// agrees on errors afterwards. length_unit: m, um, nm or auto (as results.h5's, output/length_unit.hpp):
+  /// One rank (the whole mesh). length_unit: m, um, nm or auto (as results.h5's, output/length_unit.hpp):
   /// the coordinates and every field given in "m" are written in it, named in the info records; a
   /// resumed file keeps its own.
   ExodusWriter(const std::string& directory, const mesh::Mesh& mesh, std::vector<std::string> global_names,
-               const ResultsSlab* slab = nullptr, std::optional<double> resume_time = std::nullopt,
-               const std::string& length_unit = "m");
+               std::optional<double> resume_time = std::nullopt, const std::string& length_unit = "m");
   ~ExodusWriter();  // closes; the file stays valid
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;
@@ -56,7 +53,7 @@ class ExodusWriter {
   void write_step(double time, std::span<const FieldView> nodal, std::span<const FieldView> element,
                   std::span<const double> globals);
 
-  /// ex_update (rank 0). write_step already does it.
+  /// ex_update. write_step already does it.
   void flush();
 
   int step_count() const;

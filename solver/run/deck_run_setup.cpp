@@ -475,7 +475,7 @@ void DeckRun::open_results() {
         exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, model_->domain, *results_outline_, std::move(globals),
                                                  resume_time);
       else
-        exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, std::move(globals), nullptr, resume_time,
+        exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, std::move(globals), resume_time,
                                                  region_.results->length_unit);
     }
   } catch (...) {
