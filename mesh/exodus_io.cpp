@@ -358,7 +358,7 @@ Mesh read_exodus(const std::string& path) {
 
 int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format,
                              const ExodusLengthUnit& unit, const std::vector<std::string>& notes,
-                             bool keep_empty_blocks) {
+                             bool keep_empty_blocks, std::size_t name_length) {
   validate(mesh, "mesh for " + path);
   quiet_exodus();
   int comp_ws = sizeof(double), io_ws = sizeof(double);
@@ -378,7 +378,7 @@ int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const st
   // Stable: empty blocks (keep_empty_blocks) share their first_element with the next one and keep the caller's order.
   std::stable_sort(blocks.begin(), blocks.end(),
                    [](const Block* a, const Block* b) { return a->first_element < b->first_element; });
-  std::size_t longest = 32;
+  std::size_t longest = std::max<std::size_t>(32, name_length);
   for (const auto* b : blocks) longest = std::max(longest, b->name.size());
   for (const auto& [n, s] : mesh.node_sets) longest = std::max(longest, n.size());
   for (const auto& [n, s] : mesh.side_sets) longest = std::max(longest, n.size());

@@ -92,8 +92,11 @@ struct ExodusWriter::Impl {
       const std::vector<std::string> notes = {
           "coordinates and length fields (unit m: displacement, gap) in " + unit.name,
           "every other field SI; the global variables (history.csv columns) SI"};
+      // The history columns' names may be longer than Exodus's default 32 (substrate_axis_top_displacement_x).
+      std::size_t longest = 32;
+      for (const auto& n : global_names) longest = std::max(longest, n.size());
       exo = mesh::exodus::create_with_mesh(spread ? file_mesh : mesh, path, "tribex results",
-                                           mesh::ExodusFormat::offset64, unit, notes, spread);
+                                           mesh::ExodusFormat::offset64, unit, notes, spread, longest);
     } catch (const mesh::MeshError& e) {
       throw SetupError(std::string("cannot create results file: ") + e.what() +
                        "; choose another output directory or fix its permissions");
@@ -179,6 +182,8 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
   } old;
   old.id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (old.id < 0) throw SetupError(refuse + "it is not a readable Exodus II file" + fix);
+  // The API cuts names it reads to 32 characters unless told the file's own limit (history columns are longer).
+  ex_set_max_name_length(old.id, static_cast<int>(ex_inquire_int(old.id, EX_INQ_DB_MAX_ALLOWED_NAME_LENGTH)));
   char title[MAX_LINE_LENGTH + 1] = {};
   int dim = 0, n = 0, e = 0, nb = 0, nns = 0, nss = 0;
   if (ex_get_init(old.id, title, &dim, &n, &e, &nb, &nns, &nss) < 0 || n != nodes || e != elements ||

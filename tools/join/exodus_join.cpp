@@ -123,6 +123,8 @@ void open_rank(RankFile& f) {
   ex_opts(EX_DEFAULT);
   f.id = ex_open(f.path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (f.id < 0) f.fail("not a readable Exodus II file");
+  // The API cuts names it reads to 32 characters unless told the file's own limit (history columns are longer).
+  ex_set_max_name_length(f.id, static_cast<int>(ex_inquire_int(f.id, EX_INQ_DB_MAX_ALLOWED_NAME_LENGTH)));
   char title[MAX_LINE_LENGTH + 1] = {};
   int dim = 0, blocks = 0, node_sets = 0, side_sets = 0;
   f.check(ex_get_init(f.id, title, &dim, &f.nodes, &f.elements, &blocks, &node_sets, &side_sets), "the header");
@@ -405,7 +407,11 @@ JoinReport join_rank_files(const std::string& folder, int ranks) {
   const mesh::ExodusLengthUnit unit = info_records(*files[0], notes);
   int out = -1;
   try {
-    out = mesh::exodus::create_with_mesh(whole, partial.string(), "tribex results", mesh::ExodusFormat::offset64, unit, notes);
+    std::size_t longest = 32;  // as the writer: the file's name length fixed at creation, long enough for every name
+    for (const auto* list : {&variables.global, &variables.nodal, &variables.element})
+      for (const auto& n : *list) longest = std::max(longest, n.size());
+    out = mesh::exodus::create_with_mesh(whole, partial.string(), "tribex results", mesh::ExodusFormat::offset64, unit,
+                                         notes, false, longest);
     define_variables(out, variables, static_cast<int>(whole.blocks.size()), partial.string());
     join_steps(files, whole, variables, out, partial.string());
     const int closed = ex_close(out);
