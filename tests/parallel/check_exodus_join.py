@@ -12,7 +12,7 @@ with Debian's /usr/bin/python3 (netCDF4).
       element and global variable within RTOL (1e-10) of the largest value of its field (a vector's or
       tensor's components share one scale: a shear component at round-off level is compared to the
       stress it belongs to; the global variables, the history columns, likewise: momentum_x/_y/_z share
-      one scale). --distributed: `set-up = distributed` (each rank generates its slab), and
+      one scale); the global variable names are history.csv's columns, whole. --distributed: `set-up = distributed` (each rank generates its slab), and
       log.txt must show it did not fall back to the serial set-up.
   check_exodus_join.py bad TRIBEX DECK OUT --ranks N
       OUT/npN of an agree run: `tribex join` on a copy without rank 1's file, on a copy with rank 1's file
@@ -153,8 +153,13 @@ def agree(a):
     if p.returncode != 0:
         sys.exit(f"FAIL: tribex join exited {p.returncode}: {p.stderr}")
     print(p.stdout.strip())
+    with open(os.path.join(serial_out, "history.csv")) as f:
+        header = f.readline().strip().split(",")
     with netCDF4.Dataset(os.path.join(serial_out, "results.exo")) as s, \
          netCDF4.Dataset(os.path.join(parallel_out, "results.exo")) as j:
+        # Every history column by its whole name (mpi_hertz.i has 33-character ones; Exodus's default limit is 32).
+        if names(s, "name_glo_var") != header:
+            sys.exit(f"FAIL: the global variables are not history.csv's columns: {names(s, 'name_glo_var')} != {header}")
         exact, sides = compare_mesh(s, j)
         worst = compare_variables(s, j, a.rtol)
         steps = s.dimensions["time_step"].size
