@@ -65,7 +65,7 @@ def deck(rigid):
 #
 # Run:    build/bin/tribex run verification/rigid_slide/{name}.i -o {name}_output
 # Check:  /usr/bin/python3 verification/rigid_slide/compare.py {name}_output  (README.md)
-# END: the termination time. CI runs the rigid deck with --set "END=260 ps" (1.2 nm of slide, README.md
+# END: the termination time. CI runs the rigid deck with --set "END=220 ps" (0.8 nm of slide, README.md
 # "The CI run"): the rocking it guards against shows long before the 3 nm.
 {{END = {t_end + 20:.1f} ps}}
 begin sierra {name}

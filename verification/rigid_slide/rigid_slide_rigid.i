@@ -6,7 +6,7 @@
 #
 # Run:    build/bin/tribex run verification/rigid_slide/rigid_slide_rigid.i -o rigid_slide_rigid_output
 # Check:  /usr/bin/python3 verification/rigid_slide/compare.py rigid_slide_rigid_output  (README.md)
-# END: the termination time. CI runs the rigid deck with --set "END=260 ps" (1.2 nm of slide, README.md
+# END: the termination time. CI runs the rigid deck with --set "END=220 ps" (0.8 nm of slide, README.md
 # "The CI run"): the rocking it guards against shows long before the 3 nm.
 {END = 460.0 ps}
 begin sierra rigid_slide_rigid
