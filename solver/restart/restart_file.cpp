@@ -1,17 +1,29 @@
 // SPDX-License-Identifier: MIT
-// Restart files: HDF5, one group /rank_<r> per rank holding one 1-D dataset per archive entry
-// (float64 for reals, int64 for integers), attribute `ranks` on the root. The ranks write in
-// turn (token passing with barriers) with the serial driver: restart files are rare and small
-// next to results.h5, and this keeps every rank's arrays in its own group.
+// Restart files, format version 2 (2026-11-29): HDF5 with attributes `ranks`, `format_version`, `run_id`
+// on the root and, per archive entry NAME, dataset reals/NAME (float64) or integers/NAME (int64) holding
+// every rank's array one after the other in rank order, with real_counts/NAME or integer_counts/NAME
+// (int64 [ranks]) giving each rank's value count, -1 where that rank has no such entry. Rank g's array
+// starts at the sum of the counts (>= 0) before it. Written in one go with parallel HDF5 (mpio driver,
+// as results.h5): one allgather tells every rank every rank's entry names and sizes, all ranks create
+// the same datasets (collective metadata: O(entries), not O(ranks x entries)), rank 0 writes the counts
+// and each rank writes its own slice of every entry. Why this layout: solver/README.md "Restart".
+// Version 1 (one group rank_<r> per rank, one dataset per entry, written rank after rank) is still read.
 #include <hdf5.h>
+#include <mpi.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <stdexcept>
 #include <system_error>
+#include <vector>
 
 #include "solver/output/h5_handles.hpp"
 #include "solver/parallel/communicator.hpp"
@@ -23,18 +35,109 @@ namespace {
 using output::H5Handle;
 
 // Bumped when the archive layout changes; a file of another version is refused (exit 2).
-constexpr double kRestartFormatVersion = 1;
+constexpr double kRestartFormatVersion = 2;
+constexpr double kFirstFormatVersion = 1;  // rank_<r> groups: still read (a user's file from before)
 
-void write_group(hid_t file, const StateArchive& a, const std::string& path) {
-  H5Handle group = output::create_group(file, "rank_" + std::to_string(parallel::rank()), path);
-  for (const auto& [name, values] : a.reals) {
-    H5Handle d = output::create_dataset(group.get(), name, H5T_IEEE_F64LE, values.size(), 0, path);
-    output::write_rows(d.get(), H5T_NATIVE_DOUBLE, values.data(), 0, values.size(), 0, path + ":" + name);
+// One archive entry as every rank learns it before the collective creation of the datasets.
+struct EntryShape {
+  std::string name;
+  bool integer = false;
+  std::uint64_t count = 0;
+};
+
+// This rank's entries, reals then integers, each in name order (the order of a group's datasets since the first format):
+// per entry a type byte, the value count, the name's length and the name.
+std::vector<char> encode_shapes(const StateArchive& a) {
+  std::vector<char> out;
+  const auto put = [&out](const void* p, std::size_t n) { out.insert(out.end(), static_cast<const char*>(p), static_cast<const char*>(p) + n); };
+  const auto entry = [&](const std::string& name, char integer, std::uint64_t count) {
+    const std::uint64_t length = name.size();
+    put(&integer, 1);
+    put(&count, sizeof count);
+    put(&length, sizeof length);
+    put(name.data(), name.size());
+  };
+  for (const auto& [name, values] : a.reals) entry(name, 0, values.size());
+  for (const auto& [name, values] : a.integers) entry(name, 1, values.size());
+  return out;
+}
+
+std::vector<EntryShape> decode_shapes(const char* p, const char* end) {
+  std::vector<EntryShape> shapes;
+  while (p < end) {
+    EntryShape e;
+    std::uint64_t length = 0;
+    e.integer = *p++ != 0;
+    std::memcpy(&e.count, p, sizeof e.count);
+    p += sizeof e.count;
+    std::memcpy(&length, p, sizeof length);
+    p += sizeof length;
+    e.name.assign(p, static_cast<std::size_t>(length));
+    p += length;
+    shapes.push_back(std::move(e));
   }
-  for (const auto& [name, values] : a.integers) {
-    H5Handle d = output::create_dataset(group.get(), name, H5T_STD_I64LE, values.size(), 0, path);
-    output::write_rows(d.get(), H5T_NATIVE_LLONG, values.data(), 0, values.size(), 0, path + ":" + name);
+  return shapes;
+}
+
+// [rank][entry]: every rank's entry names, types and sizes, on every rank (an allgather of the byte
+// counts, then of the bytes). One rank: its own, no MPI call (unit tests run without MPI_Init).
+std::vector<std::vector<EntryShape>> gather_shapes(const StateArchive& a) {
+  const std::vector<char> mine = encode_shapes(a);
+  const int ranks = parallel::size();
+  if (ranks == 1) return {decode_shapes(mine.data(), mine.data() + mine.size())};
+  std::vector<int> bytes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks) + 1, 0);
+  int my_bytes = static_cast<int>(mine.size());
+  MPI_Allgather(&my_bytes, 1, MPI_INT, bytes.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + bytes[r];
+  std::vector<char> all(static_cast<std::size_t>(offsets[ranks]));
+  MPI_Allgatherv(mine.data(), my_bytes, MPI_CHAR, all.data(), bytes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
+  std::vector<std::vector<EntryShape>> shapes;
+  for (int r = 0; r < ranks; ++r) shapes.push_back(decode_shapes(all.data() + offsets[r], all.data() + offsets[r + 1]));
+  return shapes;
+}
+
+// [entry name] -> every rank's value count, -1 where the rank has no such entry: the counts datasets.
+using Counts = std::map<std::string, std::vector<long long>>;
+void count_entries(const std::vector<std::vector<EntryShape>>& shapes, Counts& reals, Counts& integers) {
+  const std::size_t ranks = shapes.size();
+  for (std::size_t r = 0; r < ranks; ++r)
+    for (const EntryShape& e : shapes[r]) {
+      auto& c = (e.integer ? integers : reals)[e.name];
+      if (c.empty()) c.assign(ranks, -1);
+      c[r] = static_cast<long long>(e.count);
+    }
+}
+
+// One kind (reals or integers): on every rank the same datasets (parallel HDF5 requires every metadata
+// change of every rank, in the same order); rank 0 writes the counts, each rank its own slice of the
+// values (independent writes into contiguous datasets the mpio driver allocates at creation).
+template <class Map>
+void write_kind(hid_t file, const char* kind, const char* counts_kind, const Counts& counts, const Map& mine,
+                hid_t file_type, hid_t mem_type, const std::string& path) {
+  const std::size_t me = static_cast<std::size_t>(parallel::rank());
+  H5Handle values_group = output::create_group(file, kind, path), counts_group = output::create_group(file, counts_kind, path);
+  for (const auto& [name, c] : counts) {
+    long long total = 0, offset = 0;
+    for (std::size_t r = 0; r < c.size(); ++r) {
+      if (r == me) offset = total;
+      total += std::max(c[r], 0LL);
+    }
+    H5Handle d = output::create_dataset(values_group.get(), name, file_type, static_cast<hsize_t>(total), 0, path);
+    H5Handle n = output::create_dataset(counts_group.get(), name, H5T_STD_I64LE, c.size(), 0, path);
+    if (me == 0) output::write_rows(n.get(), H5T_NATIVE_LLONG, c.data(), 0, c.size(), 0, path + ":" + counts_kind + "/" + name);
+    const auto it = mine.find(name);
+    if (it != mine.end())
+      output::write_rows(d.get(), mem_type, it->second.data(), static_cast<hsize_t>(offset), it->second.size(), 0,
+                         path + ":" + kind + "/" + name);
   }
+}
+
+void write_entries(hid_t file, const std::vector<std::vector<EntryShape>>& shapes, const StateArchive& a,
+                   const std::string& path) {
+  Counts reals, integers;
+  count_entries(shapes, reals, integers);
+  write_kind(file, "reals", "real_counts", reals, a.reals, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, path);
+  write_kind(file, "integers", "integer_counts", integers, a.integers, H5T_STD_I64LE, H5T_NATIVE_LLONG, path);
 }
 
 struct ReadContext {
@@ -44,20 +147,20 @@ struct ReadContext {
   bool failed = false;
   std::string refused;  // a dataset whose size the file cannot hold (issue 54, item 11)
   const std::function<bool(const std::string&)>* wanted = nullptr;  // null: every dataset
+  // Version 2: the counts group beside the values group walked, the rank read and the file's rank count.
+  hid_t counts_group = H5I_INVALID_HID;
+  int rank = 0, ranks = 1;
 };
 
-herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data) {
-  auto* ctx = static_cast<ReadContext*>(data);
-  if (ctx->wanted && *ctx->wanted && !(*ctx->wanted)(name)) return 0;
-  H5Handle d(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
-  H5Handle space(d.valid() ? H5Dget_space(d.get()) : H5I_INVALID_HID, H5Sclose);
-  H5Handle type(d.valid() ? H5Dget_type(d.get()) : H5I_INVALID_HID, H5Tclose);
-  if (!space.valid() || !type.valid()) {
+// The value count of dataset `name` (`d`, opened), or -1 after recording why it cannot be read.
+hssize_t checked_size(hid_t d, const char* name, ReadContext* ctx) {
+  H5Handle space(d >= 0 ? H5Dget_space(d) : H5I_INVALID_HID, H5Sclose);
+  if (!space.valid()) {
     ctx->failed = true;
     return -1;
   }
   const hssize_t n = H5Sget_simple_extent_npoints(space.get());
-  // tribex writes restart datasets uncompressed and contiguous (write_group): 8 bytes per value
+  // tribex writes restart datasets uncompressed and contiguous (write_kind): 8 bytes per value
   // stored in the file. A larger stated size is an edited or damaged file, refused before allocating.
   if (n < 0 || static_cast<std::uintmax_t>(n) > ctx->file_bytes / 8) {
     char gb[32];
@@ -68,18 +171,79 @@ herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data)
                    "from a file a tribex run wrote";
     return -1;
   }
-  herr_t status = 0;
-  if (H5Tget_class(type.get()) == H5T_FLOAT) {
+  return n;
+}
+
+// Values [offset, offset + count) of dataset `d` into the archive, as reals or integers by the dataset's
+// type class (an edited file's integer-typed `u` then reaches the archive's check: state_archive.hpp).
+herr_t read_values(hid_t d, const char* name, hsize_t offset, hsize_t count, ReadContext* ctx) {
+  H5Handle type(H5Dget_type(d), H5Tclose);
+  H5Handle file_space(H5Dget_space(d), H5Sclose);
+  const hsize_t mem_count = std::max<hsize_t>(count, 1);
+  H5Handle mem_space(H5Screate_simple(1, &mem_count, nullptr), H5Sclose);
+  if (!type.valid() || !file_space.valid() || !mem_space.valid() ||
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr) < 0) {
+    ctx->failed = true;
+    return -1;
+  }
+  const bool real = H5Tget_class(type.get()) == H5T_FLOAT;
+  void* data = nullptr;
+  if (real) {
     auto& v = ctx->archive->reals[name];
-    v.resize(static_cast<std::size_t>(n));
-    if (n > 0) status = H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    v.resize(static_cast<std::size_t>(count));
+    data = v.data();
   } else {
     auto& v = ctx->archive->integers[name];
-    v.resize(static_cast<std::size_t>(n));
-    if (n > 0) status = H5Dread(d.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    v.resize(static_cast<std::size_t>(count));
+    data = v.data();
   }
+  if (count == 0) return 0;
+  const herr_t status = H5Dread(d, real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_LLONG, mem_space.get(), file_space.get(),
+                                H5P_DEFAULT, data);
   if (status < 0) ctx->failed = true;
   return status < 0 ? -1 : 0;
+}
+
+// Version 1: dataset `name` of group rank_<g>, whole.
+herr_t read_member(hid_t group, const char* name, const H5L_info_t*, void* data) {
+  auto* ctx = static_cast<ReadContext*>(data);
+  if (ctx->wanted && *ctx->wanted && !(*ctx->wanted)(name)) return 0;
+  H5Handle d(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
+  const hssize_t n = checked_size(d.get(), name, ctx);
+  if (n < 0) return -1;
+  return read_values(d.get(), name, 0, static_cast<hsize_t>(n), ctx);
+}
+
+// Version 2: rank ctx->rank's slice of dataset `name` (all ranks' arrays in rank order), placed by the
+// counts dataset of the same name; a count of -1: the rank has no such entry.
+herr_t read_slice(hid_t group, const char* name, const H5L_info_t*, void* data) {
+  auto* ctx = static_cast<ReadContext*>(data);
+  if (ctx->wanted && *ctx->wanted && !(*ctx->wanted)(name)) return 0;
+  H5Handle d(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
+  H5Handle c(H5Dopen2(ctx->counts_group, name, H5P_DEFAULT), H5Dclose);
+  const hssize_t n = checked_size(d.get(), name, ctx);
+  const hssize_t ranks = n < 0 ? -1 : checked_size(c.get(), name, ctx);
+  if (n < 0 || ranks < 0) return -1;
+  std::vector<long long> counts(static_cast<std::size_t>(ranks));
+  if (ranks != ctx->ranks || H5Dread(c.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, counts.data()) < 0) {
+    ctx->failed = true;
+    return -1;
+  }
+  long long offset = 0, total = 0;
+  bool valid = true;
+  for (int r = 0; r < ctx->ranks; ++r) {
+    valid = valid && counts[r] >= -1 && counts[r] <= n;
+    if (r == ctx->rank) offset = total;
+    total += valid ? std::max(counts[r], 0LL) : 0;
+  }
+  if (!valid || total != n) {
+    ctx->refused = ctx->path + ": error: restart dataset '" + name + "' holds " + std::to_string(n) +
+                   " values, its per-rank counts do not add up to that (an edited or damaged restart file?); restart "
+                   "from a file a tribex run wrote";
+    return -1;
+  }
+  if (counts[ctx->rank] < 0) return 0;
+  return read_values(d.get(), name, static_cast<hsize_t>(offset), static_cast<hsize_t>(counts[ctx->rank]), ctx);
 }
 
 // libhdf5 (1.10, Debian 12) iterates a damaged symbol-table group without end, growing its memory
@@ -128,30 +292,39 @@ class AddressSpaceBudget {
   bool active_ = false;
 };
 
+// The file's `format_version` attribute, 0 when it has none.
+double format_version_of(hid_t file) {
+  double version = 0;
+  H5Handle a(H5Aopen(file, "format_version", H5P_DEFAULT), H5Aclose);
+  if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &version) < 0) return 0;
+  return version;
+}
+
 }  // namespace
 
 void write_restart_file(const std::string& path, const StateArchive& archive, const std::string& run_id) {
   output::QuietHdf5Errors quiet;
   const std::string part = path + ".part";
+  const std::vector<std::vector<EntryShape>> shapes = gather_shapes(archive);
   int failed = 0;
-  for (int r = 0; r < parallel::size(); ++r) {
-    if (r == parallel::rank()) {
-      try {
-        H5Handle file(r == 0 ? H5Fcreate(part.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
-                             : H5Fopen(part.c_str(), H5F_ACC_RDWR, H5P_DEFAULT),
-                      H5Fclose);
-        if (!file.valid()) throw std::runtime_error("cannot open " + part);
-        if (r == 0) {
-          output::write_double_attribute(file.get(), "ranks", parallel::size(), part);
-          output::write_double_attribute(file.get(), "format_version", kRestartFormatVersion, part);
-          if (!run_id.empty()) output::write_string_attribute(file.get(), "run_id", run_id, part);
-        }
-        write_group(file.get(), archive, part);
-      } catch (const std::exception&) {
-        failed = 1;
-      }
+  H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!fapl.valid() || (parallel::size() > 1 && H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL) < 0)) failed = 1;
+  // Collective in a parallel run: every rank opens, creates and closes; a rank whose write failed
+  // (disk full) goes on to the close so that no rank waits for it, and the failure is agreed after.
+  const hid_t file = failed ? H5I_INVALID_HID : H5Fcreate(part.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get());
+  if (file < 0) {
+    failed = 1;
+  } else {
+    try {
+      // Attributes are metadata too: every rank writes the same values.
+      output::write_double_attribute(file, "ranks", parallel::size(), part);
+      output::write_double_attribute(file, "format_version", kRestartFormatVersion, part);
+      if (!run_id.empty()) output::write_string_attribute(file, "run_id", run_id, part);
+      write_entries(file, shapes, archive, part);
+    } catch (const std::exception&) {
+      failed = 1;
     }
-    parallel::barrier();
+    if (H5Fclose(file) < 0) failed = 1;  // the metadata is written here: a full disk may show only now
   }
   double any = failed;
   parallel::sum(&any, 1);
@@ -178,14 +351,11 @@ RestartFile::RestartFile(const std::string& path) : path_(path) {
       if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &ranks) < 0)
         throw SetupError(path + ": error: not a tribex restart file (no 'ranks' attribute)");
     }
-    double version = 0;
-    {
-      H5Handle a(H5Aopen(file_, "format_version", H5P_DEFAULT), H5Aclose);
-      if (!a.valid() || H5Aread(a.get(), H5T_NATIVE_DOUBLE, &version) < 0 || version != kRestartFormatVersion)
-        throw SetupError(path + ": error: restart file format version " + std::to_string(static_cast<int>(version)) +
-                         ", this tribex reads version " + std::to_string(static_cast<int>(kRestartFormatVersion)) +
-                         "; restart with the tribex that wrote it");
-    }
+    const double version = format_version_of(file_);
+    if (version != kRestartFormatVersion && version != kFirstFormatVersion)
+      throw SetupError(path + ": error: restart file format version " + std::to_string(static_cast<int>(version)) +
+                       ", this tribex reads versions " + std::to_string(static_cast<int>(kFirstFormatVersion)) + " and " +
+                       std::to_string(static_cast<int>(kRestartFormatVersion)) + "; restart with the tribex that wrote it");
     if (!(ranks >= 1 && ranks <= 1e7))
       throw SetupError(path + ": error: restart file states " + std::to_string(ranks) +
                        " ranks (an edited or damaged restart file?); restart from a file a tribex run wrote");
@@ -206,20 +376,36 @@ RestartFile::~RestartFile() {
 StateArchive RestartFile::read_group(int g, const std::function<bool(const std::string&)>& wanted) const {
   output::QuietHdf5Errors quiet;
   StateArchive archive;
-  const std::string group_name = "rank_" + std::to_string(g);
-  H5Handle group(H5Gopen2(file_, group_name.c_str(), H5P_DEFAULT), H5Gclose);
-  if (!group.valid()) throw SetupError(path_ + ": error: restart file has no group " + group_name);
+  const bool first_format = format_version_of(file_) == kFirstFormatVersion;
+  // Version 1: group rank_<g>, whole. Version 2: rank g's slice of every entry, reals then integers.
+  const std::string group_name = first_format ? "rank_" + std::to_string(g) : "rank " + std::to_string(g) + "'s arrays";
+  std::vector<std::array<H5Handle, 2>> walks;  // {values group, counts group}
+  for (const auto& [values, counts] : first_format ? std::vector<std::array<std::string, 2>>{{group_name, ""}}
+                                                   : std::vector<std::array<std::string, 2>>{{"reals", "real_counts"},
+                                                                                           {"integers", "integer_counts"}}) {
+    walks.push_back({H5Handle(H5Gopen2(file_, values.c_str(), H5P_DEFAULT), H5Gclose),
+                     H5Handle(counts.empty() ? H5I_INVALID_HID : H5Gopen2(file_, counts.c_str(), H5P_DEFAULT), H5Gclose)});
+    if (!walks.back()[0].valid() || (!counts.empty() && !walks.back()[1].valid()) || g < 0 || g >= ranks_)
+      throw SetupError(path_ + ": error: restart file has no group " + (first_format ? group_name : values + " or " + counts) +
+                       (first_format || (g >= 0 && g < ranks_) ? "" : " for rank " + std::to_string(g)));
+  }
   ReadContext ctx;
   ctx.archive = &archive;
   ctx.path = path_;
   ctx.file_bytes = file_bytes_;
   ctx.wanted = &wanted;
+  ctx.rank = g;
+  ctx.ranks = ranks_;
   herr_t walked = 0;
   bool exhausted = false;
   {
     const AddressSpaceBudget budget(ctx.file_bytes);
     try {
-      walked = H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, read_member, &ctx);
+      for (const auto& w : walks) {
+        ctx.counts_group = w[1].get();
+        if (walked >= 0)
+          walked = H5Literate(w[0].get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, first_format ? read_member : read_slice, &ctx);
+      }
     } catch (const std::bad_alloc&) {
       exhausted = true;
     }
