@@ -39,6 +39,10 @@
       exactly once on stdout + stderr (not once per rank). --serial-restart-at STEP: resume (on N
       ranks) from a restart file written by a one-rank run stopped after STEP; --strip-global-ids removes its
       global numbers first (a file of an earlier tribex, which another rank count cannot resume).
+  parallel_check.py fixture TRIBEX DECK OUT --restart-file F --ranks M [--rtol R]
+      DECK resumed on M ranks from F, a restart file an earlier tribex wrote (tests/parallel/restart_v1: format
+      version 1), and run uninterrupted on M ranks: each history row of the resumed run must be the
+      uninterrupted row of its step, byte for byte when F was written by M ranks, else to R.
   agree ... --decomposition "rcb [SX SY SZ]": both runs of a deck given a `begin decomposition` block (written
       to OUT/deck.i; without SX SY SZ the run chooses the scale); the parallel run's log must name the coordinate
       bisection, and with --expect-partition TEXT its partition line must hold TEXT. --decomposition ptscotch:
@@ -447,6 +451,45 @@ def remap(a):
     print("PASS")
 
 
+def fixture(a):
+    """--restart-file F --ranks M: DECK resumed on M ranks from F, a restart file an earlier tribex wrote (format
+    version 1: tests/parallel/restart_v1), into an empty folder, against an uninterrupted M-rank run: every
+    history row the resumed run writes must be the uninterrupted row of its step, byte for byte when F was
+    written by M ranks, else to --rtol (the move onto another rank count)."""
+    resumed, full = os.path.join(a.out, "resumed"), os.path.join(a.out, "full")
+    for d in (resumed, full):
+        shutil.rmtree(d, ignore_errors=True)
+    run(a.tribex, a.deck, full, a.ranks)
+    run(a.tribex, a.deck, resumed, a.ranks, "--restart", a.restart_file)
+    with open(os.path.join(full, "history.csv")) as f:
+        lines = f.read().splitlines()
+    by_step = {line.split(",")[0]: line for line in lines[1:]}
+    with open(os.path.join(resumed, "history.csv")) as f:
+        mine = f.read().splitlines()
+    rows = [line for line in mine[1:] if line]
+    if mine[0] != lines[0] or not rows or any(line.split(",")[0] not in by_step for line in rows):
+        sys.exit(f"FAIL: the resumed history's header or steps are not the uninterrupted run's ({len(rows)} rows)")
+    import h5py
+    with h5py.File(a.restart_file) as f:
+        writers, version = int(f.attrs["ranks"]), int(f.attrs["format_version"])
+    if writers == a.ranks:
+        same = sum(by_step[line.split(",")[0]] == line for line in rows)
+        print(f"format version {version} file of {writers} rank(s) resumed on {a.ranks}: {len(rows)} history rows from "
+              f"step {rows[0].split(',')[0]}, {same} byte-identical to the uninterrupted run's")
+        if same != len(rows):
+            sys.exit("FAIL: the resumed history is not bitwise the uninterrupted one")
+    else:
+        h1, r1 = read(os.path.join(full, "history.csv"))
+        _, r2 = read(os.path.join(resumed, "history.csv"))
+        first = {r[0]: r for r in r1}
+        worst, name = history_difference(h1, [first[r[0]] for r in r2], r2, h1[1:])
+        print(f"format version {version} file of {writers} rank(s) resumed on {a.ranks}: {len(r2)} history rows, "
+              f"largest relative difference {worst:.3e} ({name or 'none'}), tolerance {a.rtol:g}")
+        if worst > a.rtol:
+            sys.exit("FAIL: the resumed history differs beyond the tolerance")
+    print("PASS")
+
+
 def strip_global_ids(path):
     """A restart file as an earlier tribex wrote it: without the global numbers of each rank group."""
     import h5py
@@ -477,7 +520,7 @@ def failure(a):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("mode", choices=["agree", "restart", "remap", "sigterm", "failure"])
+    ap.add_argument("mode", choices=["agree", "restart", "remap", "sigterm", "failure", "fixture"])
     ap.add_argument("tribex")
     ap.add_argument("deck")
     ap.add_argument("out")
@@ -497,6 +540,7 @@ def main():
     ap.add_argument("--from-ranks", type=int, default=1, help="remap: the rank count that writes the restart file")
     ap.add_argument("--remapped", action="store_true",
                     help="restart: resume through the move by global numbers at the same rank count (bitwise)")
+    ap.add_argument("--restart-file", default="", help="fixture: the restart file an earlier tribex wrote")
     ap.add_argument("--termination", default="")
     ap.add_argument("--via-tribex", action="store_true",
                     help="sigterm: start the run with `tribex run --ranks N` and signal that process, not mpiexec")
@@ -511,7 +555,8 @@ def main():
                     help="agree: also require that some rank's contact region holds fewer faces than the whole "
                          "surfaces (summary.json rank_counts contact_faces), so the distributed contact is exercised")
     a = ap.parse_args()
-    {"agree": agree, "restart": restart, "remap": remap, "sigterm": sigterm, "failure": failure}[a.mode](a)
+    {"agree": agree, "restart": restart, "remap": remap, "sigterm": sigterm, "failure": failure,
+     "fixture": fixture}[a.mode](a)
 
 
 if __name__ == "__main__":
