@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The full state of a run as named flat arrays: what a restart file holds (one group per rank).
+// The full state of a run as named flat arrays: what a restart file holds (each rank's, restart_file.cpp).
 // Every part of the solver that carries state between steps (integrator, element blocks, contact,
 // output schedules) writes its arrays here under its own prefix and reads them back; see
 // solver/README.md "Parallel runs and restart: rules for model authors".
@@ -68,8 +68,8 @@ struct StateArchive {
   }
 };
 
-/// Writes `archive` of this rank into group /rank_<rank> of `path` (rank 0 creates the file; the
-/// ranks then write one after the other), through `path`.part and a rename so that a crash never
+/// Writes `archive` of this rank into `path` (all ranks at once with parallel HDF5, each its slice of
+/// every entry: restart_file.cpp), through `path`.part and a rename so that a crash never
 /// leaves a half-written restart file under its final name. Collective over the run's ranks.
 /// run_id (may be ""): the run's identity, a string attribute `run_id` on the file (README.md "The
 /// output folder"): a resumed run keeps it, and continues only that run's output folder.
@@ -77,17 +77,17 @@ void write_restart_file(const std::string& path, const StateArchive& archive, co
 
 /// A restart file opened for reading its groups one at a time (restart_remap.cpp reads those a rank
 /// needs when the file was written by another rank count). The constructor checks the file is a
-/// tribex restart file of this format version (SetupError, exit 2, otherwise).
+/// tribex restart file of format version 1 or 2 (SetupError, exit 2, otherwise).
 class RestartFile {
  public:
   explicit RestartFile(const std::string& path);
   ~RestartFile();
   RestartFile(const RestartFile&) = delete;
   RestartFile& operator=(const RestartFile&) = delete;
-  /// The rank count that wrote the file (its groups rank_0 .. rank_<ranks - 1>).
+  /// The rank count that wrote the file (its parts 0 .. ranks - 1; version 1: groups rank_<g>).
   int ranks() const { return ranks_; }
   const std::string& path() const { return path_; }
-  /// Group rank_<g>: every dataset, or those `wanted` accepts (an empty function: every dataset).
+  /// Rank g's arrays: every one, or those `wanted` accepts (an empty function: every one).
   StateArchive read_group(int g, const std::function<bool(const std::string&)>& wanted = {}) const;
 
  private:
