@@ -126,7 +126,7 @@ void write_kind(hid_t file, const char* kind, const char* counts_kind, const Cou
     H5Handle n = output::create_dataset(counts_group.get(), name, H5T_STD_I64LE, c.size(), 0, path);
     if (me == 0) output::write_rows(n.get(), H5T_NATIVE_LLONG, c.data(), 0, c.size(), 0, path + ":" + counts_kind + "/" + name);
     const auto it = mine.find(name);
-    if (it != mine.end())
+    if (it != mine.end() && !it->second.empty())  // an empty slice selects nothing
       output::write_rows(d.get(), mem_type, it->second.data(), static_cast<hsize_t>(offset), it->second.size(), 0,
                          path + ":" + kind + "/" + name);
   }
@@ -178,11 +178,7 @@ hssize_t checked_size(hid_t d, const char* name, ReadContext* ctx) {
 // type class (an edited file's integer-typed `u` then reaches the archive's check: state_archive.hpp).
 herr_t read_values(hid_t d, const char* name, hsize_t offset, hsize_t count, ReadContext* ctx) {
   H5Handle type(H5Dget_type(d), H5Tclose);
-  H5Handle file_space(H5Dget_space(d), H5Sclose);
-  const hsize_t mem_count = std::max<hsize_t>(count, 1);
-  H5Handle mem_space(H5Screate_simple(1, &mem_count, nullptr), H5Sclose);
-  if (!type.valid() || !file_space.valid() || !mem_space.valid() ||
-      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr) < 0) {
+  if (!type.valid()) {
     ctx->failed = true;
     return -1;
   }
@@ -197,7 +193,14 @@ herr_t read_values(hid_t d, const char* name, hsize_t offset, hsize_t count, Rea
     v.resize(static_cast<std::size_t>(count));
     data = v.data();
   }
-  if (count == 0) return 0;
+  if (count == 0) return 0;  // nothing to select (an empty slice may start at the dataset's end)
+  H5Handle file_space(H5Dget_space(d), H5Sclose);
+  H5Handle mem_space(H5Screate_simple(1, &count, nullptr), H5Sclose);
+  if (!file_space.valid() || !mem_space.valid() ||
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr) < 0) {
+    ctx->failed = true;
+    return -1;
+  }
   const herr_t status = H5Dread(d, real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_LLONG, mem_space.get(), file_space.get(),
                                 H5P_DEFAULT, data);
   if (status < 0) ctx->failed = true;

@@ -18,7 +18,7 @@ namespace tribex::solver {
 namespace {
 
 // Rank r's archive: arrays of r-dependent sizes and values (1/3 and huge/tiny magnitudes: any rounding
-// would show), scalars, an empty array, an entry only the odd ranks have.
+// would show), scalars, an empty array, an entry only the odd ranks have, one empty on the last rank only.
 StateArchive archive_of(int r, int round) {
   StateArchive a;
   std::vector<double> u;
@@ -31,6 +31,8 @@ StateArchive archive_of(int r, int round) {
   for (int k = 0; k < 2 * r; ++k) ids.push_back(-7 + 1000LL * r + k);
   a.put_integers("global_node", ids);
   if (r % 2 == 1) a.put("only_odd", std::vector<double>{-0.0, 2.5 * r});
+  // Empty on the last rank only: its slice starts at the dataset's end.
+  a.put("tail", r + 1 == parallel::size() ? std::vector<double>{} : std::vector<double>{1.0 * r, -2.0 * r});
   return a;
 }
 
