@@ -108,36 +108,52 @@ void count_entries(const std::vector<std::vector<EntryShape>>& shapes, Counts& r
     }
 }
 
-// One kind (reals or integers): on every rank the same datasets (parallel HDF5 requires every metadata
-// change of every rank, in the same order); rank 0 writes the counts, each rank its own slice of the
-// values (independent writes into contiguous datasets the mpio driver allocates at creation).
+// One kind (reals or integers): first every rank creates the same datasets (parallel HDF5 requires every
+// metadata change of every rank, in the same order; about 100 objects stay in HDF5's metadata cache, no
+// I/O until the close), then rank 0 writes the counts and each rank its own slice of the values
+// (independent writes into contiguous datasets the mpio driver allocates at creation). A failed write (a
+// full disk) is returned, not thrown: a rank that left here early would skip creations the others still
+// make, and the collective close would then wait for it for ever.
 template <class Map>
-void write_kind(hid_t file, const char* kind, const char* counts_kind, const Counts& counts, const Map& mine,
+bool write_kind(hid_t file, const char* kind, const char* counts_kind, const Counts& counts, const Map& mine,
                 hid_t file_type, hid_t mem_type, const std::string& path) {
   const std::size_t me = static_cast<std::size_t>(parallel::rank());
   H5Handle values_group = output::create_group(file, kind, path), counts_group = output::create_group(file, counts_kind, path);
+  std::vector<H5Handle> values, sizes;
   for (const auto& [name, c] : counts) {
-    long long total = 0, offset = 0;
-    for (std::size_t r = 0; r < c.size(); ++r) {
-      if (r == me) offset = total;
-      total += std::max(c[r], 0LL);
-    }
-    H5Handle d = output::create_dataset(values_group.get(), name, file_type, static_cast<hsize_t>(total), 0, path);
-    H5Handle n = output::create_dataset(counts_group.get(), name, H5T_STD_I64LE, c.size(), 0, path);
-    if (me == 0) output::write_rows(n.get(), H5T_NATIVE_LLONG, c.data(), 0, c.size(), 0, path + ":" + counts_kind + "/" + name);
-    const auto it = mine.find(name);
-    if (it != mine.end() && !it->second.empty())  // an empty slice selects nothing
-      output::write_rows(d.get(), mem_type, it->second.data(), static_cast<hsize_t>(offset), it->second.size(), 0,
-                         path + ":" + kind + "/" + name);
+    long long total = 0;
+    for (long long n : c) total += std::max(n, 0LL);
+    values.push_back(output::create_dataset(values_group.get(), name, file_type, static_cast<hsize_t>(total), 0, path));
+    sizes.push_back(output::create_dataset(counts_group.get(), name, H5T_STD_I64LE, c.size(), 0, path));
   }
+  bool ok = true;
+  std::size_t k = 0;
+  for (const auto& [name, c] : counts) {
+    long long offset = 0;
+    for (std::size_t r = 0; r < me; ++r) offset += std::max(c[r], 0LL);
+    const auto it = mine.find(name);
+    try {
+      if (me == 0) output::write_rows(sizes[k].get(), H5T_NATIVE_LLONG, c.data(), 0, c.size(), 0, path);
+      if (it != mine.end() && !it->second.empty())  // an empty slice selects nothing
+        output::write_rows(values[k].get(), mem_type, it->second.data(), static_cast<hsize_t>(offset), it->second.size(), 0,
+                           path + ":" + kind + "/" + name);
+    } catch (const std::runtime_error&) {
+      ok = false;
+    }
+    ++k;
+  }
+  return ok;
 }
 
+// Both kinds; throws (after every collective creation) when a write of this rank failed.
 void write_entries(hid_t file, const std::vector<std::vector<EntryShape>>& shapes, const StateArchive& a,
                    const std::string& path) {
   Counts reals, integers;
   count_entries(shapes, reals, integers);
-  write_kind(file, "reals", "real_counts", reals, a.reals, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, path);
-  write_kind(file, "integers", "integer_counts", integers, a.integers, H5T_STD_I64LE, H5T_NATIVE_LLONG, path);
+  const bool reals_written = write_kind(file, "reals", "real_counts", reals, a.reals, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, path);
+  const bool integers_written =
+      write_kind(file, "integers", "integer_counts", integers, a.integers, H5T_STD_I64LE, H5T_NATIVE_LLONG, path);
+  if (!reals_written || !integers_written) throw std::runtime_error("could not write " + path);
 }
 
 struct ReadContext {
@@ -303,12 +319,36 @@ double format_version_of(hid_t file) {
   return version;
 }
 
+// Is there room for the file in `part`'s folder? Its values (8 bytes each) plus 1 KiB of metadata per
+// object and 64 KiB. Checked by rank 0 before the file is made, for every rank (one broadcast): parallel
+// HDF5 cannot close a file whose metadata it could not write, and its exit handler then crashes on the
+// half-closed file (tried: a 250 KiB tmpfs, SIGSEGV in H5F__close_cb at MPI_Finalize after exit 3's
+// message). A disk that fills between the check and the write can still end so.
+bool room_for(const std::string& part, const std::vector<std::vector<EntryShape>>& shapes) {
+  int room = 1;
+  if (parallel::is_root()) {
+    std::error_code ec;
+    std::filesystem::remove(part, ec);  // an earlier failed write's leftover
+    double bytes = 65536;
+    for (const auto& rank : shapes)
+      for (const EntryShape& e : rank) bytes += 8.0 * static_cast<double>(e.count) + 2048;  // values and counts datasets
+    const auto space = std::filesystem::space(std::filesystem::path(part).parent_path().empty()
+                                                  ? std::filesystem::path(".")
+                                                  : std::filesystem::path(part).parent_path(),
+                                              ec);
+    room = ec || static_cast<double>(space.available) >= bytes ? 1 : 0;
+  }
+  if (parallel::size() > 1) parallel::broadcast(&room, 1, 0);
+  return room != 0;
+}
+
 }  // namespace
 
 void write_restart_file(const std::string& path, const StateArchive& archive, const std::string& run_id) {
   output::QuietHdf5Errors quiet;
   const std::string part = path + ".part";
   const std::vector<std::vector<EntryShape>> shapes = gather_shapes(archive);
+  if (!room_for(part, shapes)) throw NumericalFailure("could not write the restart file " + path + " (disk full?)");
   int failed = 0;
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   if (!fapl.valid() || (parallel::size() > 1 && H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL) < 0)) failed = 1;
