@@ -17,6 +17,7 @@
 #include "solver/output/h5_handles.hpp"
 #include "solver/output/length_unit.hpp"
 #include "solver/output/mesh_outline.hpp"
+#include "solver/output/row_blocks.hpp"
 #include "solver/output/xdmf_document.hpp"
 #include "solver/parallel/communicator.hpp"
 
@@ -95,10 +96,12 @@ struct ResultsWriter::Impl {
   double last_time = 0.0;
   // Parallel: this rank's rows (runs) and whether it is rank 0.
   bool parallel = false, root = true;
-  std::vector<std::array<hsize_t, 2>> node_runs, element_runs;
   long long node_rows = 0, element_rows = 0;
-  // Parallel: the selections of this rank's rows, one per (nodal, columns), built at set-up for the
-  // shapes the fields have (1, 3, 9 columns) and reused by every step (selection()).
+  // Parallel: this rank's rows are exchanged into a block of consecutive rows before each write
+  // (row_blocks.hpp), one plan for the nodes and one for the elements, built at set-up; the selections of
+  // the block, one per (nodal, columns), built at set-up for the shapes the fields have (1, 3, 9 columns)
+  // and reused by every step (selection()).
+  std::optional<output::RowBlocks> node_blocks, element_blocks;
   std::vector<std::pair<std::array<hsize_t, 2>, output::RowSelection>> selections;
 
   Impl(std::string dir, long long n, long long e, std::vector<output::XdmfBlock> grids, output::LengthUnit length,
@@ -141,8 +144,9 @@ const output::RowSelection& ResultsWriter::Impl::selection(bool nodal, hsize_t c
   for (const auto& [k, s] : selections)
     if (k == key) return s;
   // A shape first met in the loop (a Matrix field of another width): built once, then kept.
-  selections.emplace_back(key, output::select_row_runs(static_cast<hsize_t>(nodal ? nodes : elements), cols,
-                                                        nodal ? node_runs : element_runs, h5_path));
+  const output::RowBlocks& b = nodal ? *node_blocks : *element_blocks;
+  selections.emplace_back(key, output::select_row_block(static_cast<hsize_t>(nodal ? nodes : elements), cols, b.first(),
+                                                        b.count(), h5_path));
   return selections.back().second;
 }
 
@@ -308,9 +312,11 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
     }
     data = tensor_buffer.data();
   }
-  if (parallel)
-    output::write_selected_rows(d.get(), H5T_NATIVE_DOUBLE, data, selection(nodal, cols), h5_path + ":" + path);
-  else
+  if (parallel) {  // this rank's rows exchanged into its block, then written as one hyperslab
+    const std::vector<unsigned char> block =
+        (nodal ? *node_blocks : *element_blocks).gather(data, sizeof(double) * static_cast<std::size_t>(stored));
+    output::write_selected_rows(d.get(), H5T_NATIVE_DOUBLE, block.data(), selection(nodal, cols), h5_path + ":" + path);
+  } else
     output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols, h5_path + ":" + path);
 }
 
@@ -378,25 +384,34 @@ void ResultsWriter::Impl::write_mesh(const MeshRows& rows, const std::vector<mes
   output::write_string_attribute(f, "length_unit", unit.name, p);
   if (!options.run_id.empty()) output::write_string_attribute(f, "run_id", options.run_id, p);
   if (!options.mesh_sha256.empty()) output::write_string_attribute(f, "mesh_sha256", options.mesh_sha256, p);
-  // Parallel: every rank writes its rows (collective; a rank with none takes part with no rows).
-  const auto write_mine = [&](hid_t d, hid_t type, const void* data, bool nodal, hsize_t rows_in_file, hsize_t cols,
-                              const std::string& what) {
+  // Parallel: every rank's rows (all of them on rank 0 in the whole-mesh form, none elsewhere) are
+  // exchanged into blocks of consecutive rows that each rank writes (collective; row_blocks.hpp).
+  std::optional<output::RowBlocks> node_block, element_block;
+  if (parallel) {
+    node_block.emplace(rows.node_runs, n, output::chunk_rows(n, 3));
+    element_block.emplace(rows.element_runs, e, output::chunk_rows(e, 9));
+  }
+  const auto write_mine = [&](hid_t d, hid_t type, const void* data, std::size_t value_bytes, bool nodal,
+                              hsize_t rows_in_file, hsize_t cols, const std::string& what) {
     if (!parallel) return output::write_rows(d, type, data, 0, rows_in_file, cols, what);
-    output::write_row_runs(d, type, data, nodal ? rows.node_runs : rows.element_runs, cols, what);
+    const output::RowBlocks& b = nodal ? *node_block : *element_block;
+    const std::vector<unsigned char> block = b.gather(data, value_bytes * std::max<hsize_t>(cols, 1));
+    output::write_selected_rows(d, type, block.data(), output::select_row_block(rows_in_file, cols, b.first(), b.count(), what),
+                                what);
   };
   const int z = gzip_level;
   std::vector<double> xyz_in_unit(rows.coordinates, rows.coordinates + 3 * rows.node_rows);
   for (double& x : xyz_in_unit) x *= unit.per_metre;
   H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p, z);
   output::write_string_attribute(xyz.get(), "units", unit.name, p);
-  write_mine(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), true, n, 3, p + ":/mesh/coordinates");
+  write_mine(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), sizeof(double), true, n, 3, p + ":/mesh/coordinates");
   H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p, z);
   output::write_string_attribute(conn.get(), "units", "1", p);  // node indices
-  write_mine(conn.get(), H5T_NATIVE_INT, rows.connectivity, false, e, 8, p + ":/mesh/connectivity");
+  write_mine(conn.get(), H5T_NATIVE_INT, rows.connectivity, sizeof(int), false, e, 8, p + ":/mesh/connectivity");
   const std::vector<int> block_id = block_ids_of_rows(blocks, rows.element_runs, rows.element_rows);
   H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p, z);
   output::write_string_attribute(bid.get(), "units", "1", p);  // block indices
-  write_mine(bid.get(), H5T_NATIVE_INT, block_id.data(), false, e, 0, p + ":/mesh/block_id");
+  write_mine(bid.get(), H5T_NATIVE_INT, block_id.data(), sizeof(int), false, e, 0, p + ":/mesh/block_id");
   std::string joined;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     if (b > 0) joined += '\n';
@@ -446,11 +461,11 @@ void ResultsWriter::open(const std::string& directory, const output::MeshOutline
   if (slab) {
     impl_->parallel = true;
     impl_->root = parallel::is_root();
-    for (const auto& r : slab->node_runs) impl_->node_runs.push_back({r[0], r[1]});
-    for (const auto& r : slab->element_runs) impl_->element_runs.push_back({r[0], r[1]});
     impl_->node_rows = slab->node_rows;
     impl_->element_rows = slab->element_rows;
     try {
+      impl_->node_blocks.emplace(slab->node_runs, outline.nodes, output::chunk_rows(outline.nodes, 3));
+      impl_->element_blocks.emplace(slab->element_runs, e, output::chunk_rows(e, 9));
       for (bool nodal : {true, false})
         for (hsize_t cols : {0, 3, 9}) impl_->selection(nodal, cols);  // the fields' shapes, before the loop
     } catch (const std::runtime_error& err) {
