@@ -10,7 +10,8 @@
 // 57 + 12 MB in H5D__chunk_collective_write on one rank). Instead the rows are first exchanged, one
 // MPI_Alltoallv, so that every rank holds one block of consecutive rows (the even split of the rows,
 // aligned to whole chunks), which it writes as one hyperslab: the chunk map comes from the hyperslab's
-// bounds and at most the chunks at a block's ends are shared. The file holds the same bytes.
+// bounds and at most the chunks at a block's ends are shared. The datasets hold the same values with the
+// same chunks and filters; only where the chunks lie in the file changes.
 #pragma once
 
 #include <array>
