@@ -77,6 +77,20 @@ std::vector<output::XdmfBlock> grid_ranges(const std::vector<mesh::Block>& mesh_
   return grids;
 }
 
+// The mpio driver with a 4 MiB collective buffer per aggregator (MPI-IO hint `cb_buffer_size`). Open MPI's
+// OMPIO (fcoll vulcan) otherwise holds 32 MiB on every aggregator rank in each collective write, rank 0 among
+// them: with the writes in blocks (row_blocks.hpp) that buffer was the largest single allocation of rank 0's
+// peak in a 64-rank run of the 4 M-element counts model (heaptrack: 33.6 MB in
+// mca_fcoll_vulcan_file_write_all). A hint changes how the bytes reach the file, not which bytes: more,
+// smaller write cycles per aggregator (docs/measurements/2026-11-29-output-memory.md).
+void set_collective_buffer(hid_t fapl) {
+  MPI_Info info = MPI_INFO_NULL;
+  MPI_Info_create(&info);
+  MPI_Info_set(info, "cb_buffer_size", "4194304");
+  H5Pset_fapl_mpio(fapl, MPI_COMM_WORLD, info);  // HDF5 keeps its own copy of the info
+  MPI_Info_free(&info);
+}
+
 }  // namespace
 
 struct ResultsWriter::Impl {
@@ -475,7 +489,7 @@ void ResultsWriter::open(const std::string& directory, const output::MeshOutline
 
   impl_->check_can_create(resume_time.has_value());
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-  if (impl_->parallel) H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL);
+  if (impl_->parallel) set_collective_buffer(fapl.get());
   if (resume_time && std::filesystem::file_size(impl_->h5_path) > 0 && impl_->open_for_resume(fapl.get(), *resume_time)) {
     const std::string file_run = output::read_string_attribute(impl_->file.get(), "run_id");
     if (!options.run_id.empty() && !file_run.empty() && file_run != options.run_id)

@@ -100,7 +100,7 @@ def tribex_pids(root):
         if entry.isdigit():
             try:
                 with open(f"/proc/{entry}/comm") as f:
-                    if f.read().strip() != "tribex":
+                    if not f.read().startswith("tribex"):  # a copied binary (tribex_old) counts too
                         continue
                 pid = int(entry)
                 while pid > 1 and pid != root:
