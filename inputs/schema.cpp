@@ -334,7 +334,7 @@ std::vector<BlockSchema> build_table() {
                        "so that no rank holds the whole mesh: the same partition as serial with ptscotch; a mesh this "
                        "cannot make (a gmsh file, an AFM surface, gap above "
                        "surface, surface layer blocks, rigid bodies, an Exodus mesh whose contact may travel without a "
-                       "coordinate scale) or a run writing results.exo is set up serially, and the log says why)"),
+                       "coordinate scale) is set up serially, and the log says why)"),
                 reals("coordinate scale", dim::none, 3, positive(), false, "",
                       "sx sy sz: coordinates multiplied by these when the sides of a box are compared (rcb's volume, "
                       "and the contact patches with either method); a small factor on the direction a contact zone "

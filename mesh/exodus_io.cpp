@@ -357,7 +357,8 @@ Mesh read_exodus(const std::string& path) {
 }
 
 int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format,
-                             const ExodusLengthUnit& unit, const std::vector<std::string>& notes) {
+                             const ExodusLengthUnit& unit, const std::vector<std::string>& notes,
+                             bool keep_empty_blocks, std::size_t name_length) {
   validate(mesh, "mesh for " + path);
   quiet_exodus();
   int comp_ws = sizeof(double), io_ws = sizeof(double);
@@ -373,9 +374,11 @@ int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const st
   // Blocks in element order, so that Exodus's block-after-block element numbering is tribex's.
   std::vector<const Block*> blocks;
   for (const auto& b : mesh.blocks)
-    if (b.element_count > 0) blocks.push_back(&b);
-  std::sort(blocks.begin(), blocks.end(), [](const Block* a, const Block* b) { return a->first_element < b->first_element; });
-  std::size_t longest = 32;
+    if (b.element_count > 0 || keep_empty_blocks) blocks.push_back(&b);
+  // Stable: empty blocks (keep_empty_blocks) share their first_element with the next one and keep the caller's order.
+  std::stable_sort(blocks.begin(), blocks.end(),
+                   [](const Block* a, const Block* b) { return a->first_element < b->first_element; });
+  std::size_t longest = std::max<std::size_t>(32, name_length);
   for (const auto* b : blocks) longest = std::max(longest, b->name.size());
   for (const auto& [n, s] : mesh.node_sets) longest = std::max(longest, n.size());
   for (const auto& [n, s] : mesh.side_sets) longest = std::max(longest, n.size());
@@ -412,6 +415,10 @@ int exodus::create_with_mesh(const Mesh& mesh, const std::string& path, const st
     const Block& blk = *blocks[b];
     check(ex_put_block(exo, EX_ELEM_BLOCK, static_cast<ex_entity_id>(b + 1), "HEX8", blk.element_count, 8, 0, 0, 0),
           "block '" + blk.name + "'");
+    if (blk.element_count == 0) {
+      names.push_back(blk.name);
+      continue;
+    }
     const auto first = mesh.connectivity.begin() + 8 * static_cast<std::ptrdiff_t>(blk.first_element);
     one_based.assign(first, first + 8 * static_cast<std::ptrdiff_t>(blk.element_count));
     for (int& v : one_based) ++v;

@@ -48,8 +48,13 @@ namespace exodus {
 /// ex_close). `title` is the database title (at most 80 characters kept). The coordinates are
 /// written in `unit` (metres x per_metre), named in the info records with `notes` (one line each,
 /// at most 80 characters kept). Throws MeshError.
+/// keep_empty_blocks: a block without elements is written too (ids 1..B over every block of `mesh`, in
+/// element order), as a per-rank results file must so that every rank's block ids are the whole mesh's.
+/// name_length: the longest name the file will hold (the caller's variable names too): the file's name
+/// dimension is fixed at creation, and the library cuts longer names put later to it (with a warning).
 int create_with_mesh(const Mesh& mesh, const std::string& path, const std::string& title, ExodusFormat format,
-                     const ExodusLengthUnit& unit = {}, const std::vector<std::string>& notes = {});
+                     const ExodusLengthUnit& unit = {}, const std::vector<std::string>& notes = {},
+                     bool keep_empty_blocks = false, std::size_t name_length = 32);
 
 /// The length unit the open file `exo` names in its info records (metres when none does); MeshError
 /// naming `path` for a unit other than m, um, nm.

@@ -55,6 +55,9 @@ class Walk {
              std::to_string(static_cast<unsigned long long>(end)) + " bytes, but the file has " +
              std::to_string(file_size_) + " (an interrupted copy or write?): copy or write it again");
     }
+    if (!streaming && records > 0 && record_bytes_ > 0)
+      h.records_end = static_cast<std::uint64_t>(record_begin_ + static_cast<long double>(records) * record_bytes_);
+    h.file_size = file_size_;
     // ex_get_info reads len_line characters per record into buffers of 81 (the format's fixed length).
     if (const auto line = h.dimensions.find("len_line"); line != h.dimensions.end() && line->second > 81)
       fail("its dimension 'len_line' is " + std::to_string(line->second) + " where Exodus II has 81: a damaged or crafted file");

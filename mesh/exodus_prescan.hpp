@@ -16,6 +16,9 @@ namespace tribex::mesh {
 /// What the walk found: the dimensions by name (a record dimension's length is the record count).
 struct NetcdfHeader {
   std::map<std::string, std::uint64_t> dimensions;
+  /// Where the last record ends when every record is complete (0: no records); the file's size. A mesh
+  /// reader accepts a partly written last record; a join of rank files needs them whole.
+  std::uint64_t records_end = 0, file_size = 0;
 };
 
 /// Walks `bytes` (the first bytes of a file of `file_size` bytes; the header must lie within them)

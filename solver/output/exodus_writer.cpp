@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <stdexcept>
 
@@ -14,6 +15,7 @@
 #include "mesh/exodus_prescan.hpp"
 #include "mesh/mesh_error.hpp"
 #include "solver/errors.hpp"
+#include "solver/output/exodus_rank_file.hpp"
 #include "solver/output/mesh_outline.hpp"
 #include "solver/parallel/communicator.hpp"
 
@@ -31,14 +33,6 @@ std::vector<char*> c_names(const std::vector<std::string>& names) {
   std::vector<char*> p;
   for (const auto& n : names) p.push_back(const_cast<char*>(n.c_str()));  // the API takes char**; it only reads
   return p;
-}
-
-// Every row of a run list, in order.
-std::vector<int> rows_of(const std::vector<std::array<unsigned long long, 2>>& runs) {
-  std::vector<int> rows;
-  for (const auto& r : runs)
-    for (unsigned long long k = 0; k < r[1]; ++k) rows.push_back(static_cast<int>(r[0] + k));
-  return rows;
 }
 
 struct ExoBlock {
@@ -69,19 +63,24 @@ struct ExodusWriter::Impl {
   int exo = -1;  // rank 0
   int steps = 0;
   double last_time = -INFINITY;
-  bool parallel = false, root = true;
   // The fields of the first step; the file's variables (Exodus names), defined once.
   std::vector<FieldSpec> nodal_fields, element_fields;
   bool fields_fixed = false;
   bool variables_defined = false;
   std::vector<std::string> file_global, file_nodal, file_element;  // as in the file
-  // Parallel: rows each rank sends, and on rank 0 the global row of every gathered row.
-  long long node_rows = 0, element_rows = 0;
-  std::vector<int> gathered_node_row, gathered_element_row;
-  std::vector<int> rank_node_rows, rank_element_rows;
-  std::vector<int> counts, displs;
-  std::vector<double> send, receive, whole;
+  long long node_rows = 0, element_rows = 0;  // one file per rank: the owned nodes, the rank's elements
   std::vector<double> component;  // one component of one field, whole mesh (rank 0)
+  // One file per rank (the rank-part constructor): the file's mesh and Nemesis counts, and the rows of
+  // the nodes owned by lower ranks, fetched for every nodal field of a step.
+  bool spread = false;
+  const parallel::Domain* domain = nullptr;
+  output::MeshOutline outline;
+  mesh::Mesh file_mesh;
+  output::RankGlobals rank_globals;
+  std::unique_ptr<output::SharedNodeRows> shared;
+  std::deque<std::vector<double>> spread_rows;  // [nodal field] local rows (a deque: spans into it stay valid)
+  std::vector<FieldView> spread_views;
+  std::vector<double> spread_globals;
 
   ~Impl() {
     if (exo >= 0) ex_close(exo);
@@ -93,11 +92,19 @@ struct ExodusWriter::Impl {
       const std::vector<std::string> notes = {
           "coordinates and length fields (unit m: displacement, gap) in " + unit.name,
           "every other field SI; the global variables (history.csv columns) SI"};
-      exo = mesh::exodus::create_with_mesh(mesh, path, "tribex results", mesh::ExodusFormat::offset64, unit, notes);
+      // The history columns' names may be longer than Exodus's default 32 (substrate_axis_top_displacement_x).
+      std::size_t longest = 32;
+      for (const auto& n : global_names) longest = std::max(longest, n.size());
+      exo = mesh::exodus::create_with_mesh(spread ? file_mesh : mesh, path, "tribex results",
+                                           mesh::ExodusFormat::offset64, unit, notes, spread, longest);
     } catch (const mesh::MeshError& e) {
       throw SetupError(std::string("cannot create results file: ") + e.what() +
                        "; choose another output directory or fix its permissions");
     }
+    if (spread && output::put_rank_maps(exo, file_mesh, *domain, outline, rank_globals) < 0)
+      throw SetupError("cannot write the number maps and Nemesis records of '" + path + "'" +
+                       (mesh::exodus::last_error().empty() ? "" : " (" + mesh::exodus::last_error() + ")") +
+                       "; check the disk space");
   }
 
   std::vector<std::string> exodus_names(const std::vector<FieldSpec>& fields) const {
@@ -146,6 +153,17 @@ struct ExodusWriter::Impl {
   }
 
   bool open_for_resume(const mesh::Mesh& mesh, double resume_time);
+  // The folder made if missing, then the file continued (a resumed run whose file has its steps) or created.
+  void open(const mesh::Mesh& mesh, std::optional<double> resume_time) {
+    std::error_code ec;
+    std::filesystem::create_directories(directory, ec);
+    if (ec || !std::filesystem::is_directory(directory))
+      throw SetupError("cannot create output directory '" + directory + "': " +
+                       (ec ? ec.message() : std::string("a file of that name exists")) +
+                       "; choose another output directory or fix its permissions");
+    if (resume_time && open_for_resume(mesh, *resume_time)) return;
+    create(mesh);
+  }
   void write(double time, std::span<const FieldView> nodal, std::span<const FieldView> element,
              std::span<const double> globals);
 };
@@ -175,6 +193,8 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
   } old;
   old.id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (old.id < 0) throw SetupError(refuse + "it is not a readable Exodus II file" + fix);
+  // The API cuts names it reads to 32 characters unless told the file's own limit (history columns are longer).
+  ex_set_max_name_length(old.id, static_cast<int>(ex_inquire_int(old.id, EX_INQ_DB_MAX_ALLOWED_NAME_LENGTH)));
   char title[MAX_LINE_LENGTH + 1] = {};
   int dim = 0, n = 0, e = 0, nb = 0, nns = 0, nss = 0;
   if (ex_get_init(old.id, title, &dim, &n, &e, &nb, &nns, &nss) < 0 || n != nodes || e != elements ||
@@ -195,7 +215,7 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
   const auto element = read_variable_names(old.id, EX_ELEM_BLOCK);
 
   const std::string final_path = path;
-  const std::string partial = (fs::path(directory) / ".results.exo.partial").string();
+  const std::string partial = (fs::path(directory) / ("." + fs::path(path).filename().string() + ".partial")).string();
   path = partial;
   try {
     create(mesh);
@@ -217,6 +237,7 @@ bool ExodusWriter::Impl::open_for_resume(const mesh::Mesh& mesh, double resume_t
       }
       for (int v = 1; v <= static_cast<int>(element.size()); ++v)
         for (std::size_t b = 0; b < blocks.size(); ++b) {
+          if (blocks[b].count == 0) continue;  // a rank file's block this rank has no element of
           copy(ex_get_var(old.id, k, EX_ELEM_BLOCK, v, old_block_ids[b], blocks[b].count, values.data()),
                "element variables");
           copy(ex_put_var(exo, k, EX_ELEM_BLOCK, v, blocks[b].id, blocks[b].count, values.data()), "element variables");
@@ -260,13 +281,12 @@ std::vector<std::string> ExodusWriter::component_names(const std::string& name, 
 }
 
 ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& mesh, std::vector<std::string> global_names,
-                           const ResultsSlab* slab, std::optional<double> resume_time, const std::string& length_unit)
+                           std::optional<double> resume_time, const std::string& length_unit)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.directory = directory;
   m.path = (std::filesystem::path(directory) / "results.exo").string();
-  // A parallel run: `mesh` is the whole mesh on rank 0 only; the others take its outline.
-  const output::MeshOutline outline = output::outline_of(mesh, length_unit, slab != nullptr);
+  const output::MeshOutline outline = output::outline_of(mesh, length_unit, false);
   m.unit = {outline.unit.name, outline.unit.per_metre};
   m.nodes = static_cast<int>(outline.nodes);
   m.elements = static_cast<int>(outline.elements);
@@ -278,45 +298,33 @@ ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& mesh,
   for (std::size_t b = 0; b < sorted.size(); ++b)
     m.blocks.push_back({static_cast<int>(b + 1), sorted[b]->first_element, sorted[b]->element_count});
 
-  if (slab) {
-    // Collective first (it cannot fail), files after: only rank 0 can throw below.
-    m.parallel = true;
-    m.root = parallel::is_root();
-    m.node_rows = slab->node_rows;
-    m.element_rows = slab->element_rows;
-    const int ranks = parallel::size();
-    int mine[2] = {static_cast<int>(slab->node_rows), static_cast<int>(slab->element_rows)};
-    std::vector<int> all(m.root ? 2 * static_cast<std::size_t>(ranks) : 0);
-    MPI_Gather(mine, 2, MPI_INT, all.data(), 2, MPI_INT, 0, MPI_COMM_WORLD);
-    const auto gather_rows = [&](const std::vector<std::array<unsigned long long, 2>>& runs, int which,
-                                 std::vector<int>& out, std::vector<int>& per_rank) {
-      const std::vector<int> rows = rows_of(runs);
-      std::vector<int> counts, displs;
-      if (m.root) {
-        per_rank.resize(static_cast<std::size_t>(ranks));
-        for (int r = 0; r < ranks; ++r) {
-          per_rank[r] = all[2 * r + which];
-          displs.push_back(counts.empty() ? 0 : displs.back() + counts.back());
-          counts.push_back(per_rank[r]);
-        }
-        out.resize(static_cast<std::size_t>(displs.back() + counts.back()));
-      }
-      MPI_Gatherv(rows.data(), static_cast<int>(rows.size()), MPI_INT, out.data(), counts.data(), displs.data(), MPI_INT,
-                  0, MPI_COMM_WORLD);
-    };
-    gather_rows(slab->node_runs, 0, m.gathered_node_row, m.rank_node_rows);
-    gather_rows(slab->element_runs, 1, m.gathered_element_row, m.rank_element_rows);
-  }
-  if (!m.root) return;
 
-  std::error_code ec;
-  std::filesystem::create_directories(directory, ec);
-  if (ec || !std::filesystem::is_directory(directory))
-    throw SetupError("cannot create output directory '" + directory + "': " +
-                     (ec ? ec.message() : std::string("a file of that name exists")) +
-                     "; choose another output directory or fix its permissions");
-  if (resume_time && m.open_for_resume(mesh, *resume_time)) return;
-  m.create(mesh);
+  m.open(mesh, resume_time);
+}
+
+ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& local, const parallel::Domain& domain,
+                           const output::MeshOutline& outline, std::vector<std::string> global_names,
+                           std::optional<double> resume_time)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.spread = true;
+  m.domain = &domain;
+  m.outline = outline;
+  m.directory = directory;
+  m.path = (std::filesystem::path(directory) / output::rank_file_name(domain.ranks, domain.rank)).string();
+  m.unit = {outline.unit.name, outline.unit.per_metre};
+  m.global_names = std::move(global_names);
+  // Collective first (the set names, the global counts, the shared nodes' owners); files after.
+  m.file_mesh = output::rank_file_mesh(local, outline);
+  m.rank_globals = output::rank_globals(m.file_mesh, domain);
+  m.shared = std::make_unique<output::SharedNodeRows>(domain);
+  m.nodes = m.file_mesh.node_count();
+  m.elements = m.file_mesh.element_count();
+  m.node_rows = domain.owned_node_count();
+  m.element_rows = m.elements;
+  for (std::size_t b = 0; b < m.file_mesh.blocks.size(); ++b)
+    m.blocks.push_back({static_cast<int>(b + 1), m.file_mesh.blocks[b].first_element, m.file_mesh.blocks[b].element_count});
+  m.open(m.file_mesh, resume_time);
 }
 
 ExodusWriter::~ExodusWriter() = default;
@@ -334,33 +342,31 @@ void ExodusWriter::Impl::write(double time, std::span<const FieldView> nodal, st
   check(ex_put_time(exo, k, &time), "the time");
   if (!global_names.empty())
     check(ex_put_glob_vars(exo, k, static_cast<int>(globals.size()), globals.data()), "the global variables");
-  // Serial: the views are the whole arrays. Parallel: `whole` holds them, gathered (write_step).
-  const double* gathered = whole.data();
+  // The views are the file's rows: the whole mesh's (one rank), or a rank file's (write_step fills the nodes it does not own).
   int var = 0;
   for (std::size_t f = 0; f < nodal_fields.size(); ++f) {
     const int c = nodal_fields[f].components;
-    const double* v = parallel ? gathered : nodal[f].values.data();
+    const double* v = nodal[f].values.data();
     for (int j = 0; j < c; ++j) {
       const double s = nodal_fields[f].scale;
       for (int i = 0; i < nodes; ++i) component[i] = s == 1.0 ? v[static_cast<std::size_t>(c) * i + j] : v[static_cast<std::size_t>(c) * i + j] * s;
       ++var;
       check(ex_put_var(exo, k, EX_NODAL, var, 1, nodes, component.data()), "nodal variable '" + file_nodal[var - 1] + "'");
     }
-    gathered += static_cast<std::size_t>(c) * nodes;
   }
   var = 0;
   for (std::size_t f = 0; f < element_fields.size(); ++f) {
     const int c = element_fields[f].components;
-    const double* v = parallel ? gathered : element[f].values.data();
+    const double* v = element[f].values.data();
     for (int j = 0; j < c; ++j) {
       const double s = element_fields[f].scale;
       for (int i = 0; i < elements; ++i) component[i] = s == 1.0 ? v[static_cast<std::size_t>(c) * i + j] : v[static_cast<std::size_t>(c) * i + j] * s;
       ++var;
       for (const auto& b : blocks)
-        check(ex_put_var(exo, k, EX_ELEM_BLOCK, var, b.id, b.count, component.data() + b.first),
+        if (b.count > 0)
+          check(ex_put_var(exo, k, EX_ELEM_BLOCK, var, b.id, b.count, component.data() + b.first),
               "element variable '" + file_element[var - 1] + "'");
     }
-    gathered += static_cast<std::size_t>(c) * elements;
   }
   check(ex_update(exo), "the step");  // on disk now: a killed run keeps it
   ++steps;
@@ -375,8 +381,8 @@ void ExodusWriter::write_step(double time, std::span<const FieldView> nodal, std
   if (globals.size() != m.global_names.size())
     throw std::invalid_argument("ExodusWriter: " + std::to_string(globals.size()) + " global values for " +
                                 std::to_string(m.global_names.size()) + " global variables");
-  const long long node_rows = m.parallel ? m.node_rows : m.nodes;
-  const long long element_rows = m.parallel ? m.element_rows : m.elements;
+  const long long node_rows = m.spread ? m.node_rows : m.nodes;
+  const long long element_rows = m.spread ? m.element_rows : m.elements;
   std::vector<FieldSpec> ns, es;
   for (const auto* list : {&nodal, &element}) {
     const bool is_nodal = list == &nodal;
@@ -392,78 +398,48 @@ void ExodusWriter::write_step(double time, std::span<const FieldView> nodal, std
     m.nodal_fields = ns;
     m.element_fields = es;
     m.fields_fixed = true;
-    if (m.root) m.component.resize(static_cast<std::size_t>(std::max(m.nodes, m.elements)));
+    m.component.resize(static_cast<std::size_t>(std::max(m.nodes, m.elements)));
   } else if (ns != m.nodal_fields || es != m.element_fields) {
     throw std::invalid_argument("ExodusWriter: every step must carry the first step's fields");
   }
-  if (m.steps > 0 && m.root && !(time > m.last_time))
+  if (m.steps > 0 && !(time > m.last_time))
     throw std::invalid_argument("ExodusWriter: time " + std::to_string(time) + " does not follow the last step's");
 
-  if (m.parallel) {
-    // One gather of this rank's rows of every field, then rank 0 puts them in global order.
-    int nodal_width = 0, element_width = 0;
-    for (const auto& f : ns) nodal_width += f.components;
-    for (const auto& f : es) element_width += f.components;
-    m.send.clear();
-    for (const auto& f : nodal) m.send.insert(m.send.end(), f.values.begin(), f.values.end());
-    for (const auto& f : element) m.send.insert(m.send.end(), f.values.begin(), f.values.end());
-    if (m.root) {
-      const int ranks = static_cast<int>(m.rank_node_rows.size());
-      m.counts.assign(static_cast<std::size_t>(ranks), 0);
-      m.displs.assign(static_cast<std::size_t>(ranks), 0);
-      for (int r = 0; r < ranks; ++r) {
-        m.counts[r] = m.rank_node_rows[r] * nodal_width + m.rank_element_rows[r] * element_width;
-        if (r > 0) m.displs[r] = m.displs[r - 1] + m.counts[r - 1];
-      }
-      m.receive.resize(static_cast<std::size_t>(m.displs.back() + m.counts.back()));
-      m.whole.resize(static_cast<std::size_t>(m.nodes) * nodal_width + static_cast<std::size_t>(m.elements) * element_width);
+  if (m.spread) {
+    // The owned rows as given, the other nodes' rows from their owners (collective); rank 0's globals.
+    m.spread_views.clear();
+    m.spread_rows.resize(std::max(m.spread_rows.size(), nodal.size()));
+    for (std::size_t f = 0; f < nodal.size(); ++f) {
+      m.shared->fill(nodal[f].values.data(), nodal[f].components, m.spread_rows[f]);
+      m.spread_views.push_back({nodal[f].name, nodal[f].components, m.spread_rows[f], nodal[f].unit});
     }
-    MPI_Gatherv(m.send.data(), static_cast<int>(m.send.size()), MPI_DOUBLE, m.receive.data(), m.counts.data(),
-                m.displs.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-    if (m.root) {
-      // Rank r's segment: its nodal fields (rows x components each), then its element fields.
-      std::size_t node_pos = 0, element_pos = 0;
-      for (std::size_t r = 0; r < m.rank_node_rows.size(); ++r) {
-        const double* seg = m.receive.data() + m.displs[r];
-        std::size_t field_base = 0;  // into `whole`
-        // The segment's rows of each field (rows x components) to their global rows in `whole`.
-        const auto unpack = [&](const auto& fields, int rows, const std::vector<int>& global_row, std::size_t first,
-                                int entities) {
-          for (const auto& f : fields) {
-            const auto c = static_cast<std::size_t>(f.components);
-            for (int i = 0; i < rows; ++i)
-              std::copy_n(seg + c * i, c, m.whole.data() + field_base + c * global_row[first + i]);
-            seg += c * rows;
-            field_base += c * entities;
-          }
-        };
-        unpack(ns, m.rank_node_rows[r], m.gathered_node_row, node_pos, m.nodes);
-        unpack(es, m.rank_element_rows[r], m.gathered_element_row, element_pos, m.elements);
-        node_pos += m.rank_node_rows[r];
-        element_pos += m.rank_element_rows[r];
-      }
-    }
+    m.spread_globals.assign(globals.begin(), globals.end());
+    if (!m.spread_globals.empty())
+      MPI_Bcast(m.spread_globals.data(), static_cast<int>(m.spread_globals.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   }
-
+  if (!m.spread) {
+    m.write(time, nodal, element, globals);
+    return;
+  }
   std::string failure;
-  if (m.root) {
-    try {
-      m.write(time, nodal, element, globals);
-    } catch (const OutputError& e) {
-      failure = e.what();
+  try {
+    m.write(time, m.spread_views, element, m.spread_globals);
+  } catch (const OutputError& e) {
+    failure = e.what();
+  }
+  {
+    // Each rank writes its own file: the lowest rank that failed says why, on every rank.
+    int first = failure.empty() ? m.domain->ranks : m.domain->rank;
+    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first < m.domain->ranks) {
+      parallel::broadcast(failure, first);
+      throw OutputError(failure);
     }
   }
-  if (m.parallel) {
-    int failed = failure.empty() ? 0 : 1;
-    parallel::broadcast(&failed, 1, 0);
-    if (failed) parallel::broadcast(failure, 0);
-    if (!failed) m.steps += m.root ? 0 : 1;  // rank 0 counted in write()
-  }
-  if (!failure.empty()) throw OutputError(failure);
 }
 
 void ExodusWriter::flush() {
-  if (impl_->root && impl_->exo >= 0 && ex_update(impl_->exo) < 0)
+  if (impl_->exo >= 0 && ex_update(impl_->exo) < 0)
     throw OutputError("cannot flush '" + impl_->path + "'; check the disk space");
 }
 

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "solver/output/mesh_outline.hpp"
 #include "solver/output/results_writer.hpp"
+#include "solver/parallel/domain.hpp"
 
 namespace tribex::solver {
 
@@ -20,21 +22,27 @@ namespace tribex::solver {
 /// global variables. 64-bit-offset netCDF (no HDF5 inside). ex_update after every step, so a
 /// killed run leaves every completed step readable.
 ///
-/// Parallel runs: every rank constructs it with the whole mesh and its slab and calls write_step
-/// (collective); the values are gathered to rank 0 (MPI_Gatherv), which alone writes the file.
+/// Parallel runs: one file per rank (the rank-part constructor: each rank writes its part to
+/// DIR/results.exo.N.r, joined by `tribex join`; README.md "Exodus II output", "Parallel: one file per
+/// rank"); every rank calls write_step (collective). No rank gathers a field.
 class ExodusWriter {
  public:
+  /// A parallel run's rank: `local` its elements and the nodes they use (local numbering, as `domain`
+  /// numbers them), `outline` the whole mesh's counts, blocks and resolved length unit. Collective.
+  /// Each rank creates (or, resumed, rewrites as below) DIR/results.exo.N.r; a SetupError is this
+  /// rank's alone (the caller agrees on errors afterwards).
+  ExodusWriter(const std::string& directory, const mesh::Mesh& local, const parallel::Domain& domain,
+               const output::MeshOutline& outline, std::vector<std::string> global_names,
+               std::optional<double> resume_time = std::nullopt);
   /// global_names: the global variables written with every step (same order as the values).
   /// Creates DIR and the file (truncating an old one); SetupError (one line, path and reason) when
   /// it cannot. resume_time (a restarted run, s): an existing DIR/results.exo of this mesh is
   /// rewritten with its steps before that time (SetupError if it is another mesh's file).
-  /// Collective in a parallel run, but only rank 0 touches files and can throw; the caller
-  /// agrees on errors afterwards. length_unit: m, um, nm or auto (as results.h5's, output/length_unit.hpp):
+  /// One rank (the whole mesh). length_unit: m, um, nm or auto (as results.h5's, output/length_unit.hpp):
   /// the coordinates and every field given in "m" are written in it, named in the info records; a
   /// resumed file keeps its own.
   ExodusWriter(const std::string& directory, const mesh::Mesh& mesh, std::vector<std::string> global_names,
-               const ResultsSlab* slab = nullptr, std::optional<double> resume_time = std::nullopt,
-               const std::string& length_unit = "m");
+               std::optional<double> resume_time = std::nullopt, const std::string& length_unit = "m");
   ~ExodusWriter();  // closes; the file stays valid
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;
@@ -45,7 +53,7 @@ class ExodusWriter {
   void write_step(double time, std::span<const FieldView> nodal, std::span<const FieldView> element,
                   std::span<const double> globals);
 
-  /// ex_update (rank 0). write_step already does it.
+  /// ex_update. write_step already does it.
   void flush();
 
   int step_count() const;

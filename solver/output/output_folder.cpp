@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "solver/errors.hpp"
+#include "solver/output/exodus_rank_file.hpp"
 
 namespace tribex::solver {
 namespace fs = std::filesystem;
@@ -144,10 +145,14 @@ void refuse(const FolderRequest& r, const Survey& s) {
 
 }  // namespace
 
-std::vector<std::string> planned_output_names(bool xdmf, bool exodus, int ring_size) {
+std::vector<std::string> planned_output_names(bool xdmf, bool exodus, int ring_size, int ranks) {
   std::vector<std::string> names = {"log.txt", "history.csv", "history_columns.csv", "summary.json", "summary.json.tmp"};
   if (xdmf) names.insert(names.end(), {"results.h5", "results.xdmf", "results.xdmf.tmp"});
-  if (exodus) names.insert(names.end(), {"results.exo", ".results.exo.partial"});
+  if (exodus && ranks == 1) names.insert(names.end(), {"results.exo", ".results.exo.partial"});
+  for (int r = 0; exodus && ranks > 1 && r < ranks; ++r) {  // one file per rank and its restart rewrite's copy
+    const std::string name = output::rank_file_name(ranks, r);
+    names.insert(names.end(), {name, "." + name + ".partial"});
+  }
   for (int k = 0; k < ring_size; ++k) {
     names.push_back("restart_" + std::to_string(k) + ".h5");
     names.push_back("restart_" + std::to_string(k) + ".h5.part");

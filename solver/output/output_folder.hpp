@@ -38,7 +38,8 @@ struct FolderClaim {
 /// The files a run writes into its folder: log.txt, history.csv, history_columns.csv, summary.json
 /// (+ .tmp); results.h5 + results.xdmf (+ .tmp) when `xdmf`; results.exo (+ .results.exo.partial)
 /// when `exodus`; restart_K.h5 (+ .part) for K < ring_size, restart.h5 (+ .link) when ring_size > 0.
-std::vector<std::string> planned_output_names(bool xdmf, bool exodus, int ring_size);
+/// `ranks` > 1 with exodus: the per-rank files results.exo.N.r (and their rewrite copies) in place of results.exo.
+std::vector<std::string> planned_output_names(bool xdmf, bool exodus, int ring_size, int ranks = 1);
 
 /// Every check first, then the changes (README.md "The output folder"): path lengths (PATH_MAX,
 /// NAME_MAX) and free file descriptors; the folder made if missing; the lock; the earlier manifest

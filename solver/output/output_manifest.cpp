@@ -200,7 +200,7 @@ bool written_by_run(const std::filesystem::path& folder, const ManifestEntry& en
   struct stat st{};
   if (lstat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return false;
   const std::string& n = entry.name;
-  if (ends_with(n, ".tmp") || ends_with(n, ".part") || ends_with(n, ".link") || n == ".results.exo.partial" ||
+  if (ends_with(n, ".tmp") || ends_with(n, ".part") || ends_with(n, ".link") || (n.starts_with(".results.exo") && ends_with(n, ".partial")) ||
       n == "results.xdmf")
     return true;
   if (n == "results.h5" || is_restart_file(n)) return h5_run_id(file.string()) == run_id;

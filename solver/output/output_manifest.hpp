@@ -44,8 +44,8 @@ OutputManifest parse_manifest(const std::string& text, const std::string& where)
 /// Is `folder/entry.name` still the file the run `run_id` wrote? A regular file only (a symbolic
 /// link, FIFO, device or folder never is; links are not followed), and: results.h5 and restart
 /// files carry the run id as an HDF5 attribute `run_id`, summary.json as its key `run_id`, log.txt
-/// in its first line; history.csv, history_columns.csv and results.exo must be the recorded inode;
-/// the temporaries (*.tmp, *.part, *.link, .results.exo.partial) and results.xdmf go by name.
+/// in its first line; history.csv, history_columns.csv, results.exo and results.exo.N.r must be the
+/// recorded inode; the temporaries (*.tmp, *.part, *.link, .results.exo[.N.r].partial) and results.xdmf go by name.
 bool written_by_run(const std::filesystem::path& folder, const ManifestEntry& entry, const std::string& run_id);
 
 /// A new run id: 128 random bits as 32 hex digits.

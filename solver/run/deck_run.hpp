@@ -155,8 +155,7 @@ class DeckRun {
   double est_steps_ = 0.0;
   int elements_ = 0;
   std::optional<Model> model_;
-  std::optional<mesh::Mesh> whole_mesh_;  // parallel runs with results.exo, rank 0: kept until its writer holds it
-  std::optional<output::MeshOutline> results_outline_;  // parallel runs with results.h5: the whole mesh's outline
+  std::optional<output::MeshOutline> results_outline_;  // parallel runs with results output: the whole mesh's outline
   std::map<std::string, double> set_size_;  // node-set sizes of the whole mesh
   std::string mesh_hash_;                   // of the whole mesh (restart files)
   std::string restart_run_id_;              // rank 0: the run id the restart file carries ("" none or legacy)

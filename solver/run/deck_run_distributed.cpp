@@ -167,10 +167,7 @@ bool DeckRun::build_parts_distributed() {
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
   std::string why;
   std::unique_ptr<parallel::ElementSource> source;
-  if (region_.results && region_.results->exodus)  // decided before any rank reads a slice of a mesh file
-    why = "results.exo is written by rank 0 from the whole mesh";
-  else
-    source = element_source(deck_, why);
+  source = element_source(deck_, why);
   ContactFaces contact;
   std::optional<ContactTravel> travel;
   parallel::AxisScale scale = parallel::kUnitScale;
@@ -259,7 +256,7 @@ void DeckRun::finish_distributed_parts(const parallel::ElementSource& source, pa
   parallel::broadcast(mesh_hash_, 0);
   report_distributed_partition(g.part, g.shared_nodes, scale, travel, seconds,
                                plan ? "generated a slab of the elements" : "read a slab of the elements from the file");
-  if (region_.results && region_.results->xdmf) {
+  if (region_.results) {
     output::MeshOutline o;
     o.nodes = source.node_count();
     o.elements = source.element_count();

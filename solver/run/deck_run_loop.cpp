@@ -305,8 +305,12 @@ void DeckRun::close_log_lines() {
   else if (summary.first_step > 0)
     log_.say(format("resumed at step %ld: the whole run's time is unknown (an earlier segment's restart file did not "
                     "record it; add the segments' wall times in log.txt)", summary.first_step));
+  const std::string exodus_files = !exodus_ ? "" : ranks_ == 1 ? ",results.exo" : format(",results.exo.%d.*", ranks_);
   log_.say(format("outputs: %s/{history.csv,summary.json,log.txt%s%s}", out_.string().c_str(),
-                  results_ ? ",results.h5,results.xdmf" : "", exodus_ ? ",results.exo" : ""));
+                  results_ ? ",results.h5,results.xdmf" : "", exodus_files.c_str()));
+  if (exodus_ && ranks_ > 1)  // one Exodus file per rank (output/README.md "Exodus II output")
+    log_.say(format("results.exo: one file per rank, which ParaView opens as one data set (open results.exo.%d.0); "
+                    "`tribex join %s` writes the one results.exo", ranks_, out_.string().c_str()));
   if (model_->contact) {
     const double segment_contact_seconds = summary.contact_seconds - contact_seconds_before_;
     log_.say(format("contact: %.3g s of the loop (%.1f %%), %ld broad-phase searches", segment_contact_seconds,

@@ -81,8 +81,8 @@ void DeckRun::preflight() {
 
 void DeckRun::build_parts() {
   // Rank 0 reads or generates the whole mesh, checks and partitions it (with `method = ptscotch` all
-  // the ranks partition it together), and sends every rank its part; it keeps the whole mesh only
-  // until results.h5 holds it (open_results). With `set-up = distributed` every rank makes its own part
+  // the ranks partition it together), and sends every rank its part, then frees the whole mesh (the
+  // results writers need only its outline). With `set-up = distributed` every rank makes its own part
   // of a generated mesh instead (deck_run_distributed.cpp).
   if (region_.decomposition.distributed_setup && build_parts_distributed()) return;
   std::optional<mesh::Mesh> whole;
@@ -153,12 +153,9 @@ void DeckRun::build_parts() {
   holders = {};
   part = {};
   if (region_.contact) broadcast_contact_faces(contact);
-  // results.h5's writer needs only the whole mesh's outline (counts, blocks, length unit: broadcast
-  // from rank 0 now, collective); each rank writes its own mesh rows. Only results.exo, written by rank
-  // 0 alone, keeps the whole mesh until its writer has it (open_results).
-  if (region_.results && region_.results->xdmf)
-    results_outline_ = output::outline_of(whole ? *whole : mesh::Mesh{}, region_.results->length_unit, true);
-  if (whole && region_.results && region_.results->exodus) whole_mesh_ = std::move(*whole);
+  // The results writers need only the whole mesh's outline (counts, blocks, length unit: broadcast
+  // from rank 0 now, collective); each rank writes its own mesh rows (results.h5) or file (results.exo.N.r).
+  if (region_.results) results_outline_ = output::outline_of(whole ? *whole : mesh::Mesh{}, region_.results->length_unit, true);
   whole.reset();
   for (const auto& [name, size] : mine.node_set_size) set_size_[name] = double(size);
   model_.emplace(build_model(deck_, std::move(mine), contact));
@@ -300,7 +297,7 @@ void DeckRun::claim_output_folder() {
       FolderRequest r;
       r.folder = out_;
       r.names = planned_output_names(region_.results && region_.results->xdmf, region_.results && region_.results->exodus,
-                                     region_.restart ? region_.restart->ring_size : 0);
+                                     region_.restart ? region_.restart->ring_size : 0, ranks_);
       r.inputs = deck_input_files();
       const RunIdentity& id = summary_.identity;
       r.identity = OutputManifest{id.run_id, id.deck_path, id.deck_sha256, mesh_hash_, id.started_utc, id.host, {}};
@@ -439,7 +436,8 @@ ResultsMeshRows DeckRun::results_mesh_rows() const {
 void DeckRun::open_results() {
   // results.h5: in a parallel run every rank writes the rows of its owned nodes and its elements
   // (runs of consecutive global rows) collectively with parallel HDF5, the mesh included: no rank needs
-  // the whole mesh. results.exo: the same rows gathered to rank 0, which writes the file.
+  // the whole mesh. results.exo: each rank its own file results.exo.N.r (its elements and the nodes they
+  // use, joined by `tribex join`); one rank writes results.exo itself.
   if (!region_.results) return;
   const auto& domain = model_->domain;
   if (model_->contact) {
@@ -461,8 +459,8 @@ void DeckRun::open_results() {
   std::exception_ptr error;
   try {
     // A restarted run continues the folder's results.h5 (the steps up to the restart time stay) and
-    // rewrites its results.exo with the steps before the restart time.
-    const mesh::Mesh& mesh = whole_mesh_ ? *whole_mesh_ : model_->mesh;
+    // rewrites its results.exo (in parallel each rank its results.exo.N.r) with the steps before the restart time.
+    const mesh::Mesh& mesh = model_->mesh;
     const auto resume_time = resume_ ? std::optional<double>(integrator_->time()) : std::nullopt;
     const ResultsOptions options{region_.results->length_unit, 1, summary_.identity.run_id, mesh_hash_};
     if (region_.results->xdmf && ranks_ > 1)
@@ -473,13 +471,16 @@ void DeckRun::open_results() {
     if (region_.results->exodus) {
       std::vector<std::string> globals;  // the history columns, `step` first
       for (const auto& c : history_columns_) globals.push_back(c.name);
-      exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, std::move(globals), ranks_ > 1 ? &slab_ : nullptr,
-                                               resume_time, region_.results->length_unit);
+      if (ranks_ > 1)
+        exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, model_->domain, *results_outline_, std::move(globals),
+                                                 resume_time);
+      else
+        exodus_ = std::make_unique<ExodusWriter>(out_.string(), mesh, std::move(globals), resume_time,
+                                                 region_.results->length_unit);
     }
   } catch (...) {
     error = std::current_exception();
   }
-  whole_mesh_.reset();
   agree_on_errors(error);
   field_schedule_.emplace(region_.results->time_increment, region_.results->step_increment, tc_.start_time);
 }

@@ -4,7 +4,8 @@
 (netCDF4 and h5py).
 
   check_exodus.py fields TRIBEX DECK OUT [--ranks N]
-      runs DECK (format = both) on N ranks, then reads results.exo with netCDF4 and results.h5 with
+      runs DECK (format = both) on N ranks (N > 1: then `tribex join OUT` joins the per-rank results.exo.N.r
+      into results.exo), then reads results.exo with netCDF4 and results.h5 with
       h5py: the length unit named in results.exo's info records ("tribex length unit: nm") equal to
       results.h5's `length_unit`; same coordinates (both in that unit, to 1e-12) and connectivity (exactly), block names equal to results.h5's, the
       node and side sets of the generated boxes present and on the right faces; every Exodus time
@@ -13,7 +14,7 @@
       at that step within 1e-12 relative. Prints the largest differences.
   check_exodus.py restart TRIBEX DECK OUT --stop STEP [--ranks N]
       uninterrupted run, then a run stopped after STEP and resumed into the same folder: the resumed
-      results.exo (rewritten with the steps before the restart time, then continued) holds the same
+      results.exo (N > 1: each rank's results.exo.N.r, then joined; rewritten with the steps before the restart time, then continued) holds the same
       times and bitwise the same values as the uninterrupted one.
   check_exodus.py mesh TRIBEX DECK OUT
       runs DECK (generated boxes) with `length unit = m`, then the same deck on its results.exo as
@@ -74,10 +75,21 @@ def h5_component(group, exo_name):
     return None
 
 
+def joined(tribex, out, ranks):
+    """OUT/results.exo: a parallel run writes OUT/results.exo.N.r, which `tribex join OUT` joins into it."""
+    if ranks > 1:
+        p = subprocess.run([tribex, "join", out], capture_output=True, text=True)
+        if p.returncode != 0:
+            sys.exit(f"FAIL: tribex join {out} exited {p.returncode}\n{p.stdout}{p.stderr}")
+        print(p.stdout.strip())
+    return os.path.join(out, "results.exo")
+
+
 def fields(a):
     out = a.out
     shutil.rmtree(out, ignore_errors=True)
     run(a.tribex, a.deck, out, a.ranks)
+    joined(a.tribex, out, a.ranks)
     exo = netCDF4.Dataset(os.path.join(out, "results.exo"))
     h5 = h5py.File(os.path.join(out, "results.h5"), "r")
     fmt = exo.data_model
@@ -182,9 +194,11 @@ def all_values(path):
 
 def restart(a):
     full, stopped = full_and_stopped(a.tribex, a.deck, a.out, a.ranks, a.stop, "stopped")
-    before = len(all_values(os.path.join(stopped, "results.exo"))["time_whole"])
+    first = "results.exo" if a.ranks == 1 else f"results.exo.{a.ranks}.{0:0{len(str(a.ranks))}d}"
+    before = len(all_values(os.path.join(stopped, first))["time_whole"])
     run(a.tribex, a.deck, stopped, a.ranks, "--restart", os.path.join(stopped, "restart.h5"))
-    want, got = all_values(os.path.join(full, "results.exo")), all_values(os.path.join(stopped, "results.exo"))
+    # In parallel each rank's file is rewritten and continued; the joined files must then be equal.
+    want, got = all_values(joined(a.tribex, full, a.ranks)), all_values(joined(a.tribex, stopped, a.ranks))
     if sorted(want) != sorted(got):
         sys.exit(f"FAIL: variables differ: {sorted(set(want) ^ set(got))}")
     for k in want:

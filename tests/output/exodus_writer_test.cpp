@@ -178,7 +178,7 @@ TEST(ExodusWriter, ResumedRunKeepsTheStepsBeforeItsRestartTime) {
     for (double t : {0.0, 0.25, 0.5, 0.75}) write_sample_step(w, mesh, t);
   }
   {
-    ExodusWriter w(dir.string(), mesh, global_names, nullptr, 0.5);  // restart at t = 0.5
+    ExodusWriter w(dir.string(), mesh, global_names, 0.5);  // restart at t = 0.5
     EXPECT_EQ(w.step_count(), 2);
     write_sample_step(w, mesh, 0.5);
   }
@@ -191,7 +191,7 @@ TEST(ExodusWriter, ResumedRunKeepsTheStepsBeforeItsRestartTime) {
   EXPECT_FALSE(fs::exists(dir / ".results.exo.partial"));
   // Another mesh's file is refused and left alone.
   const auto size = fs::file_size(dir / "results.exo");
-  EXPECT_THROW(ExodusWriter(dir.string(), make_hand_box(3, 1, 2), global_names, nullptr, 0.5), SetupError);
+  EXPECT_THROW(ExodusWriter(dir.string(), make_hand_box(3, 1, 2), global_names, 0.5), SetupError);
   EXPECT_EQ(fs::file_size(dir / "results.exo"), size);
   fs::remove_all(dir);
 }

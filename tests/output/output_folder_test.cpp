@@ -9,6 +9,7 @@
 #include <set>
 
 #include "solver/errors.hpp"
+#include "solver/output/exodus_rank_file.hpp"
 #include "solver/output/output_folder.hpp"
 
 namespace fs = std::filesystem;
@@ -129,4 +130,27 @@ TEST(OutputFolder, ARefusedClaimLeavesTheFolderAsItWas) {
   EXPECT_THROW(claim_output_folder(r), SetupError);
   r.folder = d / "fresh";
   EXPECT_NO_THROW(claim_output_folder(r));  // into a new folder: new files
+}
+
+// A parallel run with results.exo plans one file per rank (and its restart rewrite's copy), named as epu and
+// nem_spread name them, in place of results.exo; the copies go by name as the run's temporaries.
+TEST(OutputFolder, ParallelExodusPlansOneFilePerRank) {
+  EXPECT_EQ(output::rank_file_name(16, 3), "results.exo.16.03");
+  EXPECT_EQ(output::rank_file_name(2, 1), "results.exo.2.1");
+  EXPECT_EQ(output::rank_file_name(100, 7), "results.exo.100.007");
+  const auto serial = planned_output_names(false, true, 0, 1);
+  const auto parallel = planned_output_names(false, true, 0, 4);
+  const std::set<std::string> s(serial.begin(), serial.end()), p(parallel.begin(), parallel.end());
+  EXPECT_TRUE(s.count("results.exo") && s.count(".results.exo.partial"));
+  EXPECT_FALSE(p.count("results.exo"));
+  for (int r = 0; r < 4; ++r) {
+    EXPECT_TRUE(p.count("results.exo.4." + std::to_string(r))) << r;
+    EXPECT_TRUE(p.count(".results.exo.4." + std::to_string(r) + ".partial")) << r;
+  }
+  EXPECT_EQ(parallel.size(), serial.size() + 6);  // 4 files and 4 copies for 1 and 1
+  const fs::path dir = fs::temp_directory_path() / ("tribex_plan_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / ".results.exo.4.2.partial") << "x";
+  EXPECT_TRUE(written_by_run(dir, {".results.exo.4.2.partial", 0, 0}, "any"));
+  fs::remove_all(dir);
 }

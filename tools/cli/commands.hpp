@@ -23,6 +23,8 @@ int friction_test_command(const std::vector<std::string>& args);
 int fit_command(const std::vector<std::string>& args);
 /// tools/mesh/mesh_command.cpp: `tribex mesh afm FILE ... -o MESH.msh`.
 int mesh_command(const std::vector<std::string>& args);
+/// tools/join/join_command.cpp: `tribex join OUT`: a parallel run's results.exo.N.r joined into results.exo.
+int join_command(const std::vector<std::string>& args);
 /// tools/layered/layered_command.cpp: `tribex layered`: sphere on bonded elastic layers (Hankel-space kernel).
 int layered_command(const std::vector<std::string>& args);
 /// tools/adhesion/adhesion_command.cpp: `tribex adhesion-curve`: Lennard-Jones sphere-flat reference (both branches).

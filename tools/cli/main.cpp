@@ -40,6 +40,7 @@ const std::vector<Command> commands = {
     {"layered", "sphere on bonded elastic layers: a, delta, f against P~ and A, b (continuum reference)", tribex::cli::layered_command},
     {"adhesion-curve", "Lennard-Jones sphere on a flat: load-approach curve, pull-off, jump-in/out (reference)", tribex::cli::adhesion_curve_command},
     {"mesh", "mesh generators (.msh): tribex mesh afm FILE --window ... -o MESH.msh", tribex::cli::mesh_command},
+    {"join", "a parallel run's per-rank results.exo.N.r joined into OUT/results.exo: tribex join OUT", tribex::cli::join_command},
 };
 
 void print_usage(std::FILE* to) {

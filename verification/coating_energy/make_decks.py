@@ -22,6 +22,8 @@ from deck_templates import (block_parameters, elastic_material, fixed_displaceme
 HEADER = """# {title}
 # Written by verification/coating_energy/make_decks.py; checked by compare.py (max |energy_error| <= 0.5 %).
 # Drive: push {depth} nm at {speed} m/s, hold 10 ps, withdraw to {pull} nm above the start by {t3:g} ps.
+# END: the termination time; CI stops the coarse decks 20-35 ps after the last contact (README.md).
+{{END = {t3:g} ps}}
 begin sierra {name}"""
 
 MODEL = """  begin finite element model asperity
@@ -39,7 +41,7 @@ MODEL = """  begin finite element model asperity
 
 REGION = """  begin presto procedure indent
     begin time control
-      termination time = {t3:g} ps
+      termination time = {{END}}
     end time control
     begin presto region main
       use finite element model asperity

@@ -21,9 +21,10 @@ friction, the FE contact radius sqrt(A/pi) and the DMT radius of a 50 nm sphere 
 load (a reference only for case (a): the AFM surface is curved and tilted under the tip).
 
 usage: afm_sliding.py [--tribex build/bin/tribex] [--variant reduced|full] [--out DIR] [--plot PNG]
-                      [--no-run] [--case a_si|b_sam] [--mass-scaled] [--against DIR]
+                      [--no-run] [--case a_si|b_sam] [--mass-scaled] [--against DIR] [--set NAME=VALUE ...]
   (--no-run: check outputs already in DIR/<deck>_output; --case: only that case; --mass-scaled: the
-  *_mass_scaled.i decks; --against: P, F and sqrt(A/pi) within 1 % of the unscaled outputs in DIR)
+  *_mass_scaled.i decks; --against: P, F and sqrt(A/pi) within 1 % of the unscaled outputs in DIR;
+  --set: passed to tribex run, e.g. --set "END=360 ps" stops the reduced decks at 1.5 nm of sliding)
 """
 import argparse
 import json
@@ -174,6 +175,9 @@ def main():
     ap.add_argument("--out", default="afm_sliding_output")
     ap.add_argument("--plot", help="PNG: friction force and contact radius versus sliding position (Fig. 3.9)")
     ap.add_argument("--no-run", action="store_true", help="only check the outputs already in --out")
+    ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                    help="passed to every `tribex run` (repeatable): e.g. --set \"END=360 ps\", the decks' termination "
+                         "time (CI: 1.5 nm of sliding, README.md)")
     ap.add_argument("--case", choices=[c[0] for c in CASES], help="only this case (a full case runs for hours)")
     ap.add_argument("--mass-scaled", action="store_true",
                     help="run the *_mass_scaled.i decks (make_decks.py --mass-scaling F writes them)")
@@ -192,7 +196,8 @@ def main():
         name = f"afm_sliding_{a.variant}_{case}" + ("_mass_scaled" if a.mass_scaled else "")
         folder = os.path.join(a.out, name + "_output")
         if not a.no_run:
-            subprocess.run([a.tribex, "run", os.path.join(HERE, name + ".i"), "-o", folder, "--quiet"], check=True)
+            sets = [arg for value in a.set for arg in ("--set", value)]
+            subprocess.run([a.tribex, "run", os.path.join(HERE, name + ".i"), "-o", folder, "--quiet", *sets], check=True)
         res, fail = check_case(folder, label, tau, os.path.join(HERE, name + ".i"))
         failures += fail
         if res:

@@ -14,6 +14,8 @@
 # boundaries on the four sides (absorb the waves of the load and the sliding).
 # Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
 # stiffness); the check is kinetic / internal energy at the end of the hold (afm_sliding.py).
+# END: the termination time; CI stops the reduced decks at 1.5 nm of sliding (afm_sliding.py --set, README.md).
+{END = 1400.0 ps}
 begin sierra afm_sliding_reduced_b_sam_mass_scaled
   begin function load
     type = piecewise linear
@@ -143,7 +145,7 @@ begin sierra afm_sliding_reduced_b_sam_mass_scaled
 
   begin presto procedure press_and_slide
     begin time control
-      termination time = 1400.0 ps
+      termination time = {END}
     end time control
     begin presto region main
       use finite element model afm_track

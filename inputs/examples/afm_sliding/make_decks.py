@@ -116,6 +116,8 @@ TEMPLATE = """\
 # boundaries on the four sides (absorb the waves of the load and the sliding).
 # Quasi-static: mass damping 5e11 1/s (about half critical for the tip bouncing on the contact
 # stiffness); the check is kinetic / internal energy at the end of the hold (afm_sliding.py).
+# END: the termination time; CI stops the reduced decks at 1.5 nm of sliding (afm_sliding.py --set, README.md).
+{{END = {t_end:.1f} ps}}
 begin sierra {name}
 {load_function}
 {slide_function}
@@ -152,7 +154,7 @@ begin sierra {name}
 
   begin presto procedure press_and_slide
     begin time control
-      termination time = {t_end:.1f} ps
+      termination time = {{END}}
     end time control
     begin presto region main
       use finite element model afm_track
