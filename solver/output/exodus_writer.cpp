@@ -153,6 +153,17 @@ struct ExodusWriter::Impl {
   }
 
   bool open_for_resume(const mesh::Mesh& mesh, double resume_time);
+  // The folder made if missing, then the file continued (a resumed run whose file has its steps) or created.
+  void open(const mesh::Mesh& mesh, std::optional<double> resume_time) {
+    std::error_code ec;
+    std::filesystem::create_directories(directory, ec);
+    if (ec || !std::filesystem::is_directory(directory))
+      throw SetupError("cannot create output directory '" + directory + "': " +
+                       (ec ? ec.message() : std::string("a file of that name exists")) +
+                       "; choose another output directory or fix its permissions");
+    if (resume_time && open_for_resume(mesh, *resume_time)) return;
+    create(mesh);
+  }
   void write(double time, std::span<const FieldView> nodal, std::span<const FieldView> element,
              std::span<const double> globals);
 };
@@ -288,14 +299,7 @@ ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& mesh,
     m.blocks.push_back({static_cast<int>(b + 1), sorted[b]->first_element, sorted[b]->element_count});
 
 
-  std::error_code ec;
-  std::filesystem::create_directories(directory, ec);
-  if (ec || !std::filesystem::is_directory(directory))
-    throw SetupError("cannot create output directory '" + directory + "': " +
-                     (ec ? ec.message() : std::string("a file of that name exists")) +
-                     "; choose another output directory or fix its permissions");
-  if (resume_time && m.open_for_resume(mesh, *resume_time)) return;
-  m.create(mesh);
+  m.open(mesh, resume_time);
 }
 
 ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& local, const parallel::Domain& domain,
@@ -320,14 +324,7 @@ ExodusWriter::ExodusWriter(const std::string& directory, const mesh::Mesh& local
   m.element_rows = m.elements;
   for (std::size_t b = 0; b < m.file_mesh.blocks.size(); ++b)
     m.blocks.push_back({static_cast<int>(b + 1), m.file_mesh.blocks[b].first_element, m.file_mesh.blocks[b].element_count});
-  std::error_code ec;
-  std::filesystem::create_directories(directory, ec);
-  if (ec || !std::filesystem::is_directory(directory))
-    throw SetupError("cannot create output directory '" + directory + "': " +
-                     (ec ? ec.message() : std::string("a file of that name exists")) +
-                     "; choose another output directory or fix its permissions");
-  if (resume_time && m.open_for_resume(m.file_mesh, *resume_time)) return;
-  m.create(m.file_mesh);
+  m.open(m.file_mesh, resume_time);
 }
 
 ExodusWriter::~ExodusWriter() = default;

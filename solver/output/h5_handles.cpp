@@ -42,8 +42,7 @@ H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsi
     // Whole rows per chunk, 64 Ki values (512 KiB of f64): under HDF5's default 1 MiB chunk cache,
     // large enough for deflate to find the repeats. Shuffle groups the bytes of equal significance
     // (the exponents of neighbouring values agree), which is what makes float64 compress at all.
-    const hsize_t width = std::max<hsize_t>(cols, 1);
-    const hsize_t chunk[2] = {std::clamp<hsize_t>(65536 / width, 1, rows), cols};
+    const hsize_t chunk[2] = {chunk_rows(rows, cols), cols};
     if (H5Pset_chunk(dcpl.get(), rank, chunk) < 0 || H5Pset_shuffle(dcpl.get()) < 0 ||
         H5Pset_deflate(dcpl.get(), static_cast<unsigned>(gzip_level)) < 0)
       fail(file, "prepare compressed dataset '" + name + "'");
@@ -77,27 +76,25 @@ void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_off
     fail(what, "write");
 }
 
-RowSelection select_row_runs(hsize_t rows, hsize_t cols, const std::vector<std::array<hsize_t, 2>>& runs,
-                             const std::string& what) {
+hsize_t chunk_rows(hsize_t rows, hsize_t cols) {
+  return std::clamp<hsize_t>(65536 / std::max<hsize_t>(cols, 1), 1, std::max<hsize_t>(rows, 1));
+}
+
+RowSelection select_row_block(hsize_t rows, hsize_t cols, hsize_t first, hsize_t count, const std::string& what) {
   const hsize_t width = std::max<hsize_t>(cols, 1);
-  hsize_t mine = 0;
-  for (const auto& r : runs) mine += r[1];
   const int rank = cols == 0 ? 1 : 2;
-  const hsize_t file_dims[2] = {rows, width}, mem_dims[2] = {std::max<hsize_t>(mine, 1), width};
+  const hsize_t file_dims[2] = {rows, width}, mem_dims[2] = {std::max<hsize_t>(count, 1), width};
   RowSelection s{H5Handle(H5Screate_simple(rank, file_dims, nullptr), H5Sclose),
                  H5Handle(H5Screate_simple(rank, mem_dims, nullptr), H5Sclose),
                  H5Handle(H5Pcreate(H5P_DATASET_XFER), H5Pclose)};
   if (!s.file_space.valid() || !s.mem_space.valid() || !s.dxpl.valid() ||
       H5Pset_dxpl_mpio(s.dxpl.get(), H5FD_MPIO_COLLECTIVE) < 0)
     fail(what, "prepare a collective write");
-  if (H5Sselect_none(s.file_space.get()) < 0) fail(what, "select no rows");
-  if (mine == 0 && H5Sselect_none(s.mem_space.get()) < 0) fail(what, "select no rows");
-  for (const auto& r : runs) {
-    if (r[1] == 0) continue;  // an empty run selects nothing (HDF5 refuses a zero count)
-    const hsize_t start[2] = {r[0], 0}, count[2] = {r[1], width};
-    if (H5Sselect_hyperslab(s.file_space.get(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
-      fail(what, "select rows");
-  }
+  const hsize_t start[2] = {first, 0}, block[2] = {count, width};
+  // An empty block selects nothing (HDF5 refuses a zero count) but the rank still takes part.
+  if (count == 0 ? (H5Sselect_none(s.file_space.get()) < 0 || H5Sselect_none(s.mem_space.get()) < 0)
+                 : H5Sselect_hyperslab(s.file_space.get(), H5S_SELECT_SET, start, nullptr, block, nullptr) < 0)
+    fail(what, "select rows");
   return s;
 }
 
@@ -107,14 +104,6 @@ void write_selected_rows(hid_t dataset, hid_t mem_type, const void* data, const 
   if (H5Dwrite(dataset, mem_type, selection.mem_space.get(), selection.file_space.get(), selection.dxpl.get(),
                data ? data : nothing) < 0)
     fail(what, "write");
-}
-
-void write_row_runs(hid_t dataset, hid_t mem_type, const void* data, const std::vector<std::array<hsize_t, 2>>& runs,
-                    hsize_t cols, const std::string& what) {
-  H5Handle space(H5Dget_space(dataset), H5Sclose);
-  hsize_t dims[2] = {0, 0};
-  if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0) fail(what, "read the shape");
-  write_selected_rows(dataset, mem_type, data, select_row_runs(dims[0], cols, runs, what), what);
 }
 
 void write_double_attribute(hid_t loc, const std::string& name, double value, const std::string& what) {

@@ -81,23 +81,20 @@ H5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type, hsi
 void write_rows(hid_t dataset, hid_t mem_type, const void* data, hsize_t row_offset, hsize_t rows,
                 hsize_t cols, const std::string& what);
 
-/// Parallel files (mpio driver): writes this rank's rows, given as runs {first row, row count}
-/// in ascending order, from a buffer holding those rows packed in run order, with a collective
-/// transfer. Every rank calls it for every dataset (a rank without rows selects none).
-void write_row_runs(hid_t dataset, hid_t mem_type, const void* data, const std::vector<std::array<hsize_t, 2>>& runs,
-                    hsize_t cols, const std::string& what);
+/// Rows per chunk of a compressed dataset of `rows` x `cols` (create_dataset): whole rows, about 64 Ki
+/// values. A parallel writer that gives every rank whole chunks (BlockPlan) splits at these rows.
+hsize_t chunk_rows(hsize_t rows, hsize_t cols);
 
-/// This rank's rows of a [rows][cols] dataset (cols 0: one-dimensional) as the file and memory
-/// dataspaces of a collective write, with its transfer list: built once at set-up from the runs
-/// (a union of hyperslabs, none for a rank without rows) and reused by every write of a dataset of
-/// that shape, so that an output step rebuilds no selection.
+/// A rank's block of consecutive rows [first, first + count) of a [rows][cols] dataset (cols 0:
+/// one-dimensional) as the file and memory dataspaces of a collective write, with its transfer list.
+/// One hyperslab of the same shape in file and memory: HDF5 maps it to chunks by the hyperslab's
+/// bounds (the fast path), where a union of scattered runs is mapped element by element.
 struct RowSelection {
   H5Handle file_space, mem_space, dxpl;
 };
-RowSelection select_row_runs(hsize_t rows, hsize_t cols, const std::vector<std::array<hsize_t, 2>>& runs,
-                             const std::string& what);
+RowSelection select_row_block(hsize_t rows, hsize_t cols, hsize_t first, hsize_t count, const std::string& what);
 
-/// Collective write of this rank's rows (packed in run order in `data`) through a RowSelection.
+/// Collective write of a block's rows (packed in `data`) through a RowSelection.
 void write_selected_rows(hid_t dataset, hid_t mem_type, const void* data, const RowSelection& selection,
                          const std::string& what);
 

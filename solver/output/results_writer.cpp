@@ -17,6 +17,7 @@
 #include "solver/output/h5_handles.hpp"
 #include "solver/output/length_unit.hpp"
 #include "solver/output/mesh_outline.hpp"
+#include "solver/output/row_blocks.hpp"
 #include "solver/output/xdmf_document.hpp"
 #include "solver/parallel/communicator.hpp"
 
@@ -76,6 +77,20 @@ std::vector<output::XdmfBlock> grid_ranges(const std::vector<mesh::Block>& mesh_
   return grids;
 }
 
+// The mpio driver with a 4 MiB collective buffer per aggregator (MPI-IO hint `cb_buffer_size`). Open MPI's
+// OMPIO (fcoll vulcan) otherwise holds 32 MiB on every aggregator rank in each collective write, rank 0 among
+// them: with the writes in blocks (row_blocks.hpp) that buffer was the largest single allocation of rank 0's
+// peak in a 64-rank run of the 4 M-element counts model (heaptrack: 33.6 MB in
+// mca_fcoll_vulcan_file_write_all). A hint changes how the bytes reach the file, not which bytes: more,
+// smaller write cycles per aggregator (docs/measurements/2026-11-29-output-memory.md).
+void set_collective_buffer(hid_t fapl) {
+  MPI_Info info = MPI_INFO_NULL;
+  MPI_Info_create(&info);
+  MPI_Info_set(info, "cb_buffer_size", "4194304");
+  H5Pset_fapl_mpio(fapl, MPI_COMM_WORLD, info);  // HDF5 keeps its own copy of the info
+  MPI_Info_free(&info);
+}
+
 }  // namespace
 
 struct ResultsWriter::Impl {
@@ -95,10 +110,12 @@ struct ResultsWriter::Impl {
   double last_time = 0.0;
   // Parallel: this rank's rows (runs) and whether it is rank 0.
   bool parallel = false, root = true;
-  std::vector<std::array<hsize_t, 2>> node_runs, element_runs;
   long long node_rows = 0, element_rows = 0;
-  // Parallel: the selections of this rank's rows, one per (nodal, columns), built at set-up for the
-  // shapes the fields have (1, 3, 9 columns) and reused by every step (selection()).
+  // Parallel: this rank's rows are exchanged into a block of consecutive rows before each write
+  // (row_blocks.hpp), one plan for the nodes and one for the elements, built at set-up; the selections of
+  // the block, one per (nodal, columns), built at set-up for the shapes the fields have (1, 3, 9 columns)
+  // and reused by every step (selection()).
+  std::optional<output::RowBlocks> node_blocks, element_blocks;
   std::vector<std::pair<std::array<hsize_t, 2>, output::RowSelection>> selections;
 
   Impl(std::string dir, long long n, long long e, std::vector<output::XdmfBlock> grids, output::LengthUnit length,
@@ -141,8 +158,9 @@ const output::RowSelection& ResultsWriter::Impl::selection(bool nodal, hsize_t c
   for (const auto& [k, s] : selections)
     if (k == key) return s;
   // A shape first met in the loop (a Matrix field of another width): built once, then kept.
-  selections.emplace_back(key, output::select_row_runs(static_cast<hsize_t>(nodal ? nodes : elements), cols,
-                                                        nodal ? node_runs : element_runs, h5_path));
+  const output::RowBlocks& b = nodal ? *node_blocks : *element_blocks;
+  selections.emplace_back(key, output::select_row_block(static_cast<hsize_t>(nodal ? nodes : elements), cols, b.first(),
+                                                        b.count(), h5_path));
   return selections.back().second;
 }
 
@@ -308,9 +326,11 @@ void ResultsWriter::Impl::write_field(hid_t group, const FieldView& f, long long
     }
     data = tensor_buffer.data();
   }
-  if (parallel)
-    output::write_selected_rows(d.get(), H5T_NATIVE_DOUBLE, data, selection(nodal, cols), h5_path + ":" + path);
-  else
+  if (parallel) {  // this rank's rows exchanged into its block, then written as one hyperslab
+    const std::vector<unsigned char> block =
+        (nodal ? *node_blocks : *element_blocks).gather(data, sizeof(double) * static_cast<std::size_t>(stored));
+    output::write_selected_rows(d.get(), H5T_NATIVE_DOUBLE, block.data(), selection(nodal, cols), h5_path + ":" + path);
+  } else
     output::write_rows(d.get(), H5T_NATIVE_DOUBLE, data, 0, rows, cols, h5_path + ":" + path);
 }
 
@@ -378,25 +398,34 @@ void ResultsWriter::Impl::write_mesh(const MeshRows& rows, const std::vector<mes
   output::write_string_attribute(f, "length_unit", unit.name, p);
   if (!options.run_id.empty()) output::write_string_attribute(f, "run_id", options.run_id, p);
   if (!options.mesh_sha256.empty()) output::write_string_attribute(f, "mesh_sha256", options.mesh_sha256, p);
-  // Parallel: every rank writes its rows (collective; a rank with none takes part with no rows).
-  const auto write_mine = [&](hid_t d, hid_t type, const void* data, bool nodal, hsize_t rows_in_file, hsize_t cols,
-                              const std::string& what) {
+  // Parallel: every rank's rows (all of them on rank 0 in the whole-mesh form, none elsewhere) are
+  // exchanged into blocks of consecutive rows that each rank writes (collective; row_blocks.hpp).
+  std::optional<output::RowBlocks> node_block, element_block;
+  if (parallel) {
+    node_block.emplace(rows.node_runs, n, output::chunk_rows(n, 3));
+    element_block.emplace(rows.element_runs, e, output::chunk_rows(e, 9));
+  }
+  const auto write_mine = [&](hid_t d, hid_t type, const void* data, std::size_t value_bytes, bool nodal,
+                              hsize_t rows_in_file, hsize_t cols, const std::string& what) {
     if (!parallel) return output::write_rows(d, type, data, 0, rows_in_file, cols, what);
-    output::write_row_runs(d, type, data, nodal ? rows.node_runs : rows.element_runs, cols, what);
+    const output::RowBlocks& b = nodal ? *node_block : *element_block;
+    const std::vector<unsigned char> block = b.gather(data, value_bytes * std::max<hsize_t>(cols, 1));
+    output::write_selected_rows(d, type, block.data(), output::select_row_block(rows_in_file, cols, b.first(), b.count(), what),
+                                what);
   };
   const int z = gzip_level;
   std::vector<double> xyz_in_unit(rows.coordinates, rows.coordinates + 3 * rows.node_rows);
   for (double& x : xyz_in_unit) x *= unit.per_metre;
   H5Handle xyz = output::create_dataset(g.get(), "coordinates", H5T_IEEE_F64LE, n, 3, p, z);
   output::write_string_attribute(xyz.get(), "units", unit.name, p);
-  write_mine(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), true, n, 3, p + ":/mesh/coordinates");
+  write_mine(xyz.get(), H5T_NATIVE_DOUBLE, xyz_in_unit.data(), sizeof(double), true, n, 3, p + ":/mesh/coordinates");
   H5Handle conn = output::create_dataset(g.get(), "connectivity", H5T_STD_I32LE, e, 8, p, z);
   output::write_string_attribute(conn.get(), "units", "1", p);  // node indices
-  write_mine(conn.get(), H5T_NATIVE_INT, rows.connectivity, false, e, 8, p + ":/mesh/connectivity");
+  write_mine(conn.get(), H5T_NATIVE_INT, rows.connectivity, sizeof(int), false, e, 8, p + ":/mesh/connectivity");
   const std::vector<int> block_id = block_ids_of_rows(blocks, rows.element_runs, rows.element_rows);
   H5Handle bid = output::create_dataset(g.get(), "block_id", H5T_STD_I32LE, e, 0, p, z);
   output::write_string_attribute(bid.get(), "units", "1", p);  // block indices
-  write_mine(bid.get(), H5T_NATIVE_INT, block_id.data(), false, e, 0, p + ":/mesh/block_id");
+  write_mine(bid.get(), H5T_NATIVE_INT, block_id.data(), sizeof(int), false, e, 0, p + ":/mesh/block_id");
   std::string joined;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     if (b > 0) joined += '\n';
@@ -446,11 +475,11 @@ void ResultsWriter::open(const std::string& directory, const output::MeshOutline
   if (slab) {
     impl_->parallel = true;
     impl_->root = parallel::is_root();
-    for (const auto& r : slab->node_runs) impl_->node_runs.push_back({r[0], r[1]});
-    for (const auto& r : slab->element_runs) impl_->element_runs.push_back({r[0], r[1]});
     impl_->node_rows = slab->node_rows;
     impl_->element_rows = slab->element_rows;
     try {
+      impl_->node_blocks.emplace(slab->node_runs, outline.nodes, output::chunk_rows(outline.nodes, 3));
+      impl_->element_blocks.emplace(slab->element_runs, e, output::chunk_rows(e, 9));
       for (bool nodal : {true, false})
         for (hsize_t cols : {0, 3, 9}) impl_->selection(nodal, cols);  // the fields' shapes, before the loop
     } catch (const std::runtime_error& err) {
@@ -460,7 +489,7 @@ void ResultsWriter::open(const std::string& directory, const output::MeshOutline
 
   impl_->check_can_create(resume_time.has_value());
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-  if (impl_->parallel) H5Pset_fapl_mpio(fapl.get(), MPI_COMM_WORLD, MPI_INFO_NULL);
+  if (impl_->parallel) set_collective_buffer(fapl.get());
   if (resume_time && std::filesystem::file_size(impl_->h5_path) > 0 && impl_->open_for_resume(fapl.get(), *resume_time)) {
     const std::string file_run = output::read_string_attribute(impl_->file.get(), "run_id");
     if (!options.run_id.empty() && !file_run.empty() && file_run != options.run_id)

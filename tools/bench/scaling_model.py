@@ -27,11 +27,25 @@ Per rank and step (N ranks, E elements, S slave nodes in the contact zone, K nod
 Memory per rank: replicated set-up holds the whole model on every rank (M_1, measured);
 distributed: (M_1 - M_0) / N + M_0, M_0 the part that does not divide (code, libraries, MPI buffers).
 
+The set-up and output stages (issue 57; distributed set-up `set-up = distributed`, results.h5 written
+collectively, inputs measured 2026-11-29, docs/measurements/2026-11-29-output-memory.md):
+  set-up        once: E/N x c_setup (generation, partition, the parts; c_setup in core time per element
+                of a rank's part, the fewest-rank measurement: a lower bound, see the log)
+  output step   every output: E/N x c_out (fields, block exchange, compression) + one MPI_Alltoallv
+                (N latencies + b_out x E/N over the link) + b_out x E / the file system's aggregate
+                bandwidth (the one term that does not divide: every byte reaches the disks)
+  memory        the peak of a rank with results output on, set-up and output steps included:
+                m_el x E/N + M_out (fitted to the counts at 4-128 ranks on 1 M and 4 M elements)
+  largest model at G GB per rank: E = (G - M_out) / m_el x N, and at most 2^31 - 1 nodes and elements
+                (mesh/mesh.hpp's indices and results.h5's connectivity are 32-bit)
+
 usage: scaling_model.py [--elements E] [--slave-nodes S] [--slave-nodes-per-rank n] [--halo-nodes h]
                         [--redundant | --tangential]
                         [--ns-element C] [--ns-slave-node C]
                         [--serial-rss-mb M] [--surface-nodes NS] [--latency-us L] [--bandwidth-gbs B]
                         [--rank-memory-gb G] [--csv FILE]
+                        [--setup-us-element C] [--output-us-element C] [--output-bytes-element B]
+                        [--fs-gbs F] [--output-bytes-element-rank M] [--output-fixed-mb M0]
 """
 import argparse
 import csv
@@ -39,6 +53,8 @@ import math
 import sys
 
 RANKS = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]
+# The set-up and output stages' measured inputs (docs/measurements/2026-11-29-output-memory.md).
+SETUP_US, OUTPUT_US, OUTPUT_B, OUTPUT_FIXED_MB = 16.6, 0.2, 1114.0, 98.0
 
 
 def step_costs(n, a):
@@ -75,6 +91,36 @@ def step_costs(n, a):
     return rep, dist, mem_rep, mem_dist
 
 
+def stage_costs(n, a):
+    """Set-up seconds (once), output seconds per output step and peak MB per rank with output on."""
+    share = a.elements / n
+    setup = share * a.setup_us_element * 1e-6
+    exchange = 0.0 if n == 1 else n * a.latency_us * 1e-6 + a.output_bytes_element * share / (a.bandwidth_gbs * 1e9)
+    disk = a.output_bytes_element * a.elements / (a.fs_gbs * 1e9)
+    output = share * a.output_us_element * 1e-6 + exchange + disk
+    memory = a.output_bytes_element_rank * share / 1e6 + a.output_fixed_mb
+    return setup, output, disk, memory
+
+
+def print_stages(a):
+    """The set-up and output stages' table and the largest model that fits a rank with output on."""
+    print(f"set-up and output stages: {a.setup_us_element:g} us/element set-up, {a.output_us_element:g} us/element "
+          f"and {a.output_bytes_element:g} B/element per output, file system {a.fs_gbs:g} GB/s, "
+          f"{a.output_bytes_element_rank:g} B/element + {a.output_fixed_mb:g} MB per rank with output on")
+    print(f"{'ranks':>6} | {'set-up s':>9} {'output s/step':>13} {'of it disk':>10} {'RSS MB, output on':>17}")
+    rows = []
+    for n in RANKS:
+        setup, output, disk, memory = stage_costs(n, a)
+        rows.append({"ranks": n, "setup_s": setup, "output_s": output, "output_disk_s": disk, "output_rss_mb": memory})
+        print(f"{n:>6} | {setup:>9.2f} {output:>13.3f} {disk:>10.3f} {memory:>17.0f}")
+    cap = 2**31 - 1  # 32-bit node and element indices (mesh/mesh.hpp, results.h5's connectivity)
+    per_rank = (a.rank_memory_gb * 1e3 - a.output_fixed_mb) * 1e6 / a.output_bytes_element_rank  # elements a rank holds
+    print(f"largest model with results output on at {a.rank_memory_gb:g} GB per rank: {per_rank / 1e6:.2f} M elements "
+          f"per rank; {per_rank * RANKS[-1] / 1e9:.2f} G elements at {RANKS[-1]} ranks by memory, but at most "
+          f"{cap / 1e9:.2f} G (32-bit indices), reached from {math.ceil(cap / per_rank)} ranks")
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--elements", type=float, default=1_009_000, help="E (counts_indenter.i)")
@@ -97,6 +143,17 @@ def main():
     ap.add_argument("--latency-us", type=float, default=1.5, help="message latency, us (InfiniBand class)")
     ap.add_argument("--bandwidth-gbs", type=float, default=12.0, help="link bandwidth per rank pair, GB/s")
     ap.add_argument("--rank-memory-gb", type=float, default=4.0, help="memory per rank of the cluster, GB")
+    ap.add_argument("--setup-us-element", type=float, default=SETUP_US,
+                    help="c_setup, core us per element of a rank's part for the distributed set-up")
+    ap.add_argument("--output-us-element", type=float, default=OUTPUT_US,
+                    help="c_out, core us per element of a rank's part per results.h5 output step")
+    ap.add_argument("--output-bytes-element", type=float, default=96.0,
+                    help="b_out, bytes written per element per output (displacement 24 B/node + stress 72 B, uncompressed)")
+    ap.add_argument("--fs-gbs", type=float, default=5.0, help="the file system's aggregate write bandwidth, GB/s (assumed)")
+    ap.add_argument("--output-bytes-element-rank", type=float, default=OUTPUT_B,
+                    help="m_el, peak bytes per element of a rank's part with results output on")
+    ap.add_argument("--output-fixed-mb", type=float, default=OUTPUT_FIXED_MB,
+                    help="M_out, the peak per rank with output on that does not divide, MB")
     ap.add_argument("--csv", help="write the table as CSV (columns: see the header row)")
     a = ap.parse_args()
     rows = []
@@ -127,11 +184,12 @@ def main():
     print(f"largest model that fits {a.rank_memory_gb:g} GB per rank: replicated "
           f"{a.rank_memory_gb * 1e9 / per_element / 1e6:.1f} M elements at any rank count; distributed "
           f"{(a.rank_memory_gb * 1e3 - a.fixed_rss_mb) * 1e6 / per_element * RANKS[-1] / 1e9:.1f} G elements at {RANKS[-1]} ranks")
+    stages = print_stages(a)
     if a.csv:
         with open(a.csv, "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(rows[0]))
+            w = csv.DictWriter(f, fieldnames=list(rows[0]) + list(stages[0])[1:])
             w.writeheader()
-            w.writerows(rows)
+            w.writerows({**r, **{k: v for k, v in st.items() if k != "ranks"}} for r, st in zip(rows, stages))
     return 0
 
 
