@@ -381,15 +381,18 @@ struct MassScalingSpec {
   SourceLocation target_where, blocks_where, where;
 };
 
-/// `begin decomposition` (solver/parallel/partition.hpp): how a parallel run splits the model. `metis`
-/// (the default, any size) partitions the element graph on rank 0, `ptscotch` the same graph on all the
-/// ranks together (solver/parallel/ptscotch_partition.hpp), `rcb` bisects the element centroids; `coordinate scale` multiplies the coordinates when the sides of a
+/// `begin decomposition` (solver/parallel/partition.hpp): how a parallel run splits the model. `auto` (the
+/// default) is `ptscotch` with `set-up = distributed` for a mesh of `distributed above` elements or more
+/// (when its source allows it) and `metis` otherwise; `metis` partitions the element graph on rank 0,
+/// `ptscotch` the same graph on all the ranks together (solver/parallel/ptscotch_partition.hpp), `rcb`
+/// bisects the element centroids; `coordinate scale` multiplies the coordinates when the sides of a
 /// box are compared (the volume's with rcb, the contact patches' with either method), so a small
 /// factor on the direction a contact zone travels keeps it shared by the ranks. Not given: the run
 /// takes 0.01 on the direction the deck moves a contact body along (solver/parallel/contact_travel.hpp).
 struct DecompositionSpec {
-  enum class Method { metis, rcb, ptscotch };
-  Method method = Method::metis;
+  enum class Method { automatic, metis, rcb, ptscotch };
+  Method method = Method::automatic;
+  int distributed_above = 500000;  // method = auto: the element count from which the set-up is distributed
   std::optional<std::array<double, 3>> coordinate_scale;  // the deck's; empty: from the contact's travel
   bool distributed_setup = false;  // `set-up = distributed`: each rank generates its slab (ptscotch only)
   SourceLocation where;

@@ -642,8 +642,10 @@ class Builder {
       } else if (t == "decomposition") {
         r.decomposition.where = c.where;
         const std::string method = word(c, "method");
+        if (method == "metis") r.decomposition.method = DecompositionSpec::Method::metis;
         if (method == "rcb") r.decomposition.method = DecompositionSpec::Method::rcb;
         if (method == "ptscotch") r.decomposition.method = DecompositionSpec::Method::ptscotch;
+        if (auto n = optional_real(c, "distributed above")) r.decomposition.distributed_above = static_cast<int>(*n);
         if (word(c, "set-up") == "distributed") {
           if (r.decomposition.method != DecompositionSpec::Method::ptscotch)
             error(where(c, "set-up"), c, "'set-up = distributed' needs 'method = ptscotch' (the partition by all the ranks)");

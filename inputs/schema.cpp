@@ -321,11 +321,16 @@ std::vector<BlockSchema> build_table() {
                false, "boundary conditions and output"});
 
   t.push_back({"decomposition", NameRule::none, {}, {}, true,
-               {choice("method", ValueKind::enumeration, {"metis", "rcb", "ptscotch"}, false, "metis",
-                       "how a parallel run splits the elements: metis (graph partition on rank 0, fewest shared "
-                       "nodes; the default at every size), ptscotch (the same graph partitioned by all the ranks "
-                       "together with PT-Scotch; the mesh is read on rank 0 unless set-up = distributed) or rcb (recursive coordinate "
-                       "bisection of the element centroids: planar cuts)"),
+               {choice("method", ValueKind::enumeration, {"auto", "metis", "rcb", "ptscotch"}, false, "auto",
+                       "how a parallel run splits the elements: auto (ptscotch with set-up = distributed for a mesh of "
+                       "'distributed above' elements or more, where the mesh allows it, else metis; the log says "
+                       "which), metis (graph partition on rank 0, fewest shared nodes), ptscotch (the same graph "
+                       "partitioned by all the ranks together with PT-Scotch; the mesh is read on rank 0 unless "
+                       "set-up = distributed) or rcb (recursive coordinate bisection of the element centroids: planar cuts)"),
+                integer("distributed above", at_least(1), false, "500000",
+                        "with method = auto: the element count from which no rank makes the whole mesh (below it, "
+                        "rank 0 makes it and METIS partitions it: at 1,009,000 elements that serial stage put rank 0 "
+                        "above the per-rank memory of the others from 16 ranks on, solver/README.md)"),
                 choice("set-up", ValueKind::enumeration, {"serial", "distributed"}, false, "serial",
                        "where the mesh is made: serial (rank 0 reads or generates the whole mesh and sends every rank "
                        "its part) or distributed (with method = ptscotch and a generated box or asperity or an Exodus II "

@@ -75,7 +75,9 @@ class DeckRun {
   // ---- stage 1: the model (a parallel run: this rank's part), checked and reported; nothing written ----
   void preflight();
   void build_parts();  // parallel: the whole mesh on rank 0, partitioned; every rank builds its part
-  bool build_parts_distributed();  // `set-up = distributed`: false (and the log says why) if the mesh needs rank 0
+  // `set-up = distributed` (`method = auto`: from `at_least` elements): false, and the log says why, if the
+  // mesh is to be made on rank 0 instead
+  bool build_parts_distributed(int at_least = 0);
   bool distributed_contact(const parallel::ElementSource& source, ContactFaces& contact,
                            std::optional<ContactTravel>& travel, parallel::AxisScale& scale,
                            std::optional<inputs::ContactSpec>& enforced, std::string& why);  // false: why
@@ -155,6 +157,7 @@ class DeckRun {
   double est_steps_ = 0.0;
   int elements_ = 0;
   std::optional<Model> model_;
+  inputs::DecompositionSpec::Method method_ = inputs::DecompositionSpec::Method::metis;  // the one used (auto resolved)
   std::optional<output::MeshOutline> results_outline_;  // parallel runs with results output: the whole mesh's outline
   std::map<std::string, double> set_size_;  // node-set sizes of the whole mesh
   std::string mesh_hash_;                   // of the whole mesh (restart files)

@@ -162,19 +162,25 @@ ContactFaces source_contact_faces(const inputs::ContactSpec& contact, const mesh
 
 }  // namespace
 
-bool DeckRun::build_parts_distributed() {
+bool DeckRun::build_parts_distributed(int at_least) {
   // As on rank 0 in the serial set-up: each large temporary freed goes back to the system at once.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
   std::string why;
-  std::unique_ptr<parallel::ElementSource> source;
-  source = element_source(deck_, why);
+  std::unique_ptr<parallel::ElementSource> source = element_source(deck_, why);
+  const char* asked = at_least > 0 ? "method = auto" : "set-up = distributed";
+  if (source && source->element_count() < at_least) {  // counted from the plan or the file's index, nothing made
+    log_.say(format("method = auto: %d elements, fewer than 'distributed above' (%d): the mesh is made on rank 0 and "
+                    "METIS partitions it",
+                    source->element_count(), at_least));
+    return false;
+  }
   ContactFaces contact;
   std::optional<ContactTravel> travel;
   parallel::AxisScale scale = parallel::kUnitScale;
   std::optional<inputs::ContactSpec> enforced;
   if (source && region_.contact && !distributed_contact(*source, contact, travel, scale, enforced, why)) source.reset();
   if (!source) {
-    log_.say("set-up = distributed: the mesh is made on rank 0 instead (" + why + ")");
+    log_.say(std::string(asked) + ": the mesh is made on rank 0 instead (" + why + ")");
     return false;
   }
   const auto start = std::chrono::steady_clock::now();

@@ -83,8 +83,17 @@ void DeckRun::build_parts() {
   // Rank 0 reads or generates the whole mesh, checks and partitions it (with `method = ptscotch` all
   // the ranks partition it together), and sends every rank its part, then frees the whole mesh (the
   // results writers need only its outline). With `set-up = distributed` every rank makes its own part
-  // of a generated mesh instead (deck_run_distributed.cpp).
-  if (region_.decomposition.distributed_setup && build_parts_distributed()) return;
+  // of a generated mesh instead (deck_run_distributed.cpp); `method = auto` does that from `distributed above`
+  // elements on, where the mesh allows it, and takes METIS on rank 0 otherwise.
+  using Method = inputs::DecompositionSpec::Method;
+  const auto& decomposition = region_.decomposition;
+  method_ = decomposition.method == Method::automatic ? Method::ptscotch : decomposition.method;
+  if (decomposition.method == Method::automatic) {
+    if (build_parts_distributed(decomposition.distributed_above)) return;
+    method_ = Method::metis;
+  } else if (decomposition.distributed_setup && build_parts_distributed()) {
+    return;
+  }
   std::optional<mesh::Mesh> whole;
   std::vector<int> part;
   parallel::NodeHolders holders;
@@ -111,7 +120,7 @@ void DeckRun::build_parts() {
   }
   // The volume's partition is timed (the log's partition line): rank 0's wall time from the first
   // slab sent to the last part gathered with ptscotch, of the METIS or bisection call otherwise.
-  const auto method = region_.decomposition.method;
+  const auto method = method_;
   const auto start = std::chrono::steady_clock::now();
   if (method == inputs::DecompositionSpec::Method::ptscotch) {
     // Collective: every rank must know rank 0's mesh is there before the slabs are sent.
@@ -179,9 +188,9 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   const std::string sides = scaled ? format(" (sides scaled %g %g %g%s)", scale[0], scale[1], scale[2], why.c_str())
                                    : std::string();
   std::string method;
-  if (decomposition.method == inputs::DecompositionSpec::Method::rcb) {
+  if (method_ == inputs::DecompositionSpec::Method::rcb) {
     method = "recursive coordinate bisection of the element centroids" + sides;
-  } else if (decomposition.method == inputs::DecompositionSpec::Method::ptscotch) {
+  } else if (method_ == inputs::DecompositionSpec::Method::ptscotch) {
     method = "PT-Scotch k-way partition of the element graph by all the ranks (the mesh read on rank 0)";
   } else {
     const int cluster = parallel::partition_cluster_size(whole.element_count(), ranks_);
@@ -192,7 +201,7 @@ void DeckRun::report_partition(const mesh::Mesh& whole, const std::vector<int>& 
   std::string patches;
   if (region_.contact)
     patches = ", contact surfaces in one compact patch per rank" +
-              (decomposition.method != inputs::DecompositionSpec::Method::rcb ? sides : std::string());
+              (method_ != inputs::DecompositionSpec::Method::rcb ? sides : std::string());
   log_.say(format("parallel: %d ranks, %s%s; %d-%d elements per rank; %d nodes on partition boundaries; partitioned "
                   "in %.3g s; every rank builds only its part",
                   ranks_, method.c_str(), patches.c_str(), *fewest, *most, shared, seconds));

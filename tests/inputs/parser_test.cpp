@@ -296,9 +296,16 @@ TEST(Parser, PrescribedForce) {
 }
 
 TEST(Parser, Decomposition) {
-  // Without the block: METIS, no scale (the run takes it from the contact's travel, contact_travel_test).
+  // Without the block: auto from 500,000 elements, no scale (the run takes it from the contact's travel,
+  // contact_travel_test).
   const Deck plain = parse_deck_string(deck_with_region(""), "plain.i");
-  EXPECT_EQ(plain.procedure.region.decomposition.method, DecompositionSpec::Method::metis);
+  EXPECT_EQ(plain.procedure.region.decomposition.method, DecompositionSpec::Method::automatic);
+  EXPECT_EQ(plain.procedure.region.decomposition.distributed_above, 500000);
+  const Deck metis = parse_deck_string(deck_with_region("      begin decomposition\n        method = metis\n"
+                                                        "        distributed above = 1000\n      end\n"),
+                                       "metis.i");
+  EXPECT_EQ(metis.procedure.region.decomposition.method, DecompositionSpec::Method::metis);
+  EXPECT_EQ(metis.procedure.region.decomposition.distributed_above, 1000);
   EXPECT_FALSE(plain.procedure.region.decomposition.coordinate_scale.has_value());
   const Deck d = parse_deck_string(deck_with_region("      begin decomposition\n        method = rcb\n"
                                                     "        coordinate scale = 1 0.01 1\n      end\n"),

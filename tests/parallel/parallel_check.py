@@ -67,19 +67,21 @@ def read(path):
 
 
 def with_decomposition(a):
-    """--decomposition "METHOD [SX SY SZ]": DECK with a `begin decomposition` block in its region, written to
+    """--decomposition "METHOD [distributed] [above=N] [SX SY SZ]": DECK with a `begin decomposition` block in its region, written to
     OUT/deck.i (both runs take it; one rank ignores it; no scale: the run's own). DECK must not name files
     relative to itself."""
     if not a.decomposition:
         return a.deck
     method, *scale = a.decomposition.split()
     distributed = "distributed" in scale  # `set-up = distributed` (each rank generates its slab)
-    scale = [w for w in scale if w != "distributed"]
+    above = [w.split("=")[1] for w in scale if w.startswith("above=")]  # method = auto's `distributed above`
+    scale = [w for w in scale if w != "distributed" and not w.startswith("above=")]
     with open(a.deck) as f:
         lines = f.read().split("\n")
     at = next(i for i, line in enumerate(lines) if line.strip().startswith("use finite element model"))
     block = ["      begin decomposition", f"        method = {method}",
              *(["        set-up = distributed"] if distributed else []),
+             *([f"        distributed above = {above[0]}"] if above else []),
              *([f"        coordinate scale = {' '.join(scale)}"] if scale else []), "      end decomposition"]
     return deck_copy(a, "\n".join(lines[:at + 1] + block + lines[at + 1:]))
 
