@@ -9,6 +9,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "solver/parallel/communicator.hpp"
+
 namespace tribex::solver::output {
 namespace {
 
@@ -16,14 +18,8 @@ namespace {
 std::set<std::string> names_of_all_ranks(const std::vector<std::string>& mine) {
   std::string text;
   for (const auto& n : mine) text += n + '\n';
-  int ranks = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  int length = static_cast<int>(text.size());
-  std::vector<int> lengths(static_cast<std::size_t>(ranks)), displs(lengths.size(), 0);
-  MPI_Allgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  for (int r = 1; r < ranks; ++r) displs[r] = displs[r - 1] + lengths[r - 1];
-  std::string all(static_cast<std::size_t>(displs.back() + lengths.back()), '\0');
-  MPI_Allgatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), displs.data(), MPI_CHAR, MPI_COMM_WORLD);
+  std::vector<int> at;
+  const std::string all = parallel::all_gather(text, at);
   std::set<std::string> names;
   for (std::size_t start = 0, end; (end = all.find('\n', start)) != std::string::npos; start = end + 1)
     names.insert(all.substr(start, end - start));

@@ -73,6 +73,21 @@ void broadcast(int* values, int count, int root) {
   if (size() > 1) MPI_Bcast(values, count, MPI_INT, root, MPI_COMM_WORLD);
 }
 
+std::string all_gather(const std::string& mine, std::vector<int>& at) {
+  const int ranks = size(), n = static_cast<int>(mine.size());
+  at.assign(static_cast<std::size_t>(ranks) + 1, 0);
+  if (ranks <= 1) {
+    at[1] = n;
+    return mine;
+  }
+  std::vector<int> count(static_cast<std::size_t>(ranks));
+  MPI_Allgather(&n, 1, MPI_INT, count.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 0; r < ranks; ++r) at[r + 1] = at[r] + count[r];
+  std::string all(static_cast<std::size_t>(at[ranks]), '\0');
+  MPI_Allgatherv(mine.data(), n, MPI_CHAR, all.data(), count.data(), at.data(), MPI_CHAR, MPI_COMM_WORLD);
+  return all;
+}
+
 void broadcast(std::string& text, int root) {
   if (size() <= 1) return;
   int n = static_cast<int>(text.size());

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace tribex::solver::parallel {
 
@@ -24,5 +25,7 @@ void barrier();
 /// Broadcast from `root`.
 void broadcast(int* values, int count, int root = 0);
 void broadcast(std::string& text, int root);
+/// Every rank's `mine` joined in rank order, on every rank; `at` gets the ranks + 1 offsets of each rank's bytes.
+std::string all_gather(const std::string& mine, std::vector<int>& at);
 
 }  // namespace tribex::solver::parallel

@@ -83,16 +83,11 @@ std::vector<EntryShape> decode_shapes(const char* p, const char* end) {
 // counts, then of the bytes). One rank: its own, no MPI call (unit tests run without MPI_Init).
 std::vector<std::vector<EntryShape>> gather_shapes(const StateArchive& a) {
   const std::vector<char> mine = encode_shapes(a);
-  const int ranks = parallel::size();
-  if (ranks == 1) return {decode_shapes(mine.data(), mine.data() + mine.size())};
-  std::vector<int> bytes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks) + 1, 0);
-  int my_bytes = static_cast<int>(mine.size());
-  MPI_Allgather(&my_bytes, 1, MPI_INT, bytes.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + bytes[r];
-  std::vector<char> all(static_cast<std::size_t>(offsets[ranks]));
-  MPI_Allgatherv(mine.data(), my_bytes, MPI_CHAR, all.data(), bytes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
+  std::vector<int> offsets;
+  const std::string all = parallel::all_gather(std::string(mine.begin(), mine.end()), offsets);
   std::vector<std::vector<EntryShape>> shapes;
-  for (int r = 0; r < ranks; ++r) shapes.push_back(decode_shapes(all.data() + offsets[r], all.data() + offsets[r + 1]));
+  for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
+    shapes.push_back(decode_shapes(all.data() + offsets[r], all.data() + offsets[r + 1]));
   return shapes;
 }
 
