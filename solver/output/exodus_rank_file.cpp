@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "solver/parallel/communicator.hpp"
+#include "solver/parallel/sparse_exchange.hpp"
 
 namespace tribex::solver::output {
 namespace {
@@ -179,13 +180,12 @@ SharedNodeRows::SharedNodeRows(const parallel::Domain& domain)
       asked_global.push_back(domain.global_node[static_cast<std::size_t>(l)]);
     }
   }
-  send_counts_.assign(receive_counts_.size(), 0);
+  send_counts_ = parallel::sparse_counts(receive_counts_);
   send_displs_.assign(receive_counts_.size(), 0);
-  MPI_Alltoall(receive_counts_.data(), 1, MPI_INT, send_counts_.data(), 1, MPI_INT, MPI_COMM_WORLD);
   for (int r = 1; r < ranks; ++r) send_displs_[r] = send_displs_[r - 1] + send_counts_[r - 1];
   std::vector<int> wanted(static_cast<std::size_t>(send_displs_.back() + send_counts_.back()));
-  MPI_Alltoallv(asked_global.data(), receive_counts_.data(), receive_displs_.data(), MPI_INT, wanted.data(),
-                send_counts_.data(), send_displs_.data(), MPI_INT, MPI_COMM_WORLD);
+  parallel::sparse_alltoallv(asked_global.data(), receive_counts_.data(), receive_displs_.data(), wanted.data(),
+                             send_counts_.data(), send_displs_.data(), MPI_INT);
   std::vector<int> row_of_local(static_cast<std::size_t>(local_nodes_), -1);
   for (std::size_t k = 0; k < owned_local_.size(); ++k) row_of_local[static_cast<std::size_t>(owned_local_[k])] = static_cast<int>(k);
   for (int g : wanted) {
@@ -213,8 +213,8 @@ void SharedNodeRows::fill(const double* owned_rows, int components, std::vector<
   scaled(send_displs_, displs_);
   scaled(receive_counts_, rcounts_);
   scaled(receive_displs_, rdispls_);
-  MPI_Alltoallv(send_.data(), counts_.data(), displs_.data(), MPI_DOUBLE, receive_.data(), rcounts_.data(),
-                rdispls_.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  parallel::sparse_alltoallv(send_.data(), counts_.data(), displs_.data(), receive_.data(), rcounts_.data(),
+                             rdispls_.data(), MPI_DOUBLE);
   for (std::size_t k = 0; k < receive_local_.size(); ++k)
     std::copy_n(receive_.data() + c * k, c, local.data() + c * static_cast<std::size_t>(receive_local_[k]));
 }

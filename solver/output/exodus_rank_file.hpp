@@ -39,7 +39,7 @@ int put_rank_maps(int exo, const mesh::Mesh& file_mesh, const parallel::Domain& 
 
 /// A rank's rows of a nodal field for its file: the owned nodes' rows come with the field (the rows
 /// results.h5 takes), the others' (shared nodes owned by a lower rank) from their owners, one
-/// MPI_Alltoallv per field (the pattern built once, at construction: collective).
+/// sparse_alltoallv per field (parallel/sparse_exchange.hpp; the pattern built once, at construction: collective).
 class SharedNodeRows {
  public:
   explicit SharedNodeRows(const parallel::Domain& domain);

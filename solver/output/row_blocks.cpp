@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "solver/output/row_blocks.hpp"
 
+#include "solver/parallel/sparse_exchange.hpp"
+
 #include <mpi.h>
 
 #include <cstring>
@@ -65,13 +67,12 @@ RowBlocks::RowBlocks(const std::vector<std::array<unsigned long long, 2>>& runs,
       ++send_rows_[static_cast<std::size_t>(to)];
       index.push_back(g);
     }
-  recv_rows_.assign(static_cast<std::size_t>(n), 0);
-  MPI_Alltoall(send_rows_.data(), 1, MPI_INT, recv_rows_.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  recv_rows_ = parallel::sparse_counts(send_rows_);
   send_at_ = offsets(send_rows_);
   recv_at_ = offsets(recv_rows_);
   std::vector<unsigned long long> got(static_cast<std::size_t>(recv_at_.back()));
-  MPI_Alltoallv(index.data(), send_rows_.data(), send_at_.data(), MPI_UNSIGNED_LONG_LONG, got.data(), recv_rows_.data(),
-                recv_at_.data(), MPI_UNSIGNED_LONG_LONG, MPI_COMM_WORLD);
+  parallel::sparse_alltoallv(index.data(), send_rows_.data(), send_at_.data(), got.data(), recv_rows_.data(),
+                             recv_at_.data(), MPI_UNSIGNED_LONG_LONG);
   if (got.size() != count_) throw std::runtime_error("results.h5: the ranks' rows do not cover the dataset once");
   place_.resize(got.size());
   for (std::size_t i = 0; i < got.size(); ++i) place_[i] = static_cast<std::uint32_t>(got[i] - first_);
@@ -82,9 +83,8 @@ std::vector<unsigned char> RowBlocks::gather(const void* data, std::size_t row_b
   MPI_Type_contiguous(static_cast<int>(row_bytes), MPI_BYTE, &row);
   MPI_Type_commit(&row);
   std::vector<unsigned char> received(place_.size() * row_bytes), block(place_.size() * row_bytes);
-  static const unsigned char nothing = 0;  // MPI wants a buffer even when this rank sends no rows
-  MPI_Alltoallv(data ? data : &nothing, send_rows_.data(), send_at_.data(), row, received.data(), recv_rows_.data(),
-                recv_at_.data(), row, MPI_COMM_WORLD);
+  parallel::sparse_alltoallv(data, send_rows_.data(), send_at_.data(), received.data(), recv_rows_.data(),
+                             recv_at_.data(), row);
   MPI_Type_free(&row);
   for (std::size_t i = 0; i < place_.size(); ++i)
     std::memcpy(block.data() + place_[i] * row_bytes, received.data() + i * row_bytes, row_bytes);

@@ -8,7 +8,7 @@
 // every chunk holds rows of every rank, so the filtered (gzip) collective write sends each chunk's pieces
 // to one owner that holds them and the whole chunk at once (heaptrack, 4-rank counts_indenter.i run:
 // 57 + 12 MB in H5D__chunk_collective_write on one rank). Instead the rows are first exchanged, one
-// MPI_Alltoallv, so that every rank holds one block of consecutive rows (the even split of the rows,
+// sparse exchange (parallel/sparse_exchange.hpp: messages only to the ranks with rows), so that every rank holds one block of consecutive rows (the even split of the rows,
 // aligned to whole chunks), which it writes as one hyperslab: the chunk map comes from the hyperslab's
 // bounds and at most the chunks at a block's ends are shared. The datasets hold the same values with the
 // same chunks and filters; only where the chunks lie in the file changes.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "solver/parallel/domain.hpp"
+#include "solver/parallel/sparse_exchange.hpp"
 #include "solver/parallel/sparse_rows.hpp"
 
 namespace tribex::solver::parallel {
@@ -178,12 +179,12 @@ void ContactRegion::exchange_node_numbers() {
   send_count.assign(static_cast<std::size_t>(n), 0);
   recv_count.assign(static_cast<std::size_t>(n), 0);
   for (int q = 0; q < n; ++q) send_count[q] = send_offset_[q + 1] - send_offset_[q];
-  MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1, MPI_INT, comm_);
+  recv_count = sparse_counts(send_count, comm_);
   recv_offset_[0] = 0;
   for (int q = 0; q < n; ++q) recv_offset_[q + 1] = recv_offset_[q] + recv_count[q];
   recv_node_.assign(static_cast<std::size_t>(recv_offset_[n]), 0);
-  MPI_Alltoallv(send_node_.data(), send_count.data(), send_offset_.data(), MPI_INT, recv_node_.data(),
-                recv_count.data(), recv_offset_.data(), MPI_INT, comm_);
+  sparse_alltoallv(send_node_.data(), send_count.data(), send_offset_.data(), recv_node_.data(), recv_count.data(),
+                   recv_offset_.data(), MPI_INT, comm_);
 }
 
 void ContactRegion::size_buffers() {
@@ -222,12 +223,12 @@ void ContactRegion::trim(const std::vector<char>& read) {
     keep[q] = static_cast<int>(fill_recv_node_.size()) - fill_recv_offset_[q];
   }
   fill_recv_offset_[members_] = static_cast<int>(fill_recv_node_.size());
-  MPI_Alltoall(keep.data(), 1, MPI_INT, give.data(), 1, MPI_INT, comm_);
+  give = sparse_counts(keep, comm_);
   fill_send_offset_[0] = 0;
   for (int q = 0; q < members_; ++q) fill_send_offset_[q + 1] = fill_send_offset_[q] + give[q];
   fill_send_node_.resize(static_cast<std::size_t>(fill_send_offset_[members_]));
-  MPI_Alltoallv(fill_recv_node_.data(), keep.data(), fill_recv_offset_.data(), MPI_INT, fill_send_node_.data(),
-                give.data(), fill_send_offset_.data(), MPI_INT, comm_);
+  sparse_alltoallv(fill_recv_node_.data(), keep.data(), fill_recv_offset_.data(), fill_send_node_.data(), give.data(),
+                   fill_send_offset_.data(), MPI_INT, comm_);
   domain_.communication_seconds += now() - start;
 }
 

@@ -9,8 +9,8 @@
 //     side); the ranks exchange the box of their surface nodes and which cells they occupy
 //     (MPI_Allgather of six doubles and of a bit set, as OpenRadioss's voxel occupancy), and each
 //     rank sends every other rank its owned surface nodes within the reach of that rank's box and
-//     within two cells of a cell it occupies, not already held there (MPI_Alltoall of the counts,
-//     MPI_Alltoallv of the node numbers), with the laws' per-node state of those nodes (the owner's
+//     within two cells of a cell it occupies, not already held there (sparse_counts of the counts,
+//     sparse_alltoallv of the node numbers: sparse_exchange.hpp), with the laws' per-node state of those nodes (the owner's
 //     is the reference). The cells because a rank's surface nodes often lie in two patches (a piece
 //     of each surface), whose common box would take in much of both surfaces; the box because it is
 //     the tighter test where the cells are coarse against the model (small models);
@@ -56,7 +56,7 @@ class ContactRegion final : public contact::ContactReductions {
   void fill_ghosts(double* xg, double* vg, double* fg);
   /// After the search of a refresh step: until the next refresh, fill_ghosts moves only the ghost rows
   /// `read` marks ([surface node], ContactManager::rows_read: what the passes read between searches);
-  /// each rank tells the owners which rows it keeps (MPI_Alltoall of the counts, MPI_Alltoallv of the
+  /// each rank tells the owners which rows it keeps (sparse_counts of the counts, sparse_alltoallv of the
   /// nodes). The other ghosts keep the positions of the refresh, which nothing reads before the next
   /// one refills them all. refresh and restore_lists go back to every row.
   void trim(const std::vector<char>& read);

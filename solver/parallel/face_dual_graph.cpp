@@ -11,6 +11,7 @@
 
 #include "mesh/mesh.hpp"
 #include "solver/parallel/communicator.hpp"
+#include "solver/parallel/sparse_exchange.hpp"
 
 namespace tribex::solver::parallel {
 namespace {
@@ -41,15 +42,14 @@ Outgoing<Record> pack(int ranks, const Each& each) {
   return out;
 }
 
-// Sends every rank its records (MPI_Alltoall of the counts, MPI_Alltoallv of the ints), freeing the send
+// Sends every rank its records (sparse_counts, then sparse_alltoallv of the ints: sparse_exchange.hpp), freeing the send
 // buffer, and returns the records received in source-rank order. One rank: its own records.
 template <class Record>
 std::vector<Record> exchange(Outgoing<Record>&& out) {
   const int ranks = size();
   if (ranks == 1) return std::move(out.record);
   constexpr int width = static_cast<int>(std::tuple_size_v<Record>);
-  std::vector<int> recv_records(ranks);
-  MPI_Alltoall(out.count.data(), 1, MPI_INT, recv_records.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  const std::vector<int> recv_records = sparse_counts(out.count);
   // MPI's counts and displacements are ints: up to 2^31 ints each way per rank, agreed on by all the
   // ranks so that all of them throw.
   long long sent = 0, received = 0;
@@ -68,8 +68,8 @@ std::vector<Record> exchange(Outgoing<Record>&& out) {
     recv_at[r + 1] = recv_at[r] + recv_count[r];
   }
   std::vector<Record> recv(static_cast<std::size_t>(recv_at[ranks] / width));
-  MPI_Alltoallv(out.record.data(), send_count.data(), send_at.data(), MPI_INT, recv.data(), recv_count.data(),
-                recv_at.data(), MPI_INT, MPI_COMM_WORLD);
+  sparse_alltoallv(out.record.data(), send_count.data(), send_at.data(), recv.data(), recv_count.data(),
+                   recv_at.data(), MPI_INT);
   out = {};
   return recv;
 }

@@ -11,7 +11,7 @@
 #include <tuple>
 #include <utility>
 
-#include "solver/parallel/alltoall.hpp"
+#include "solver/parallel/sparse_exchange.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/element_slab.hpp"
 #include "mesh/mesh_error.hpp"

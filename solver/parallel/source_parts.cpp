@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "solver/parallel/alltoall.hpp"
+#include "solver/parallel/sparse_exchange.hpp"
 #include "solver/parallel/communicator.hpp"
 #include "solver/parallel/contact_partition.hpp"
 #include "solver/parallel/element_slab.hpp"
