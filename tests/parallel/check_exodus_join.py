@@ -13,7 +13,8 @@ with Debian's /usr/bin/python3 (netCDF4).
       tensor's components share one scale: a shear component at round-off level is compared to the
       stress it belongs to; the global variables, the history columns, likewise: momentum_x/_y/_z share
       one scale); the global variable names are history.csv's columns, whole. --distributed: `set-up = distributed` (each rank generates its slab), and
-      log.txt must show it did not fall back to the serial set-up.
+      log.txt must show it did not fall back to the serial set-up. --open-files K: the join runs with
+      `ulimit -n` K (RLIMIT_NOFILE), fewer descriptors than rank files.
   check_exodus_join.py bad TRIBEX DECK OUT --ranks N
       OUT/npN of an agree run: `tribex join` on a copy without rank 1's file, on a copy with rank 1's file
       cut to half and to all but its last 64 bytes, and on a copy holding a results.exo of the user's:
@@ -22,6 +23,7 @@ with Debian's /usr/bin/python3 (netCDF4).
 """
 import argparse
 import os
+import resource
 import re
 import shutil
 import subprocess
@@ -149,7 +151,12 @@ def agree(a):
     want = [f"results.exo.{a.ranks}.{r:0{len(str(a.ranks))}d}" for r in range(a.ranks)]
     if files != want:
         sys.exit(f"FAIL: the {a.ranks}-rank run wrote {files}, expected {want}")
-    p = subprocess.run([a.tribex, "join", parallel_out], capture_output=True, text=True)
+    limit = None
+    if a.open_files:  # the join under `ulimit -n` below the rank count: it must open the files in turn
+        hard = resource.getrlimit(resource.RLIMIT_NOFILE)[1]
+        limit = lambda: resource.setrlimit(resource.RLIMIT_NOFILE, (a.open_files, hard))  # noqa: E731
+        print(f"tribex join under ulimit -n {a.open_files} ({a.ranks} rank files)")
+    p = subprocess.run([a.tribex, "join", parallel_out], capture_output=True, text=True, preexec_fn=limit)
     if p.returncode != 0:
         sys.exit(f"FAIL: tribex join exited {p.returncode}: {p.stderr}")
     print(p.stdout.strip())
@@ -227,6 +234,7 @@ def main():
     ap.add_argument("--distributed", action="store_true")
     ap.add_argument("--termination", default="")
     ap.add_argument("--increment", default="")
+    ap.add_argument("--open-files", type=int, default=0, help="run the join with this many file descriptors (ulimit -n)")
     a = ap.parse_args()
     agree(a) if a.mode == "agree" else bad(a)
 

@@ -3,9 +3,11 @@
 #include "tools/join/exodus_join.hpp"
 
 #include <exodusII.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <deque>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -27,10 +29,36 @@ namespace {
 namespace fs = std::filesystem;
 using tools::BadInput;
 
-// One rank's file, open for reading, with what the join needs of its header.
+struct RankFile;
+
+// At most `most` rank files open at once, so that a join of N files needs no `ulimit -n` above N: opening
+// one more closes the one opened longest ago. The join reads the files in rank order, so with N above the
+// limit every read of a variable of a step reopens the files (N opens per variable per step; measured in
+// README.md here); at or under it each file is opened once.
+class OpenLimit {
+ public:
+  explicit OpenLimit(std::size_t most) : most_(std::max<std::size_t>(most, 1)) {}
+  void opened(RankFile& f);
+  void forget(const RankFile& f) { open_.erase(std::remove(open_.begin(), open_.end(), &f), open_.end()); }
+
+ private:
+  std::size_t most_;
+  std::deque<RankFile*> open_;  // oldest first
+};
+
+// The descriptors a join may spend on rank files: the soft limit (`ulimit -n`) less 8 for the process's
+// own (the standard streams, the joined file, the manifest, netCDF's and the C library's).
+std::size_t rank_files_allowed() {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return 1024;
+  return limit.rlim_cur > 9 ? static_cast<std::size_t>(limit.rlim_cur - 8) : 1;
+}
+
+// One rank's file, with what the join needs of its header; open for reading when `handle` is asked.
 struct RankFile {
   std::string path;
-  int id = -1;
+  mutable int id = -1;  // the open file, or -1 (closed by OpenLimit; reopened by handle)
+  OpenLimit* limit = nullptr;
   int nodes = 0, elements = 0;
   std::vector<int> node_map, element_map;  // [local] global index (0-based)
   std::vector<int> block_ids, block_counts, block_first;  // block_first: its first local element
@@ -38,7 +66,23 @@ struct RankFile {
   RankFile(const RankFile&) = delete;
   RankFile& operator=(const RankFile&) = delete;
   ~RankFile() {
+    close();
+    if (limit) limit->forget(*this);
+  }
+  void close() const {
     if (id >= 0) ex_close(id);
+    id = -1;
+  }
+  // The open file's id; reopens it when the limit closed it (its header was checked at the first open).
+  int handle() const {
+    if (id >= 0) return id;
+    int comp_ws = sizeof(double), io_ws = 0;
+    float version = 0;
+    id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
+    if (id < 0) fail("cannot open again");
+    ex_set_max_name_length(id, static_cast<int>(ex_inquire_int(id, EX_INQ_DB_MAX_ALLOWED_NAME_LENGTH)));
+    if (limit) limit->opened(const_cast<RankFile&>(*this));
+    return id;
   }
   [[noreturn]] void fail(const std::string& what) const {
     const std::string e = mesh::exodus::last_error();
@@ -49,6 +93,14 @@ struct RankFile {
     if (status < 0) fail("cannot read " + what);
   }
 };
+
+void OpenLimit::opened(RankFile& f) {
+  while (open_.size() >= most_) {
+    open_.front()->close();
+    open_.pop_front();
+  }
+  open_.push_back(&f);
+}
 
 std::vector<std::string> names_of(int exo, ex_entity_type type, int count, const RankFile& f) {
   if (count <= 0) return {};
@@ -64,13 +116,13 @@ std::vector<std::string> names_of(int exo, ex_entity_type type, int count, const
 
 std::vector<std::string> variable_names(const RankFile& f, ex_entity_type type) {
   int count = 0;
-  f.check(ex_get_variable_param(f.id, type, &count), "the variable counts");
+  f.check(ex_get_variable_param(f.handle(), type, &count), "the variable counts");
   if (count <= 0) return {};
-  const int length = std::max<int>(static_cast<int>(ex_inquire_int(f.id, EX_INQ_DB_MAX_USED_NAME_LENGTH)), 32);
+  const int length = std::max<int>(static_cast<int>(ex_inquire_int(f.handle(), EX_INQ_DB_MAX_USED_NAME_LENGTH)), 32);
   std::vector<std::vector<char>> buffers(static_cast<std::size_t>(count), std::vector<char>(length + 1, '\0'));
   std::vector<char*> p;
   for (auto& b : buffers) p.push_back(b.data());
-  f.check(ex_get_variable_names(f.id, type, count, p.data()), "the variable names");
+  f.check(ex_get_variable_names(f.handle(), type, count, p.data()), "the variable names");
   std::vector<std::string> names;
   for (auto& b : buffers) names.emplace_back(b.data());
   return names;
@@ -123,6 +175,7 @@ void open_rank(RankFile& f) {
   ex_opts(EX_DEFAULT);
   f.id = ex_open(f.path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (f.id < 0) f.fail("not a readable Exodus II file");
+  if (f.limit) f.limit->opened(f);
   // The API cuts names it reads to 32 characters unless told the file's own limit (history columns are longer).
   ex_set_max_name_length(f.id, static_cast<int>(ex_inquire_int(f.id, EX_INQ_DB_MAX_ALLOWED_NAME_LENGTH)));
   char title[MAX_LINE_LENGTH + 1] = {};
@@ -151,7 +204,7 @@ void open_rank(RankFile& f) {
 // The whole mesh's blocks (names from rank 0, counts summed) and connectivity.
 void join_blocks(const std::vector<std::unique_ptr<RankFile>>& files, mesh::Mesh& whole) {
   const RankFile& f0 = *files[0];
-  const auto names = names_of(f0.id, EX_ELEM_BLOCK, static_cast<int>(f0.block_ids.size()), f0);
+  const auto names = names_of(f0.handle(), EX_ELEM_BLOCK, static_cast<int>(f0.block_ids.size()), f0);
   int first = 0;
   for (std::size_t b = 0; b < f0.block_ids.size(); ++b) {
     int count = 0;
@@ -169,7 +222,7 @@ void join_blocks(const std::vector<std::unique_ptr<RankFile>>& files, mesh::Mesh
       const int count = f->block_counts[b];
       if (count == 0) continue;
       conn.resize(8 * static_cast<std::size_t>(count));
-      f->check(ex_get_conn(f->id, EX_ELEM_BLOCK, f->block_ids[b], conn.data(), nullptr, nullptr), "the connectivity");
+      f->check(ex_get_conn(f->handle(), EX_ELEM_BLOCK, f->block_ids[b], conn.data(), nullptr, nullptr), "the connectivity");
       for (int i = 0; i < count; ++i) {
         const int e = f->element_map[static_cast<std::size_t>(f->block_first[b] + i)];
         const auto& blk = whole.blocks[b];
@@ -195,7 +248,7 @@ void join_nodes_and_sets(const std::vector<std::unique_ptr<RankFile>>& files, in
     x.resize(static_cast<std::size_t>(f->nodes));
     y.resize(x.size());
     z.resize(x.size());
-    if (f->nodes > 0) f->check(ex_get_coord(f->id, x.data(), y.data(), z.data()), "the coordinates");
+    if (f->nodes > 0) f->check(ex_get_coord(f->handle(), x.data(), y.data(), z.data()), "the coordinates");
     for (std::size_t i = 0; i < x.size(); ++i) {
       const int g = f->node_map[i];
       if (g < 0 || g >= global_nodes) f->fail("node number " + std::to_string(g + 1) + " beyond the whole mesh's");
@@ -209,17 +262,17 @@ void join_nodes_and_sets(const std::vector<std::unique_ptr<RankFile>>& files, in
     throw BadInput(files[0]->path + ": the rank files do not cover every node of the whole mesh; join the files of one run");
   const RankFile& f0 = *files[0];
   const auto sets = [&](ex_entity_type type) {
-    const int count = static_cast<int>(ex_inquire_int(f0.id, type == EX_NODE_SET ? EX_INQ_NODE_SETS : EX_INQ_SIDE_SETS));
-    const auto names = names_of(f0.id, type, count, f0);
+    const int count = static_cast<int>(ex_inquire_int(f0.handle(), type == EX_NODE_SET ? EX_INQ_NODE_SETS : EX_INQ_SIDE_SETS));
+    const auto names = names_of(f0.handle(), type, count, f0);
     for (int s = 1; s <= count; ++s) {
       std::vector<int> nodes;
       std::vector<mesh::Side> sides;
       for (const auto& f : files) {
         int size = 0, factors = 0;
-        f->check(ex_get_set_param(f->id, type, s, &size, &factors), "a set");
+        f->check(ex_get_set_param(f->handle(), type, s, &size, &factors), "a set");
         if (size == 0) continue;
         std::vector<int> entries(static_cast<std::size_t>(size)), extra(static_cast<std::size_t>(size));
-        f->check(ex_get_set(f->id, type, s, entries.data(), type == EX_SIDE_SET ? extra.data() : nullptr), "a set");
+        f->check(ex_get_set(f->handle(), type, s, entries.data(), type == EX_SIDE_SET ? extra.data() : nullptr), "a set");
         for (int i = 0; i < size; ++i) {
           const int local = entries[static_cast<std::size_t>(i)] - 1;
           if (local < 0 || local >= (type == EX_NODE_SET ? f->nodes : f->elements)) f->fail("a set member beyond the file's");
@@ -253,9 +306,9 @@ Variables read_variables(const std::vector<std::unique_ptr<RankFile>>& files) {
   Variables v;
   for (const auto& f : files) {
     Variables mine{variable_names(*f, EX_GLOBAL), variable_names(*f, EX_NODAL), variable_names(*f, EX_ELEM_BLOCK), {}};
-    const int steps = static_cast<int>(ex_inquire_int(f->id, EX_INQ_TIME));
+    const int steps = static_cast<int>(ex_inquire_int(f->handle(), EX_INQ_TIME));
     mine.times.resize(static_cast<std::size_t>(std::max(steps, 0)));
-    if (steps > 0) f->check(ex_get_all_times(f->id, mine.times.data()), "the times");
+    if (steps > 0) f->check(ex_get_all_times(f->handle(), mine.times.data()), "the times");
     if (f == files[0]) {
       v = std::move(mine);
       continue;
@@ -306,13 +359,13 @@ void join_steps(const std::vector<std::unique_ptr<RankFile>>& files, const mesh:
     const std::string step = "step " + std::to_string(k);
     check(ex_put_time(out, k, &v.times[static_cast<std::size_t>(k - 1)]), step + "'s time");
     if (!globals.empty()) {
-      files[0]->check(ex_get_glob_vars(files[0]->id, k, static_cast<int>(globals.size()), globals.data()), step);
+      files[0]->check(ex_get_glob_vars(files[0]->handle(), k, static_cast<int>(globals.size()), globals.data()), step);
       check(ex_put_glob_vars(out, k, static_cast<int>(globals.size()), globals.data()), step + "'s global variables");
     }
     for (int var = 1; var <= static_cast<int>(v.nodal.size()); ++var) {
       for (const auto& f : files) {
         buffer.resize(static_cast<std::size_t>(f->nodes));
-        f->check(ex_get_var(f->id, k, EX_NODAL, var, 1, f->nodes, buffer.data()), step + " of '" + v.nodal[var - 1] + "'");
+        f->check(ex_get_var(f->handle(), k, EX_NODAL, var, 1, f->nodes, buffer.data()), step + " of '" + v.nodal[var - 1] + "'");
         for (std::size_t i = 0; i < buffer.size(); ++i) values[static_cast<std::size_t>(f->node_map[i])] = buffer[i];
       }
       check(ex_put_var(out, k, EX_NODAL, var, 1, whole.node_count(), values.data()), step + " of '" + v.nodal[var - 1] + "'");
@@ -324,7 +377,7 @@ void join_steps(const std::vector<std::unique_ptr<RankFile>>& files, const mesh:
           const int count = f->block_counts[b];
           if (count == 0) continue;
           buffer.resize(static_cast<std::size_t>(count));
-          f->check(ex_get_var(f->id, k, EX_ELEM_BLOCK, var, f->block_ids[b], count, buffer.data()),
+          f->check(ex_get_var(f->handle(), k, EX_ELEM_BLOCK, var, f->block_ids[b], count, buffer.data()),
                    step + " of '" + v.element[var - 1] + "'");
           for (int i = 0; i < count; ++i)
             values[static_cast<std::size_t>(f->element_map[static_cast<std::size_t>(f->block_first[b] + i)])] = buffer[i];
@@ -337,11 +390,11 @@ void join_steps(const std::vector<std::unique_ptr<RankFile>>& files, const mesh:
 
 // The info records of rank 0's file: the length unit first (solver/output/README.md "Length unit"), then notes.
 mesh::ExodusLengthUnit info_records(const RankFile& f, std::vector<std::string>& notes) {
-  const int count = static_cast<int>(ex_inquire_int(f.id, EX_INQ_INFO));
+  const int count = static_cast<int>(ex_inquire_int(f.handle(), EX_INQ_INFO));
   std::vector<std::vector<char>> buffers(static_cast<std::size_t>(std::max(count, 0)), std::vector<char>(MAX_LINE_LENGTH + 1, '\0'));
   std::vector<char*> p;
   for (auto& b : buffers) p.push_back(b.data());
-  if (count > 0) f.check(ex_get_info(f.id, p.data()), "the info records");
+  if (count > 0) f.check(ex_get_info(f.handle(), p.data()), "the info records");
   mesh::ExodusLengthUnit unit;  // per_metre 1: the coordinates are copied as the files hold them
   const std::string prefix = mesh::exodus_length_unit_record;
   for (std::size_t k = 0; k < buffers.size(); ++k) {
@@ -389,14 +442,16 @@ JoinReport join_rank_files(const std::string& folder, int ranks) {
   const fs::path target = fs::path(folder) / "results.exo", partial = fs::path(folder) / ".results.exo.partial";
   check_target(folder, target);
   mesh::require_output_target(partial.string());
+  OpenLimit limit(rank_files_allowed());
   std::vector<std::unique_ptr<RankFile>> files;
   for (int r = 0; r < report.ranks; ++r) {
     files.push_back(std::make_unique<RankFile>());
+    files.back()->limit = &limit;
     files.back()->path = (fs::path(folder) / solver::output::rank_file_name(report.ranks, r)).string();
     open_rank(*files.back());
   }
   int global_nodes = 0, global_elements = 0, blocks = 0, node_sets = 0, side_sets = 0;
-  files[0]->check(ex_get_init_global(files[0]->id, &global_nodes, &global_elements, &blocks, &node_sets, &side_sets),
+  files[0]->check(ex_get_init_global(files[0]->handle(), &global_nodes, &global_elements, &blocks, &node_sets, &side_sets),
                   "the Nemesis global counts (not a tribex rank file?)");
   mesh::Mesh whole;
   join_blocks(files, whole);
