@@ -149,6 +149,9 @@ std::span<const Field<parallel::RankCounts>> rank_count_fields() {
                                "pass evaluations that kept the candidates of an earlier search (the cheap update)"),
       field<&C::peak_rss_setup_bytes>("peak_rss_setup_bytes", "B", "peak resident memory at the end of set-up (getrusage)"),
       field<&C::peak_rss_bytes>("peak_rss_bytes", "B", "peak resident memory of the run (getrusage, at the close)"),
+      field<&C::exchange_peers>("exchange_peers", "count",
+                                "ranks this rank exchanged values with in the set-up, contact region and output "
+                                "exchanges (parallel/sparse_exchange.hpp), itself excluded; at most ranks - 1"),
   };
   return table;
 }

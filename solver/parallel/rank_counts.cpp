@@ -9,6 +9,7 @@
 #include "inputs/deck.hpp"
 #include "solver/model.hpp"
 #include "solver/parallel/communicator.hpp"
+#include "solver/parallel/sparse_exchange.hpp"
 
 namespace tribex::solver::parallel {
 
@@ -53,6 +54,7 @@ RankCounts count_rank(const Model& model, const inputs::ContactSpec* spec, long 
   }
   c.peak_rss_setup_bytes = peak_rss_setup;
   c.peak_rss_bytes = peak_rss_bytes();
+  c.exchange_peers = sparse_exchange_peers();
   return c;
 }
 

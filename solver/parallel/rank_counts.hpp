@@ -35,6 +35,7 @@ struct RankCounts {
   long long searches = 0, search_reuses = 0, contact_pairs = 0;
   long long peak_rss_setup_bytes = 0;  // getrusage ru_maxrss at the end of set-up
   long long peak_rss_bytes = 0;        // ... at the close
+  long long exchange_peers = 0;        // ranks it exchanged values with through sparse_exchange.hpp, itself excluded
 };
 
 /// The process's peak resident set size so far (getrusage ru_maxrss), bytes.

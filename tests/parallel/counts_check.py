@@ -124,6 +124,7 @@ def main():
                f"!= evaluations + 1")
         expect(r["searches"] == rc[0]["searches"], "searches differ between ranks (the decision is global)")
         expect(0 < r["peak_rss_setup_bytes"] <= r["peak_rss_bytes"], f"rank {r['rank']}: peak RSS")
+        expect(0 <= r["exchange_peers"] <= n - 1, f"rank {r['rank']}: {r['exchange_peers']} exchange peers of {n} ranks")
     for r in rc:
         print(json.dumps(r))
     if failures:
