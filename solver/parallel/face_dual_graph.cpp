@@ -74,21 +74,18 @@ std::vector<Record> exchange(Outgoing<Record>&& out) {
   return recv;
 }
 
-// The rank that matches a face: a 64-bit mix of its sorted node numbers (splitmix64's finaliser, so
-// that neighbouring faces spread over the ranks), modulo the rank count. The same on every machine.
-int face_rank(const FaceRecord& face, int ranks) {
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-  for (int k = 0; k < 4; ++k) {
-    h ^= static_cast<std::uint64_t>(static_cast<std::uint32_t>(face[k])) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-    h ^= h >> 31;
-  }
-  return static_cast<int>(h % static_cast<std::uint64_t>(ranks));
+// The rank that matches a face: the home of its smallest node in the even split of the node numbers
+// (floor(n P / nodes)). A generated mesh, and a mesher's file as a rule, numbers nodes and elements in
+// the same sweep, so a slab's faces go to the slab's own rank and its neighbours in rank order: a few
+// peers each instead of all of them (a hash spread every slab over every rank: an all-to-all whose
+// shared-memory pages every rank kept, docs/measurements/2026-11-29-sparse-exchange.md). Which rank
+// matches a face does not change the graph (face_dual_graph sorts its rows), so the partition is the same.
+int face_rank(const FaceRecord& face, int ranks, long long nodes) {
+  return static_cast<int>(std::min<long long>(static_cast<long long>(face[0]) * ranks / nodes, ranks - 1));
 }
 
 // Every face of the slab as (sorted nodes, global element), bound for its matching rank.
-Outgoing<FaceRecord> face_records(const ElementSlab& slab, int ranks) {
+Outgoing<FaceRecord> face_records(const ElementSlab& slab, int ranks, long long nodes) {
   return pack<FaceRecord>(ranks, [&](const auto& emit) {
     for (int e = 0; e < slab.count; ++e)
       for (const auto& face : mesh::hex8_face_nodes) {
@@ -96,7 +93,7 @@ Outgoing<FaceRecord> face_records(const ElementSlab& slab, int ranks) {
         for (int k = 0; k < 4; ++k) record[k] = slab.nodes[8 * static_cast<std::size_t>(e) + face[k]];
         std::sort(record.begin(), record.begin() + 4);
         record[4] = slab.first + e;
-        emit(face_rank(record, ranks), record);
+        emit(face_rank(record, ranks, nodes), record);
       }
   });
 }
@@ -146,6 +143,14 @@ std::vector<int> gather_offsets(const ElementSlab& slab) {
   return offset;
 }
 
+// The node numbers' bound: one more than the largest any slab uses (at least 1).
+long long node_count(const ElementSlab& slab) {
+  long long most = 0;
+  for (int n : slab.nodes) most = std::max<long long>(most, n);
+  if (size() > 1) MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_LONG_LONG, MPI_MAX, MPI_COMM_WORLD);
+  return most + 1;
+}
+
 }  // namespace
 
 DualGraphRows face_dual_graph(const ElementSlab& slab) {
@@ -154,7 +159,7 @@ DualGraphRows face_dual_graph(const ElementSlab& slab) {
   g.vertex_offset = gather_offsets(slab);
   std::vector<EdgeRecord> edge;
   {
-    std::vector<FaceRecord> faces = exchange(face_records(slab, ranks));
+    std::vector<FaceRecord> faces = exchange(face_records(slab, ranks, node_count(slab)));
     edge = exchange(matched_pairs(faces, g.vertex_offset, ranks));
   }
   // CSR of the pairs received, each row sorted and without repeats (two elements sharing two faces).

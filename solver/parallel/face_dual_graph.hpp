@@ -4,9 +4,9 @@
 // common nodes on rank 0, parallel/partition.cpp), so that no rank needs the whole mesh.
 //
 // Each face is keyed by its 4 node numbers sorted ascending; a face's key decides the rank that
-// matches it (a hash of the key modulo the rank count), so both elements of an inner face meet on one
-// rank whichever slabs hold them: one all-to-all sends every rank the (key, element) records hashed to
-// it, and a second returns each matched pair to the ranks whose slabs hold its elements. Per element
+// matches it (the home of its smallest node in the even split of the node numbers), so both elements of
+// an inner face meet on one rank whichever slabs hold them: one sparse exchange (sparse_exchange.hpp)
+// sends every rank the (key, element) records bound for it, and a second returns each matched pair to the ranks whose slabs hold its elements. Per element
 // 6 records of 20 B go out, packed straight into one send buffer (freed after the exchange), and a rank's
 // share of the faces comes in and is sorted in place: about 240 B per element of the slab at the peak
 // (rank 0 measured 62 MB above its level for a slab of 252,250 elements: docs/measurements/2026-11-29-ptscotch-partition.md).

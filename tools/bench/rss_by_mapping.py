@@ -18,7 +18,9 @@ difference says how much), and the peak's resident set by kind:
 
   rss_by_mapping.py [--interval S] [--step MB] [--csv FILE] [--timeline FILE] -- mpiexec -n 16 build/bin/tribex run DECK -o OUT
 
-RSS counts a shared page in every process that touched it; PSS shares it among them (RSS / sharers). The
+and the number of shared-memory mappings with resident pages at that peak (Open MPI's vader BTL: the rank's
+own segment plus one per peer it has received from through shared memory). RSS counts a shared page in
+every process that touched it; PSS shares it among them (RSS / sharers). The
 command's own exit status is returned; exit 2 with one line when no tribex process was seen.
 """
 import argparse
@@ -47,8 +49,11 @@ def kind_of(name, size_kb):
 
 
 def smaps_by_kind(pid):
-    """{kind: [rss_kb, pss_kb]} and the largest anonymous mappings (size, rss) of one process."""
+    """{kind: [rss_kb, pss_kb]}, the largest anonymous mappings (size, rss) of one process and the number of
+    its shared-memory mappings with resident pages (Open MPI's vader: its own segment and every peer's it has
+    read a message from)."""
     totals = {k: [0, 0] for k in KINDS}
+    touched = 0
     big = []
     kind, size = "other", 0
     with open(f"/proc/{pid}/smaps") as f:
@@ -65,10 +70,11 @@ def smaps_by_kind(pid):
                 totals[kind][0] += rss
                 if kind.startswith("anon") or kind == "shm":
                     big.append((rss, size, kind))
+                touched += kind == "shm" and rss > 0
             elif head == "Pss:":
                 totals[kind][1] += int(line.split()[1])
     big.sort(reverse=True)
-    return totals, big[:4]
+    return totals, big[:4], touched
 
 
 def status_kb(pid):
@@ -117,12 +123,13 @@ def sample(root, ranks, step_kb, t, timeline):
     for pid in tribex_pids(root):
         try:
             rss, hwm = status_kb(pid)
-            r = ranks.setdefault(pid, {"rank": rank_of(pid), "max": 0, "hwm": 0, "kinds": None, "big": [], "at": 0})
+            r = ranks.setdefault(pid, {"rank": rank_of(pid), "max": 0, "hwm": 0, "kinds": None, "big": [], "at": 0,
+                                       "touched": 0})
             r["hwm"] = max(r["hwm"], hwm)
             if timeline is not None:
                 timeline.append((round(t, 2), r["rank"], rss / 1000))
             if rss > r["max"] + step_kb or r["kinds"] is None:
-                r["kinds"], r["big"] = smaps_by_kind(pid)
+                r["kinds"], r["big"], r["touched"] = smaps_by_kind(pid)
                 r["max"], r["at"] = max(r["max"], sum(v[0] for v in r["kinds"].values())), t
         except (OSError, ValueError):
             pass  # the process ended between the listing and the read
@@ -156,7 +163,8 @@ def main():
         return 2
     rows = []
     for r in sorted(ranks.values(), key=lambda r: r["rank"]):
-        row = {"rank": r["rank"], "hwm_mb": r["hwm"] / 1000, "sampled_mb": r["max"] / 1000, "peak_at_s": r["at"]}
+        row = {"rank": r["rank"], "hwm_mb": r["hwm"] / 1000, "sampled_mb": r["max"] / 1000, "peak_at_s": r["at"],
+               "shm_mappings_touched": r["touched"]}
         for k in KINDS:
             row[f"{k}_rss_mb"] = r["kinds"][k][0] / 1000
             row[f"{k}_pss_mb"] = r["kinds"][k][1] / 1000
@@ -164,7 +172,8 @@ def main():
         parts = " ".join(f"{k} {r['kinds'][k][0] / 1000:.0f}/{r['kinds'][k][1] / 1000:.0f}" for k in KINDS)
         big = ", ".join(f"{rss / 1000:.0f} of {size / 1000:.0f} ({kind})" for rss, size, kind in r["big"])
         print(f"rank {r['rank']}: VmHWM {r['hwm'] / 1000:.0f} MB, sampled peak {r['max'] / 1000:.0f} MB at {r['at']:.1f} s; "
-              f"RSS/PSS MB: {parts}; largest anon/shm mappings RSS of size MB: {big}")
+              f"RSS/PSS MB: {parts}; shared-memory mappings with resident pages {r['touched']}; "
+              f"largest anon/shm mappings RSS of size MB: {big}")
     if a.csv:
         with open(a.csv, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=list(rows[0]))
