@@ -223,7 +223,10 @@ FolderClaim claim_output_folder(const FolderRequest& r) {
   claim.removed = s.remove;
   claim.kept_inputs = s.kept_inputs;
   claim.manifest = r.identity;
-  if (r.resume && old) claim.manifest.files = old->files;
+  if (r.resume && old) {
+    claim.manifest.files = old->files;
+    claim.manifest.segments = old->segments;
+  }
   for (const auto& name : r.names) claim.manifest.add(name);
   write_manifest(r.folder, claim.manifest);
   made.keep();

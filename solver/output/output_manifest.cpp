@@ -4,8 +4,11 @@
 #include <hdf5.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -40,6 +43,8 @@ class ManifestParser {
       expect(':');
       if (key == "files") {
         m.files = entries();
+      } else if (key == "segments") {
+        m.segments = segments();
       } else if (fields.count(key)) {
         *fields[key] = string();
       } else {
@@ -76,6 +81,37 @@ class ManifestParser {
     } while (take(','));
     expect(']');
     return files;
+  }
+  std::vector<RunSegment> segments() {
+    std::vector<RunSegment> list;
+    expect('[');
+    if (take(']')) return list;
+    do {
+      RunSegment g;
+      expect('{');
+      do {
+        const std::string key = string();
+        expect(':');
+        if (key == "ranks") g.ranks = static_cast<int>(std::min<unsigned long long>(integer(), 1u << 30));
+        else if (key == "from_time") g.from_time = real();
+        else fail("unknown segment key '" + key + "'");
+      } while (take(','));
+      expect('}');
+      if (g.ranks < 1) fail("a segment of no ranks");
+      list.push_back(g);
+    } while (take(','));
+    expect(']');
+    return list;
+  }
+  double real() {  // as manifest_json writes it: %.17g, finite
+    skip_space();
+    const std::size_t start = i_;
+    while (i_ < s_.size() && std::strchr("0123456789+-.eE", s_[i_]) != nullptr && i_ - start < 32) ++i_;
+    char* end = nullptr;
+    const std::string text = s_.substr(start, i_ - start);
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v)) fail("expected a number");
+    return v;
   }
   void skip_space() {
     while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
@@ -165,6 +201,12 @@ std::string manifest_json(const OutputManifest& m) {
   for (std::size_t k = 0; k < m.files.size(); ++k)
     out += std::string(k ? "," : "") + "\n    {\"name\": " + json_string(m.files[k].name) +
            ", \"device\": " + std::to_string(m.files[k].device) + ", \"inode\": " + std::to_string(m.files[k].inode) + "}";
+  out += "\n  ],\n  \"segments\": [";
+  for (std::size_t k = 0; k < m.segments.size(); ++k) {
+    char time[40];
+    std::snprintf(time, sizeof time, "%.17g", m.segments[k].from_time);  // round-trips the double
+    out += std::string(k ? "," : "") + "\n    {\"ranks\": " + std::to_string(m.segments[k].ranks) + ", \"from_time\": " + time + "}";
+  }
   return out + "\n  ]\n}\n";
 }
 

@@ -16,6 +16,15 @@ struct ManifestEntry {
   unsigned long long device = 0, inode = 0;  // of the file once written (0: not recorded)
 };
 
+/// One process's share of a run's steps: its rank count and the time it started from (a fresh run: its
+/// start; a resumed run: the restart time, where it rewrote the results files from). `tribex join`
+/// stitches per-rank results of several rank counts by these (solver/output/README.md "Restart on another
+/// rank count").
+struct RunSegment {
+  int ranks = 1;
+  double from_time = 0.0;
+};
+
 struct OutputManifest {
   std::string run_id;       // 32 hex digits, random; kept by the runs resumed from this run's restart files
   std::string deck;         // the deck as given on the command line
@@ -24,6 +33,7 @@ struct OutputManifest {
   std::string started;      // ISO 8601 UTC of the segment that wrote the manifest
   std::string host;
   std::vector<ManifestEntry> files;
+  std::vector<RunSegment> segments;  // every process of the run, in order (absent in manifests before 2026-11-29)
 
   const ManifestEntry* find(const std::string& name) const;
   void add(const std::string& name);  // once

@@ -309,7 +309,7 @@ void DeckRun::claim_output_folder() {
                                      region_.restart ? region_.restart->ring_size : 0, ranks_);
       r.inputs = deck_input_files();
       const RunIdentity& id = summary_.identity;
-      r.identity = OutputManifest{id.run_id, id.deck_path, id.deck_sha256, mesh_hash_, id.started_utc, id.host, {}};
+      r.identity = OutputManifest{id.run_id, id.deck_path, id.deck_sha256, mesh_hash_, id.started_utc, id.host, {}, {}};
       r.resume = resume_.has_value();
       r.restart_path = options_.restart_path;
       r.restart_run_id = restart_run_id_;
@@ -397,6 +397,8 @@ void DeckRun::open_outputs() {
   agree_on_errors(reserve_error);
   if (root_) {
     try {
+      // This process's segment (tribex join stitches per-rank results of several rank counts by them).
+      folder_->manifest.segments.push_back({ranks_, integrator_->time()});
       record_written_files(out_, folder_->manifest);
     } catch (const SetupError& e) {
       log_.say(std::string("warning: ") + e.what());  // a later fresh run then keeps those files (safe)

@@ -15,6 +15,10 @@ with Debian's /usr/bin/python3 (netCDF4).
       one scale); the global variable names are history.csv's columns, whole. --distributed: `set-up = distributed` (each rank generates its slab), and
       log.txt must show it did not fall back to the serial set-up. --open-files K: the join runs with
       `ulimit -n` K (RLIMIT_NOFILE), fewer descriptors than rank files.
+  check_exodus_join.py segments TRIBEX DECK OUT --from-ranks N --ranks M --stop STEP
+      DECK on N ranks stopped after STEP, resumed on M ranks into the same folder; `tribex join` on it (no
+      --ranks: the manifest's run segments) must equal the uninterrupted M-rank run's joined file (times and
+      mesh bitwise, variables within RTOL of their field's largest value).
   check_exodus_join.py bad TRIBEX DECK OUT --ranks N
       OUT/npN of an agree run: `tribex join` on a copy without rank 1's file, on a copy with rank 1's file
       cut to half and to all but its last 64 bytes, and on a copy holding a results.exo of the user's:
@@ -176,6 +180,39 @@ def agree(a):
     print("PASS")
 
 
+def segments(a):
+    """--from-ranks N --ranks M --stop STEP: N ranks stopped after STEP and resumed on M into the same folder
+    leave results.exo.N.r and results.exo.M.r; `tribex join` (no --ranks) stitches them by the manifest's run
+    segments and must give the uninterrupted M-rank run's joined file: mesh arrays and times bitwise, every
+    variable within RTOL of its field's largest value (the M-rank state from STEP on is the N-rank one moved by
+    global numbers: round-off, as the N -> M restart tests)."""
+    deck = deck_for(a)
+    whole, cut = os.path.join(a.out, f"np{a.ranks}"), os.path.join(a.out, "segments")
+    for d in (whole, cut):
+        shutil.rmtree(d, ignore_errors=True)
+    run(a.tribex, deck, whole, a.ranks)
+    run(a.tribex, deck, cut, a.from_ranks, "--stop-at-step", str(a.stop), check=False)
+    if not os.path.exists(os.path.join(cut, "restart.h5")):
+        sys.exit(f"FAIL: the {a.from_ranks}-rank run stopped after step {a.stop} left no restart.h5")
+    run(a.tribex, deck, cut, a.ranks, "--restart", os.path.join(cut, "restart.h5"))
+    for n in (a.from_ranks, a.ranks):
+        if not os.path.exists(os.path.join(cut, f"results.exo.{n}.0")):
+            sys.exit(f"FAIL: no results.exo.{n}.0 in {cut}")
+    for folder in (whole, cut):
+        p = subprocess.run([a.tribex, "join", folder], capture_output=True, text=True)
+        if p.returncode != 0:
+            sys.exit(f"FAIL: tribex join {folder} exited {p.returncode}: {p.stderr}")
+        print(p.stdout.strip())
+    with netCDF4.Dataset(os.path.join(whole, "results.exo")) as w, netCDF4.Dataset(os.path.join(cut, "results.exo")) as j:
+        exact, sides = compare_mesh(w, j)
+        worst = compare_variables(w, j, a.rtol)
+        steps = w.dimensions["time_step"].size
+    print(f"{a.from_ranks} -> {a.ranks} ranks after step {a.stop}, joined by segments = the uninterrupted {a.ranks}-rank "
+          f"run joined: {exact} arrays bitwise (times included), {sides} side sets as pairs, {steps} steps, largest "
+          f"variable difference {worst:.3g} of its field's largest value")
+    print("PASS")
+
+
 def expect_refused(tribex, folder, what, must_name):
     p = subprocess.run([tribex, "join", folder], capture_output=True, text=True)
     lines = p.stderr.strip().splitlines()
@@ -225,7 +262,7 @@ def bad(a):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("mode", choices=["agree", "bad"])
+    ap.add_argument("mode", choices=["agree", "bad", "segments"])
     ap.add_argument("tribex")
     ap.add_argument("deck")
     ap.add_argument("out")
@@ -234,9 +271,12 @@ def main():
     ap.add_argument("--distributed", action="store_true")
     ap.add_argument("--termination", default="")
     ap.add_argument("--increment", default="")
+    ap.add_argument("--from-ranks", type=int, default=2, help="segments: the rank count of the stopped run")
+    ap.add_argument("--stop", type=int, default=50, help="segments: the step the first run stops after")
     ap.add_argument("--open-files", type=int, default=0, help="run the join with this many file descriptors (ulimit -n)")
     a = ap.parse_args()
-    agree(a) if a.mode == "agree" else bad(a)
+    ap_modes = {"agree": agree, "bad": bad, "segments": segments}
+    ap_modes[a.mode](a)
 
 
 if __name__ == "__main__":

@@ -7,6 +7,9 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
+#include <optional>
 #include <deque>
 #include <filesystem>
 #include <map>
@@ -128,8 +131,8 @@ std::vector<std::string> variable_names(const RankFile& f, ex_entity_type type) 
   return names;
 }
 
-// N from the names OUT/results.exo.N.r (or `ranks`), every rank's file there.
-int rank_count(const std::string& folder, int ranks) {
+// The rank counts N of the per-rank files OUT/results.exo.N.r there.
+std::set<int> rank_counts_present(const std::string& folder) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
     throw BadInput(folder + ": not a folder; give the output folder of a parallel run (tribex join OUT)");
@@ -140,23 +143,57 @@ int rank_count(const std::string& folder, int ranks) {
     const std::string name = entry.path().filename().string();
     if (std::regex_match(name, m, pattern) && m[1].length() < 7) counts.insert(std::stoi(m[1]));
   }
-  if (ranks <= 0) {
-    if (counts.empty())
-      throw BadInput(folder + ": no per-rank results files (results.exo.N.r); a parallel run with format = exodus "
-                              "or both writes them");
-    if (counts.size() > 1)
-      throw BadInput(folder + ": per-rank results files of " + std::to_string(counts.size()) +
-                     " rank counts (results.exo.N.r with N = " + std::to_string(*counts.begin()) + ", " +
-                     std::to_string(*counts.rbegin()) + ", ...); choose one with --ranks N");
-    ranks = *counts.begin();
-  }
+  if (counts.empty())
+    throw BadInput(folder + ": no per-rank results files (results.exo.N.r); a parallel run with format = exodus "
+                            "or both writes them");
+  return counts;
+}
+
+void require_rank_files(const std::string& folder, int ranks) {
+  std::error_code ec;
   for (int r = 0; r < ranks; ++r) {
     const fs::path p = fs::path(folder) / solver::output::rank_file_name(ranks, r);
     if (!fs::is_regular_file(p, ec))
       throw BadInput(p.string() + ": missing (rank " + std::to_string(r) + " of " + std::to_string(ranks) +
                      "); every rank's file is needed: run again, or resume from a restart file");
   }
-  return ranks;
+}
+
+// What to join: one rank count (`ranks`, or the only one there) from its first step to its last, or, when
+// the folder holds several, the run's segments as its manifest records them (a run resumed on another rank
+// count: solver/output/README.md "Restart on another rank count"), consecutive ones of one rank count merged.
+// Segment k gives its rank count's steps with from_time(k) <= t < from_time(k + 1); the first has no lower bound.
+std::vector<solver::RunSegment> segments_to_join(const std::string& folder, int ranks) {
+  const double all = -std::numeric_limits<double>::infinity();
+  const std::set<int> counts = rank_counts_present(folder);
+  if (ranks <= 0 && counts.size() == 1) ranks = *counts.begin();
+  if (ranks > 0) {
+    require_rank_files(folder, ranks);
+    return {{ranks, all}};
+  }
+  std::optional<solver::OutputManifest> manifest;
+  try {
+    manifest = solver::read_manifest(folder);
+  } catch (const std::exception& e) {
+    throw BadInput(e.what());
+  }
+  std::vector<solver::RunSegment> segments;
+  std::set<int> listed;
+  for (const auto& g : manifest ? manifest->segments : std::vector<solver::RunSegment>{}) {
+    if (segments.empty() || segments.back().ranks != g.ranks) segments.push_back(g);
+    listed.insert(g.ranks);
+  }
+  if (listed != counts)
+    throw BadInput(folder + ": per-rank results files of " + std::to_string(counts.size()) +
+                   " rank counts (results.exo.N.r with N = " + std::to_string(*counts.begin()) + ", " +
+                   std::to_string(*counts.rbegin()) + ", ...) that the folder's manifest does not list as the segments "
+                   "of its run; choose one with --ranks N");
+  for (std::size_t k = 1; k < segments.size(); ++k)
+    if (!(segments[k].from_time >= segments[k - 1].from_time))
+      throw BadInput(folder + ": the manifest's run segments go back in time; choose one rank count with --ranks N");
+  for (int n : counts) require_rank_files(folder, n);
+  segments.front().from_time = all;
+  return segments;
 }
 
 void open_rank(RankFile& f) {
@@ -302,6 +339,19 @@ struct Variables {
   std::vector<double> times;
 };
 
+// The files of one rank count, open (up to the limit), with their variables and times.
+struct RankSet {
+  int ranks = 0;
+  std::vector<std::unique_ptr<RankFile>> files;
+  Variables variables;
+};
+
+// One step of the joined file: step `step` (1-based) of `set`'s files.
+struct StepSource {
+  const RankSet* set = nullptr;
+  int step = 0;
+};
+
 Variables read_variables(const std::vector<std::unique_ptr<RankFile>>& files) {
   Variables v;
   for (const auto& f : files) {
@@ -347,20 +397,23 @@ void define_variables(int out, const Variables& v, int blocks, const std::string
   }
 }
 
-// Every step: one variable of one step in memory at a time (`values`, the whole mesh's rows of it).
-void join_steps(const std::vector<std::unique_ptr<RankFile>>& files, const mesh::Mesh& whole, const Variables& v, int out,
+// Every step of `steps`, in order: one variable of one step in memory at a time (`values`, the whole mesh's rows of it).
+void join_steps(const std::vector<StepSource>& steps, const mesh::Mesh& whole, const Variables& v, int out,
                 const std::string& path) {
   const auto check = [&](int status, const std::string& what) {
     if (status < 0) throw BadInput(path + ": cannot write " + what + "; check the disk space");
   };
   std::vector<double> values(static_cast<std::size_t>(std::max(whole.node_count(), whole.element_count()))), buffer;
   std::vector<double> globals(v.global.size());
-  for (int k = 1; k <= static_cast<int>(v.times.size()); ++k) {
+  for (int j = 1; j <= static_cast<int>(steps.size()); ++j) {
+    const auto& files = steps[static_cast<std::size_t>(j - 1)].set->files;
+    const int k = steps[static_cast<std::size_t>(j - 1)].step;  // in its rank files
+    const double time = steps[static_cast<std::size_t>(j - 1)].set->variables.times[static_cast<std::size_t>(k - 1)];
     const std::string step = "step " + std::to_string(k);
-    check(ex_put_time(out, k, &v.times[static_cast<std::size_t>(k - 1)]), step + "'s time");
+    check(ex_put_time(out, j, &time), step + "'s time");
     if (!globals.empty()) {
       files[0]->check(ex_get_glob_vars(files[0]->handle(), k, static_cast<int>(globals.size()), globals.data()), step);
-      check(ex_put_glob_vars(out, k, static_cast<int>(globals.size()), globals.data()), step + "'s global variables");
+      check(ex_put_glob_vars(out, j, static_cast<int>(globals.size()), globals.data()), step + "'s global variables");
     }
     for (int var = 1; var <= static_cast<int>(v.nodal.size()); ++var) {
       for (const auto& f : files) {
@@ -368,7 +421,7 @@ void join_steps(const std::vector<std::unique_ptr<RankFile>>& files, const mesh:
         f->check(ex_get_var(f->handle(), k, EX_NODAL, var, 1, f->nodes, buffer.data()), step + " of '" + v.nodal[var - 1] + "'");
         for (std::size_t i = 0; i < buffer.size(); ++i) values[static_cast<std::size_t>(f->node_map[i])] = buffer[i];
       }
-      check(ex_put_var(out, k, EX_NODAL, var, 1, whole.node_count(), values.data()), step + " of '" + v.nodal[var - 1] + "'");
+      check(ex_put_var(out, j, EX_NODAL, var, 1, whole.node_count(), values.data()), step + " of '" + v.nodal[var - 1] + "'");
     }
     for (int var = 1; var <= static_cast<int>(v.element.size()); ++var)
       for (std::size_t b = 0; b < whole.blocks.size(); ++b) {
@@ -382,7 +435,7 @@ void join_steps(const std::vector<std::unique_ptr<RankFile>>& files, const mesh:
           for (int i = 0; i < count; ++i)
             values[static_cast<std::size_t>(f->element_map[static_cast<std::size_t>(f->block_first[b] + i)])] = buffer[i];
         }
-        check(ex_put_var(out, k, EX_ELEM_BLOCK, var, static_cast<int>(b + 1), blk.element_count, values.data() + blk.first_element),
+        check(ex_put_var(out, j, EX_ELEM_BLOCK, var, static_cast<int>(b + 1), blk.element_count, values.data() + blk.first_element),
               step + " of '" + v.element[var - 1] + "'");
       }
   }
@@ -436,30 +489,51 @@ void record_in_manifest(const std::string& folder) {
 
 }  // namespace
 
-JoinReport join_rank_files(const std::string& folder, int ranks) {
-  JoinReport report;
-  report.ranks = rank_count(folder, ranks);
-  const fs::path target = fs::path(folder) / "results.exo", partial = fs::path(folder) / ".results.exo.partial";
-  check_target(folder, target);
-  mesh::require_output_target(partial.string());
-  OpenLimit limit(rank_files_allowed());
-  std::vector<std::unique_ptr<RankFile>> files;
-  for (int r = 0; r < report.ranks; ++r) {
-    files.push_back(std::make_unique<RankFile>());
-    files.back()->limit = &limit;
-    files.back()->path = (fs::path(folder) / solver::output::rank_file_name(report.ranks, r)).string();
-    open_rank(*files.back());
+namespace {
+
+// The files of `ranks` ranks, their headers read (at most the limit open at once).
+void open_set(const std::string& folder, RankSet& set, OpenLimit& limit) {
+  for (int r = 0; r < set.ranks; ++r) {
+    set.files.push_back(std::make_unique<RankFile>());
+    set.files.back()->limit = &limit;
+    set.files.back()->path = (fs::path(folder) / solver::output::rank_file_name(set.ranks, r)).string();
+    open_rank(*set.files.back());
   }
-  int global_nodes = 0, global_elements = 0, blocks = 0, node_sets = 0, side_sets = 0;
-  files[0]->check(ex_get_init_global(files[0]->handle(), &global_nodes, &global_elements, &blocks, &node_sets, &side_sets),
-                  "the Nemesis global counts (not a tribex rank file?)");
-  mesh::Mesh whole;
-  join_blocks(files, whole);
-  join_nodes_and_sets(files, global_nodes, whole);
-  if (whole.element_count() != global_elements) files[0]->fail("its global element count is not the files' sum");
-  const Variables variables = read_variables(files);
+  set.variables = read_variables(set.files);
+}
+
+// The joined file's steps: each segment's steps in its time window, in order. The other rank counts' files
+// must hold the mesh (global counts, blocks) and the variables of `last`, whose files give the mesh.
+std::vector<StepSource> pick_steps(const std::vector<solver::RunSegment>& segments, const std::vector<RankSet>& sets,
+                                   const RankSet& last, const std::array<int, 2>& global) {
+  for (const auto& set : sets) {
+    const RankFile& f = *set.files[0];
+    int nodes = 0, elements = 0, blocks = 0, node_sets = 0, side_sets = 0;
+    f.check(ex_get_init_global(f.handle(), &nodes, &elements, &blocks, &node_sets, &side_sets), "the Nemesis global counts");
+    if (nodes != global[0] || elements != global[1] || f.block_ids != last.files[0]->block_ids)
+      f.fail("its mesh is not the one of " + last.files[0]->path + " (another run's files?)");
+    const Variables& v = set.variables;
+    if (v.global != last.variables.global || v.nodal != last.variables.nodal || v.element != last.variables.element)
+      f.fail("its variables are not those of " + last.files[0]->path);
+  }
+  std::vector<StepSource> steps;
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const RankSet& set = *std::find_if(sets.begin(), sets.end(), [&](const RankSet& s) { return s.ranks == segments[k].ranks; });
+    const double to = k + 1 < segments.size() ? segments[k + 1].from_time : std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < set.variables.times.size(); ++i) {
+      const double t = set.variables.times[i];
+      if (t >= segments[k].from_time && t < to) steps.push_back({&set, static_cast<int>(i) + 1});
+    }
+  }
+  return steps;
+}
+
+// Writes the joined file through `partial` (removed on any error).
+void write_joined(const mesh::Mesh& whole, const RankSet& last, const std::vector<StepSource>& steps,
+                  const fs::path& partial) {
   std::vector<std::string> notes;
-  const mesh::ExodusLengthUnit unit = info_records(*files[0], notes);
+  const mesh::ExodusLengthUnit unit = info_records(*last.files[0], notes);
+  const Variables& variables = last.variables;
   int out = -1;
   try {
     std::size_t longest = 32;  // as the writer: the file's name length fixed at creation, long enough for every name
@@ -468,7 +542,7 @@ JoinReport join_rank_files(const std::string& folder, int ranks) {
     out = mesh::exodus::create_with_mesh(whole, partial.string(), "tribex results", mesh::ExodusFormat::offset64, unit,
                                          notes, false, longest);
     define_variables(out, variables, static_cast<int>(whole.blocks.size()), partial.string());
-    join_steps(files, whole, variables, out, partial.string());
+    join_steps(steps, whole, variables, out, partial.string());
     const int closed = ex_close(out);
     out = -1;
     if (closed < 0) throw BadInput(partial.string() + ": cannot close the joined file; check the disk space");
@@ -478,6 +552,37 @@ JoinReport join_rank_files(const std::string& folder, int ranks) {
     fs::remove(partial, ec);
     throw;
   }
+}
+
+}  // namespace
+
+JoinReport join_rank_files(const std::string& folder, int ranks) {
+  JoinReport report;
+  const std::vector<solver::RunSegment> segments = segments_to_join(folder, ranks);
+  const fs::path target = fs::path(folder) / "results.exo", partial = fs::path(folder) / ".results.exo.partial";
+  check_target(folder, target);
+  mesh::require_output_target(partial.string());
+  OpenLimit limit(rank_files_allowed());
+  std::vector<RankSet> sets;
+  sets.reserve(segments.size());  // StepSource points into it
+  for (const auto& g : segments)
+    if (std::none_of(sets.begin(), sets.end(), [&](const RankSet& s) { return s.ranks == g.ranks; })) {
+      sets.emplace_back();
+      sets.back().ranks = g.ranks;
+      open_set(folder, sets.back(), limit);
+    }
+  // The mesh from the last segment's files (every segment's is the same mesh: pick_steps checks).
+  const RankSet& last = *std::find_if(sets.begin(), sets.end(), [&](const RankSet& s) { return s.ranks == segments.back().ranks; });
+  const auto& files = last.files;
+  int global_nodes = 0, global_elements = 0, blocks = 0, node_sets = 0, side_sets = 0;
+  files[0]->check(ex_get_init_global(files[0]->handle(), &global_nodes, &global_elements, &blocks, &node_sets, &side_sets),
+                  "the Nemesis global counts (not a tribex rank file?)");
+  mesh::Mesh whole;
+  join_blocks(files, whole);
+  join_nodes_and_sets(files, global_nodes, whole);
+  if (whole.element_count() != global_elements) files[0]->fail("its global element count is not the files' sum");
+  const std::vector<StepSource> steps = pick_steps(segments, sets, last, {global_nodes, global_elements});
+  write_joined(whole, last, steps, partial);
   std::error_code ec;
   fs::rename(partial, target, ec);
   if (ec) {
@@ -485,7 +590,9 @@ JoinReport join_rank_files(const std::string& folder, int ranks) {
     throw BadInput(target.string() + ": cannot rename the joined file into place; check the folder's permissions");
   }
   record_in_manifest(folder);
-  report.steps = static_cast<int>(variables.times.size());
+  report.ranks = last.ranks;
+  report.segments = static_cast<int>(segments.size());
+  report.steps = static_cast<int>(steps.size());
   report.nodes = whole.node_count();
   report.elements = whole.element_count();
   report.path = target.string();

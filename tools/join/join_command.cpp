@@ -20,7 +20,10 @@ const char* join_usage =
     "writes (coordinates, connectivity, blocks, node and side sets, every variable at every step), as\n"
     "SEACAS epu does. Written through OUT/.results.exo.partial and a rename; a missing or incomplete rank\n"
     "file is exit 2 with nothing written. ParaView opens the per-rank files as one data set too.\n"
-    "  --ranks N   the rank count to join when the folder holds files of several (results.exo.N.r)\n";
+    "A run resumed on another rank count leaves the files of each (results.exo.N.r, results.exo.M.r): the\n"
+    "join takes each rank count's steps from its segment's start (the restart time) to the next one's, as\n"
+    "the folder's manifest lists the segments, into one results.exo.\n"
+    "  --ranks N   join the files of N ranks only, all their steps\n";
 
 }  // namespace
 
@@ -34,8 +37,12 @@ int join_command(const std::vector<std::string>& args) {
     throw BadInput("tribex join takes one output folder, got " + std::to_string(a.positional_count()));
   if (ranks < 0 || ranks > 1000000) throw BadInput("tribex join: --ranks must be a positive rank count, got " + std::to_string(ranks));
   const join::JoinReport r = join::join_rank_files(folder, static_cast<int>(ranks));
-  std::printf("joined %d rank files into %s: %lld nodes, %lld elements, %d steps\n", r.ranks, r.path.c_str(), r.nodes,
-              r.elements, r.steps);
+  if (r.segments > 1)
+    std::printf("joined %d run segments (the last on %d ranks) into %s: %lld nodes, %lld elements, %d steps\n", r.segments,
+                r.ranks, r.path.c_str(), r.nodes, r.elements, r.steps);
+  else
+    std::printf("joined %d rank files into %s: %lld nodes, %lld elements, %d steps\n", r.ranks, r.path.c_str(), r.nodes,
+                r.elements, r.steps);
   return tools::exit_ok;
 }
 
