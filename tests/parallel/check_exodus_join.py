@@ -210,6 +210,18 @@ def segments(a):
     print(f"{a.from_ranks} -> {a.ranks} ranks after step {a.stop}, joined by segments = the uninterrupted {a.ranks}-rank "
           f"run joined: {exact} arrays bitwise (times included), {sides} side sets as pairs, {steps} steps, largest "
           f"variable difference {worst:.3g} of its field's largest value")
+    # A one-rank segment writes results.exo itself: the join must not replace it (its steps are in no rank file).
+    serial = os.path.join(a.out, "serial_segment")
+    shutil.rmtree(serial, ignore_errors=True)
+    run(a.tribex, deck, serial, 1, "--stop-at-step", str(a.stop), check=False)
+    run(a.tribex, deck, serial, a.ranks, "--restart", os.path.join(serial, "restart.h5"))
+    with open(os.path.join(serial, "results.exo"), "rb") as f:
+        before = f.read()
+    expect_refused(a.tribex, serial, "a folder whose results.exo is the one-rank segment's", "results.exo")
+    with open(os.path.join(serial, "results.exo"), "rb") as f:
+        if f.read() != before:
+            sys.exit("FAIL: tribex join changed the one-rank segment's results.exo")
+    print("1 -> M in one folder: tribex join refused to replace the one-rank segment's results.exo (exit 2)")
     print("PASS")
 
 
@@ -218,7 +230,7 @@ def expect_refused(tribex, folder, what, must_name):
     lines = p.stderr.strip().splitlines()
     if p.returncode != 2 or len(lines) != 1 or must_name not in lines[0]:
         sys.exit(f"FAIL: join with {what}: exit {p.returncode}, stderr {p.stderr!r} (expected exit 2, one line naming {must_name})")
-    for n in (".results.exo.partial",) + (() if what == "a user's results.exo" else ("results.exo",)):
+    for n in (".results.exo.partial",) + (() if "results.exo" in what else ("results.exo",)):  # a results.exo there stays
         if os.path.exists(os.path.join(folder, n)):
             sys.exit(f"FAIL: join with {what} left {n}")
     print(f"{what}: exit 2, {lines[0]}")

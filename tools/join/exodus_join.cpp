@@ -471,6 +471,12 @@ void check_target(const std::string& folder, const fs::path& target) {
   if (!entry || !solver::written_by_run(folder, *entry, manifest->run_id))
     throw BadInput(target.string() + " exists and is not a file this folder's run wrote (its manifest does not list it "
                                      "as written); move it away, then join again");
+  // A one-rank segment of the run (a restart 1 -> M or N -> 1) wrote results.exo itself: its steps are in no
+  // rank file, so replacing it would lose them.
+  for (const auto& g : manifest->segments)
+    if (g.ranks == 1)
+      throw BadInput(target.string() + " holds the steps of the run's one-rank segment, which no rank file holds; "
+                                       "move it away, then join again");
 }
 
 void record_in_manifest(const std::string& folder) {
