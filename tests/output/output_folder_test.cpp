@@ -33,7 +33,7 @@ std::set<std::string> listing(const fs::path& d) {
 }
 
 OutputManifest sample_identity() {
-  return {new_run_id(), "deck \"a\".i", "", "0123abcd", "2026-11-28T00:00:00Z", "vm", {}};
+  return {new_run_id(), "deck \"a\".i", "", "0123abcd", "2026-11-28T00:00:00Z", "vm", {}, {}};
 }
 
 }  // namespace
@@ -53,6 +53,24 @@ TEST(OutputManifest, RoundTripsAndRefusesAForeignFile) {
   std::string escaping = manifest_json(m);
   escaping.replace(escaping.find("history.csv"), 11, "../etc/pass");  // never a path outside the folder
   EXPECT_THROW(parse_manifest(escaping, "x"), SetupError);
+}
+
+// The run's segments (tribex join stitches a run resumed on another rank count by them): the restart time
+// read back as the same double, and a manifest without the key (before 2026-11-29) has none.
+TEST(OutputManifest, SegmentsRoundTripBitwise) {
+  OutputManifest m = sample_identity();
+  m.segments = {{2, 0.0}, {4, 3.4109335306355996e-12}, {3, 1.0 / 3.0}};
+  const OutputManifest back = parse_manifest(manifest_json(m), "x");
+  ASSERT_EQ(back.segments.size(), 3u);
+  EXPECT_EQ(back.segments[1].ranks, 4);
+  EXPECT_EQ(back.segments[1].from_time, 3.4109335306355996e-12);
+  EXPECT_EQ(back.segments[2].from_time, 1.0 / 3.0);
+  std::string old = manifest_json(sample_identity());
+  old.erase(old.find(",\n  \"segments\""), std::string(",\n  \"segments\": [\n  ]").size());
+  EXPECT_TRUE(parse_manifest(old, "x").segments.empty());
+  std::string bad = manifest_json(m);
+  bad.replace(bad.find("\"ranks\": 4"), 11, "\"ranks\": 0");
+  EXPECT_THROW(parse_manifest(bad, "x"), SetupError);
 }
 
 TEST(OutputLock, RefusesASecondHolderNamingTheFirstAndIsGoneAfterRelease) {
