@@ -5,8 +5,10 @@
 // segment it has read: about 0.73 MB per peer at 128 ranks on one node
 // (docs/measurements/2026-11-29-output-memory.md, section 4), O(P) per rank at cluster scale in memory
 // and time. Here a rank learns how many ranks will send to it with one MPI_Reduce_scatter_block of a 0/1
-// "I send to you" vector (a reduction: Open MPI's algorithms for it exchange with O(log P) partners),
-// then the counts and the values travel point to point between the pairs with a nonzero count.
+// "I send to you" vector (a reduction, whose tree or recursive-halving algorithms pair a rank with O(log P)
+// others: at 64 ranks a rank had read from 12-13 peers when the set-up reached the partitioner,
+// docs/measurements/2026-11-29-sparse-exchange.md), then the counts and the values travel point to point
+// between the pairs with a nonzero count.
 // Every receive lands at the offset the caller gives, so the result is what MPI_Alltoallv gives, bit for bit.
 #pragma once
 
