@@ -293,6 +293,7 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
                             spec.surfaces[static_cast<std::size_t>(s.master)]);
     s.symmetric = it.symmetric;
     s.penalty_scale = spec.penalty_scale_factor;
+    s.force_along_axis = it.force_along_axis;
     s.search_margin = spec.search_margin.value_or(0.0);
     set_law(it, s, report, findings);
     order_roles(it, spec, block_modulus, faces, s, report);
