@@ -242,6 +242,47 @@ for _c in range(2, 8):
 # ends (0.037 nm): KE/IE was 4.3-7.6 % on their first 1-3 fitted rows. They slow down by 0.025 nm, as case1_h0.2.
 for _c in (4, 5):
     RUNS[f"case{_c}_h0.2"]["fit_start"] = (0.025, RUNS[f"case{_c}_h0.2"]["fit_start"][1])
+# Issue 52, the continuum's own problem (README.md "Cases 4 and 5"): every case at 0.3 nm, and case 1 at 0.5 / 0.4 /
+# 0.3 / 0.2 nm, with the penalty force along the axis (`force direction = axis`: the small-slope contact of the
+# layered continuum, whose tractions are normal to the flat; the sphere's normal adds a radial traction p r/R
+# that shears the soft coating outward) and the penalty scaled to the coating (penalty_scale below). The drive
+# of the caseN_h0.2 decks (slower at the first fitted load), case 1's own at 0.5 and 0.4 nm.
+
+
+def penalty_scale(case):
+    """The contact's `penalty scale factor` s of case `case`: k_A = s m_eff/(dt^2 A) follows the coating's node
+    mass and silicon's step, not the coating's modulus, so the penalty's compliance M_c/k_A (an interface layer
+    of coating) and the edge estimator's reading (its linear interpolation between the penalty's overlap
+    inside and the gap outside) changed from case to case: s = 1 in case 1; in case 4 (E_c = 2 GPa) the
+    edge read 2.5 % lower in f than the radius of the nodal forces at small loads (profile.py, 0.3 nm), 0.5 %
+    at s = 0.25. s = (Ebar_c/Ebar)/(Ebar_c/Ebar of case 1) keeps M_c/k_A at case 1's in every case (k_A
+    scales with Ebar through dt^-2, so case 7 keeps s = 1); capped at 2, the deck's stability bound."""
+    R, E, Ec, _, _ = TABLE_B1[case]
+    ratio = (Ec / (1 - NU_C ** 2)) / (E / (1 - NU ** 2))
+    R1, E1, Ec1, _, _ = TABLE_B1[1]
+    return min(2.0, round(ratio / ((Ec1 / (1 - NU_C ** 2)) / (E1 / (1 - NU ** 2))), 3))
+
+
+for _c in range(1, 8):
+    RUNS[f"case{_c}_axis_h0.3"] = dict(case=_c, h=0.3, fit_start=RUNS["case1_h0.2" if _c == 1 else f"case{_c}_h0.2"]["fit_start"],
+                                       axis_force=True, penalty=penalty_scale(_c))
+RUNS["case1_axis_h0.5"] = dict(case=1, h=0.5, axis_force=True, penalty=1.0)
+RUNS["case1_axis_h0.4"] = dict(case=1, h=0.4, axis_force=True, penalty=1.0)
+RUNS["case1_axis_h0.2"] = dict(case=1, h=0.2, fit_start=RUNS["case1_h0.2"]["fit_start"], axis_force=True, penalty=1.0)
+
+# Issue 52, the softest coating (case 4) on the refined meshes, with fields for diagnose.py: why cases 4 and 5
+# keep a tilt at 0.2 nm (README.md "Cases 4 and 5"). The drive of case4_h0.2; coating layers by coating_layers(h).
+_LATE_DIAGNOSTICS = {
+    "diag_case4_h0.3": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"]),
+    "diag_case4_h0.2": dict(case=4, h=0.2, fit_start=RUNS["case4_h0.2"]["fit_start"]),
+    "diag_case4_h0.3_pen0.25": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"], penalty=0.25),
+    "diag_case4_h0.3_axis": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"], axis_force=True),
+    "diag_case4_h0.3_axis_pen0.25": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"], axis_force=True,
+                                         penalty=0.25),
+}
+DIAGNOSTICS.update(_LATE_DIAGNOSTICS)
+for _name, _over in _LATE_DIAGNOSTICS.items():
+    RUNS[_name] = {**dict(case=1, h=0.4, diagnostic=True, fields=2.0), **_over}
 
 
 def write(name, run, folder=os.path.join(HERE, "decks")):
@@ -286,6 +327,9 @@ def write(name, run, folder=os.path.join(HERE, "decks")):
     if "penalty" in run:
         text = text.replace("contact axis = 0 0 0 0 0 1 nm",
                             f"contact axis = 0 0 0 0 0 1 nm\n        penalty scale factor = {run['penalty']:g}")
+    if run.get("axis_force"):  # the continuum's small-slope contact: tractions along the axis (README.md "Cases 4 and 5")
+        text = text.replace("          surfaces = tip flat\n",
+                            "          surfaces = tip flat\n          force direction = axis\n")
     if run.get("hertz"):  # equal materials: no swap, so name the coating the slave as the study's runs have it
         text = text.replace("surfaces = tip flat", "surfaces = flat tip")
     write_deck(folder, name, text)
