@@ -152,7 +152,7 @@ begin sierra case5_axis_h0.3
         contact surface tip contains tip_surface
         contact surface flat contains substrate_top
         contact axis = 0 0 0 0 0 1 nm
-        penalty scale factor = 0.5
+        penalty scale factor = 0.55
         begin interaction sphere_flat
           surfaces = tip flat
           force direction = axis

@@ -137,7 +137,7 @@ begin sierra case6_axis_h0.3
         contact surface tip contains tip_surface
         contact surface flat contains substrate_top
         contact axis = 0 0 0 0 0 1 nm
-        penalty scale factor = 2
+        penalty scale factor = 1.7
         begin interaction sphere_flat
           surfaces = tip flat
           force direction = axis
