@@ -262,7 +262,7 @@ def penalty_scale(case):
     coating's node mass and silicon's step, not the contact's pressure: at s = 1 the overlap was 0.4 % of the
     approach in case 4 (E_c = 2 GPa) and the edge estimator, which interpolates the gap linearly between the
     penalty's overlap inside and the opening gap outside, read 2.5 % lower in f than the radius of the nodal
-    forces at small loads (profile.py, 0.3 nm); at s = 0.25 (overlap 1.4-1.7 %) 0.5 % lower. Rounded to 2 digits."""
+    forces at small loads (pressure_profile.py, 0.3 nm); at s = 0.25 (overlap 1.4-1.7 %) 0.5 % lower. Rounded to 2 digits."""
     return float(f"{P0_OVER_DELTA_VS_CASE1[case]:.2g}")
 
 

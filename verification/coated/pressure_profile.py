@@ -3,7 +3,7 @@
 """The FE's contact pressure against the layered continuum's p(r) at the same load (issue 52, cases 4 and 5):
 separates what the contact radius estimator reads from what the contact itself does.
 
-  /usr/bin/python3 verification/coated/profile.py RUN [RUN ...] [--runs build/verification] [--tribex BIN] [--rows]
+  /usr/bin/python3 verification/coated/pressure_profile.py RUN [RUN ...] [--runs build/verification] [--tribex BIN] [--rows]
 
 RUN: a deck of make_decks.RUNS with field output (the diag_* decks). At every field output on diagnose.py's
 rows (P~ from 0.02 to the case's maximum, a from 3 element sizes to the fine region's edge), with the
@@ -165,7 +165,7 @@ def main():
     a = ap.parse_args()
     for name in a.run:
         if name not in RUNS:
-            print(f"profile.py: error: unknown run '{name}' (make_decks.py RUNS)", file=sys.stderr)
+            print(f"pressure_profile.py: error: unknown run '{name}' (make_decks.py RUNS)", file=sys.stderr)
             return 2
         _, lines = analyse(name, a.runs, a.tribex, a.rows)
         print("\n".join(lines))
