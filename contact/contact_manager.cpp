@@ -23,6 +23,7 @@ ContactManager::ContactManager(std::vector<ContactSurface> surfaces, std::vector
       p.margin = it.search_margin > 0 ? it.search_margin : surfaces_[p.master].mean_edge;
       p.research_fraction = it.research_fraction;
       p.penalty_scale = it.penalty_scale;
+      p.force_along_axis = it.force_along_axis;
       p.law = it.law;
       p.primary = k == 0;
       p.x_at_search.resize(3 * (surfaces_[p.slave].nodes.size() + surfaces_[p.master].nodes.size()));

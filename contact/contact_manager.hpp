@@ -52,6 +52,7 @@ struct InteractionSettings {
   int master = 1;
   bool symmetric = false;          // two passes, each surface slave once, factor 1/2
   double penalty_scale = 1.0;      // k_p dt^2 / m_eff
+  bool force_along_axis = false;   // node to face: the penalty force along the contact axis, not the master normal
   double search_margin = 0.0;      // m; 0: the mean face edge of the master surface
   double research_fraction = 0.25; // re-search when a node moved this fraction of the margin
   ContactLaw law;                  // frictionless by default (laws/contact_law.hpp); the margin must cover its reach
@@ -228,6 +229,7 @@ class ContactManager {
     double margin;
     double research_fraction;
     double penalty_scale;
+    bool force_along_axis = false;  // InteractionSettings::force_along_axis (needs the axis set)
     ContactLaw law;
     double stable_dt = INFINITY;  // the law's critical step of the last compute_forces
     std::vector<int> candidate_offset, candidates;

@@ -294,6 +294,9 @@ struct InteractionSpec {
   std::string model = "frictionless";  // a law's deck name, checked by the builder
   bool symmetric = false;
   InteractionEnforcement enforcement = InteractionEnforcement::node_to_face;
+  /// `force direction = axis`: the penalty force along the contact axis instead of the master normal (the
+  /// small-slope contact of the half-space theories; contact/README.md "Force direction").
+  bool force_along_axis = false;
   contact::KeyValues values;           // the law's keys the deck gives (SI; paths resolved against the deck)
   std::map<std::string, SourceLocation> key_where;  // where each of them is given
   SourceLocation where;

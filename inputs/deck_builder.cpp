@@ -733,6 +733,7 @@ class Builder {
       if (auto v = get(*it, "symmetric")) i.symmetric = v->flag;
       if (word(*it, "enforcement") == "mortar") i.enforcement = InteractionEnforcement::mortar;
       interaction_law(*it, i);
+      force_direction(*it, i, spec.axis.has_value());
       spec.interactions.push_back(i);
     }
     return spec;
@@ -754,6 +755,19 @@ class Builder {
       const std::string why = contact::mortar_problem(law);
       if (!why.empty()) error(where(it, "enforcement"), it, why);
     }
+  }
+
+  // `force direction = axis`: the penalty force along the contact axis. Only where it means one thing: the
+  // node-to-face penalty of frictionless contact (a law's own forces and the mortar's keep their normals),
+  // with the axis given in the contact definition.
+  void force_direction(const Scope& it, InteractionSpec& i, bool has_axis) {
+    if (word(it, "force direction") != "axis") return;
+    i.force_along_axis = true;
+    if (!has_axis)
+      error(where(it, "force direction"), it, "'force direction = axis' needs 'contact axis = px py pz dx dy dz' in the contact definition");
+    else if (i.enforcement != InteractionEnforcement::node_to_face || i.model != "frictionless")
+      error(where(it, "force direction"), it,
+            "'force direction = axis' is for 'model = frictionless' with 'enforcement = node to face'; remove it");
   }
 
   template <class Output>

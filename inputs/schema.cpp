@@ -137,7 +137,11 @@ std::vector<KeySchema> interaction_keys() {
              "contact law (contact/laws/README.md; each law's keys below name it)"),
       boolean_key("symmetric", "off", "two-pass: each surface slave once, forces halved"),
       choice("enforcement", ValueKind::enumeration, {"node to face", "mortar"}, false, "node to face",
-             "node to face: penalty at slave nodes; mortar: segment-to-segment (patch test, face-quadrature adhesion)")};
+             "node to face: penalty at slave nodes; mortar: segment-to-segment (patch test, face-quadrature adhesion)"),
+      choice("force direction", ValueKind::enumeration, {"normal", "axis"}, false, "normal",
+             "normal: the penalty force along the master face's normal; axis: along the contact axis, the small-slope "
+             "contact of the half-space theories (tractions normal to the undeformed flat; verification against them; "
+             "node to face, frictionless, needs 'contact axis')")};
   add_declared_keys(keys, contact_law_list());
   return keys;
 }

@@ -59,6 +59,17 @@ void ContactManager::node_to_face_with(const Law& law, Pass& p, const StepInputs
       // f_s = -k_p g n (g < 0 pushes the slave node out along the master's outward normal).
       const double fn_mag = -kp * best.proj.gap * p.factor;
       const double* n = best.proj.normal;
+      // force direction = axis: the linear (small-slope) contact of the half-space theories (Hertz, the
+      // layered continuum of tools/layered) puts the traction along the flat's normal; on a curved master
+      // the face normal tilts by r/R and adds a radial traction p r/R that shears a soft slave layer outward
+      // (verification/coated/README.md "Cases 4 and 5"). The gap stays the normal projection (O((r/R)^2) apart).
+      double along_axis[3];
+      if (p.force_along_axis && axis_.set) {
+        const double* d = axis_.direction;
+        const double sign = n[0] * d[0] + n[1] * d[1] + n[2] * d[2] < 0.0 ? -1.0 : 1.0;
+        for (int i = 0; i < 3; ++i) along_axis[i] = sign * d[i];
+        n = along_axis;
+      }
       for (int i = 0; i < 3; ++i) {
         in.force[3 * node + i] += fn_mag * n[i];
         for (int a = 0; a < 4; ++a) in.force[3 * point.face_nodes[a] + i] -= best.proj.shape[a] * fn_mag * n[i];

@@ -293,8 +293,12 @@ std::unique_ptr<contact::ContactManager> build_contact(const inputs::ContactSpec
                             spec.surfaces[static_cast<std::size_t>(s.master)]);
     s.symmetric = it.symmetric;
     s.penalty_scale = spec.penalty_scale_factor;
+    s.force_along_axis = it.force_along_axis;
     s.search_margin = spec.search_margin.value_or(0.0);
     set_law(it, s, report, findings);
+    if (report && s.force_along_axis)
+      report->push_back("  interaction " + it.name + ": penalty force along the contact axis (force direction = axis: "
+                        "the small-slope contact of the half-space theories, contact/README.md)");
     order_roles(it, spec, block_modulus, faces, s, report);
     cover_reach(it, spec, surfaces[static_cast<std::size_t>(s.master)], s, report);
     if (it.enforcement == inputs::InteractionEnforcement::mortar) {

@@ -242,6 +242,52 @@ for _c in range(2, 8):
 # ends (0.037 nm): KE/IE was 4.3-7.6 % on their first 1-3 fitted rows. They slow down by 0.025 nm, as case1_h0.2.
 for _c in (4, 5):
     RUNS[f"case{_c}_h0.2"]["fit_start"] = (0.025, RUNS[f"case{_c}_h0.2"]["fit_start"][1])
+# Issue 52, the continuum's own problem (README.md "Cases 4 and 5"): every case at 0.3 and 0.2 nm, and case 1 at 0.5
+# and 0.4 nm too, with the penalty force along the axis (`force direction = axis`: the small-slope contact of the
+# layered continuum, whose tractions are normal to the flat; the sphere's normal adds a radial traction p r/R
+# that shears the soft coating outward) and the penalty scaled to the coating (penalty_scale below). The drive
+# of the caseN_h0.2 decks (slower at the first fitted load), case 1's own at 0.5 and 0.4 nm.
+
+
+# The penalty's interpenetration at the axis over the approach, k_A overlap/delta = p0/delta, from the layered
+# continuum (`tribex layered`, center_pressure over approach) at P~ = 0.2 (the fitted range's geometric middle),
+# relative to case 1's: 0.289 / 0.550 / 1.680 in cases 4 / 5 / 6, 0.993 / 0.983 in cases 2 / 3 (2.000 in case 7,
+# whose k_A is doubled too by silicon's shorter step). Computed 2026-11-29; it moves by 10 % over P~ = 0.02-1.5.
+P0_OVER_DELTA_VS_CASE1 = {1: 1.0, 2: 0.993, 3: 0.983, 4: 0.289, 5: 0.550, 6: 1.680, 7: 1.0}
+
+
+def penalty_scale(case):
+    """The contact's `penalty scale factor` s of case `case`, so that the penalty's overlap at the axis is the same
+    fraction of the approach as in case 1 at s = 1 (about 1.4 % at 0.3 nm). k_A = s m_eff/(dt^2 A) follows the
+    coating's node mass and silicon's step, not the contact's pressure: at s = 1 the overlap was 0.4 % of the
+    approach in case 4 (E_c = 2 GPa) and the edge estimator, which interpolates the gap linearly between the
+    penalty's overlap inside and the opening gap outside, read 2.5 % lower in f than the radius of the nodal
+    forces at small loads (pressure_profile.py, 0.3 nm); at s = 0.25 (overlap 1.4-1.7 %) 0.5 % lower. Rounded to 2 digits."""
+    return float(f"{P0_OVER_DELTA_VS_CASE1[case]:.2g}")
+
+
+for _c in range(1, 8):
+    RUNS[f"case{_c}_axis_h0.3"] = dict(case=_c, h=0.3, fit_start=RUNS["case1_h0.2" if _c == 1 else f"case{_c}_h0.2"]["fit_start"],
+                                       axis_force=True, penalty=penalty_scale(_c))
+RUNS["case1_axis_h0.5"] = dict(case=1, h=0.5, axis_force=True, penalty=1.0)
+RUNS["case1_axis_h0.4"] = dict(case=1, h=0.4, axis_force=True, penalty=1.0)
+for _c in range(1, 8):
+    RUNS[f"case{_c}_axis_h0.2"] = dict(case=_c, h=0.2, fit_start=RUNS["case1_h0.2" if _c == 1 else f"case{_c}_h0.2"]["fit_start"],
+                                       axis_force=True, penalty=penalty_scale(_c))
+
+# Issue 52, the softest coating (case 4) on the refined meshes, with fields for diagnose.py: why cases 4 and 5
+# keep a tilt at 0.2 nm (README.md "Cases 4 and 5"). The drive of case4_h0.2; coating layers by coating_layers(h).
+_LATE_DIAGNOSTICS = {
+    "diag_case4_h0.3": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"]),
+    "diag_case4_h0.2": dict(case=4, h=0.2, fit_start=RUNS["case4_h0.2"]["fit_start"]),
+    "diag_case4_h0.3_pen0.25": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"], penalty=0.25),
+    "diag_case4_h0.3_axis": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"], axis_force=True),
+    "diag_case4_h0.3_axis_pen0.25": dict(case=4, h=0.3, fit_start=RUNS["case4_h0.2"]["fit_start"], axis_force=True,
+                                         penalty=0.25),
+}
+DIAGNOSTICS.update(_LATE_DIAGNOSTICS)
+for _name, _over in _LATE_DIAGNOSTICS.items():
+    RUNS[_name] = {**dict(case=1, h=0.4, diagnostic=True, fields=2.0), **_over}
 
 
 def write(name, run, folder=os.path.join(HERE, "decks")):
@@ -286,6 +332,9 @@ def write(name, run, folder=os.path.join(HERE, "decks")):
     if "penalty" in run:
         text = text.replace("contact axis = 0 0 0 0 0 1 nm",
                             f"contact axis = 0 0 0 0 0 1 nm\n        penalty scale factor = {run['penalty']:g}")
+    if run.get("axis_force"):  # the continuum's small-slope contact: tractions along the axis (README.md "Cases 4 and 5")
+        text = text.replace("          surfaces = tip flat\n",
+                            "          surfaces = tip flat\n          force direction = axis\n")
     if run.get("hertz"):  # equal materials: no swap, so name the coating the slave as the study's runs have it
         text = text.replace("surfaces = tip flat", "surfaces = flat tip")
     write_deck(folder, name, text)

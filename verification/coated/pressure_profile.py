@@ -1,0 +1,176 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""The FE's contact pressure against the layered continuum's p(r) at the same load (issue 52, cases 4 and 5):
+separates what the contact radius estimator reads from what the contact itself does.
+
+  /usr/bin/python3 verification/coated/pressure_profile.py RUN [RUN ...] [--runs build/verification] [--tribex BIN] [--rows]
+
+RUN: a deck of make_decks.RUNS with field output (the diag_* decks). At every field output on diagnose.py's
+rows (P~ from 0.02 to the case's maximum, a from 3 element sizes to the fine region's edge), with the
+continuum's pressure p_ref(r) at the row's own P~ (`tribex layered --pressure`), its radius a_ref and its
+approach delta_ref:
+
+  overlap    the penalty's interpenetration at the axis (-gap of the slave node on the axis) over delta_ref;
+  edge       contact_radius_edge (the study's estimator) over a_ref, as (a/a_ref)^2 - 1 (= f_FE/f_ref - 1);
+  shape      the radius of the continuum's own profile fitted to the FE's slave nodal forces: F_I =
+             lambda int p_ref(r a_ref/a) N_I dA, lambda and a by least squares (it reads the forces, not the
+             gap, so not the penalty's overlap; and the profile is the continuum's, so no shape is assumed);
+  cfit_ref   diagnose.py's consistent fit (sqrt(1 - r^2/a^2)(c0 + c1 r^2/a^2)) applied to the continuum's
+             own consistent nodal forces on the same mesh: that estimator's bias where the answer is a_ref;
+  cfit       the same fit to the FE's nodal forces;
+  force      the FE's nodal forces against the continuum's consistent ones, sum |F_FE - F_ref| / sum F_ref.
+
+Printed per run: the means over the P~ bins 0.02-0.05, 0.05-0.2, 0.2-0.8, > 0.8 and the exponent difference
+b_FE - b_ref that each radius gives over the same rows (as diagnose.py); --rows prints every row.
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+from diagnose import HERE, ROOT, FaceIntegrals, consistent_fit, edge_crossings, materials, slave_faces  # noqa: F401
+from cases import H_C, MIN_LOAD, ebar  # noqa: E402
+from compare_reference import BINS  # noqa: E402
+from make_decks import RUNS  # noqa: E402
+from results_h5 import si  # noqa: E402
+
+RADII = 400  # continuum pressure samples per load (uniform in r/a; p/sqrt(1 - (r/a)^2) is smooth, interpolated)
+
+
+def continuum_profiles(name, tribex, p_tilde):
+    """Per load: (a_ref m, delta_ref m, x = r/a samples, q = p/sqrt(1 - x^2) in Pa) from `tribex layered`."""
+    R, E, nu, Ec, nuc, _ = materials(name)
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "loads.csv")
+        with open(path, "w") as fh:
+            fh.write("p_tilde\n" + "".join(f"{v:.17g}\n" for v in p_tilde))
+        subprocess.run([tribex, "layered", "--radius", f"{R * 1e9:g}nm", "--youngs", f"{E / 1e9:g}GPa", "--poisson", str(nu),
+                        "--thickness", f"{H_C}nm", "--layer-youngs", f"{Ec / 1e9:g}GPa", "--layer-poisson", str(nuc),
+                        "--substrate-youngs", f"{E / 1e9:g}GPa", "--substrate-poisson", str(nu), "--no-plot", "-o", tmp,
+                        "--p-tilde-file", path, "--pressure", str(RADII)], check=True, capture_output=True)
+        curve, prof = (np.array([[float(v) for v in ln.split(",")] for ln in open(os.path.join(tmp, fn))
+                                 if ln[0] not in "#p"]) for fn in ("layered.csv", "pressure.csv"))
+    out = []
+    for k in range(len(p_tilde)):
+        block = prof[k * RADII:(k + 1) * RADII]
+        x = block[:, 2]
+        out.append((curve[k, 2] * 1e-9, curve[k, 3] * 1e-9, x, block[:, 3] * 1e9 / np.sqrt(1 - x * x)))
+    return out
+
+
+def profile_forces(fi, x, q, a):
+    """Consistent nodal forces int p N_I dA of p(r) = q(r/a) sqrt(1 - r^2/a^2)_+ on the faces at fi's positions."""
+    s = np.sqrt(fi.rho2) / a
+    p = np.where(s < 1, np.interp(np.minimum(s, x[-1]), x, q) * np.sqrt(np.clip(1 - s * s, 0, None)), 0.0)
+    return fi.nodal(p * fi.dA)
+
+
+def shape_fit(fi, force, x, q, a_ref):
+    """Radius a (and amplitude) of the continuum's profile q(r/a) that best fits the nodal forces (golden section)."""
+    def residual(a):
+        m = profile_forces(fi, x, q, a)
+        lam = (m @ force) / (m @ m)
+        return ((force - lam * m) ** 2).sum()
+    lo, hi = 0.8 * a_ref, 1.25 * a_ref
+    for _ in range(40):
+        m1, m2 = lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo)
+        lo, hi = (lo, m2) if residual(m1) < residual(m2) else (m1, hi)
+    return 0.5 * (lo + hi)
+
+
+def field_rows(name, folder):
+    """(time, P, edge, positions, gap, nodal forces) at every field output of the loading branch, and the faces."""
+    hist = list(csv.DictReader(open(os.path.join(folder, "history.csv"))))
+    ht = np.array([float(r["time"]) for r in hist])
+    rows = []
+    with h5py.File(os.path.join(folder, "results.h5"), "r") as f:
+        X = si(f["mesh/coordinates"])
+        keys = sorted(f["steps"].keys())
+        faces = slave_faces(f, ~np.isnan(f["steps"][keys[-1]]["nodal/gap"][:]))
+        fi = FaceIntegrals(faces)
+        axis = int(np.argmin(np.where(np.isnan(f["steps"][keys[-1]]["nodal/gap"][:]), np.inf, X[:, 0] ** 2 + X[:, 1] ** 2)))
+        for key in keys:
+            st = f["steps"][key]
+            i = int(np.argmin(abs(ht - st.attrs["time"])))
+            P = 4 * float(hist[i]["contact_normal_force"])
+            if abs(ht[i] - st.attrs["time"]) > 1e-14 or P <= 0:
+                continue
+            x = X + si(st["nodal/displacement"])
+            fi.at(x)
+            force = np.maximum(-st["nodal/contact_traction"][:][fi.nodes, 2] * fi.nodal(fi.dA), 0.0)
+            if np.count_nonzero(force) >= 3:
+                g = si(st["nodal/gap"])
+                rows.append(dict(time=ht[i], P=P, delta=-float(hist[i]["tip_top_displacement_z"]),
+                                 edge=float(hist[i]["contact_radius_edge"]), edge_X=edge_crossings(faces, g, X), x=x, X=X,
+                                 overlap=-float(g[axis]), force=force))
+    deepest = int(np.argmax([r["delta"] for r in rows]))
+    return rows[: deepest + 1], fi
+
+
+def analyse(name, runs, tribex, show_rows):
+    """One run: (per-row dicts of the measures, printed lines)."""
+    R, E, nu, Ec, nuc, pmax = materials(name)
+    h = RUNS[name]["h"] * 1e-9
+    rows, fi = field_rows(name, os.path.join(runs, "coated_" + name))
+    scale = ebar(Ec, nuc) * (H_C * 1e-9) ** 2
+    rows = [r for r in rows if MIN_LOAD <= r["P"] / scale <= pmax and 3 * h <= r["edge"] <= 5e-9 - h]
+    pn = np.array([r["P"] / scale for r in rows])
+    out = []
+    for r, pt, (a_ref, d_ref, x, q) in zip(rows, pn, continuum_profiles(name, tribex, pn)):
+        fi.at(r["x"])
+        fi.at(r["X"])
+        shape_X = shape_fit(fi, r["force"], x, q, a_ref)
+        fi.at(r["x"])
+        f_ref = profile_forces(fi, x, q, a_ref)
+        reach = math.sqrt((r["x"][fi.nodes, :2] ** 2).sum(axis=1)[r["force"] > 0].max())
+        out.append(dict(p_tilde=pt, a_ref=a_ref, overlap=r["overlap"] / d_ref, edge=(r["edge"] / a_ref) ** 2 - 1,
+                        edge_X=(r["edge_X"] / a_ref) ** 2 - 1, shape_X=(shape_X / a_ref) ** 2 - 1,
+                        shape=(shape_fit(fi, r["force"], x, q, a_ref) / a_ref) ** 2 - 1,
+                        cfit_ref=(consistent_fit(fi, f_ref, a_ref) / a_ref) ** 2 - 1,
+                        cfit=(consistent_fit(fi, r["force"], reach) / a_ref) ** 2 - 1,
+                        force=np.abs(r["force"] - f_ref).sum() / f_ref.sum(), load=4 * f_ref.sum() / r["P"] - 1))
+    return out, summary_lines(name, out, show_rows)
+
+
+MEASURES = ("overlap", "edge", "edge_X", "shape", "shape_X", "cfit_ref", "cfit", "force", "load")
+
+
+def summary_lines(name, out, show_rows):
+    pn = np.array([o["p_tilde"] for o in out])
+    lines = [f"{name} ({RUNS[name]['h']:g} nm; {len(out)} rows, P~ {pn.min():.3f}-{pn.max():.3f}): bins P~ 0.02-0.05, "
+             "0.05-0.2, 0.2-0.8, > 0.8 (%); b_FE - b_ref for the radii"]
+    for k in MEASURES:
+        v = np.array([o[k] for o in out])
+        bins = [v[(pn >= lo) & (pn < hi)].mean() if ((pn >= lo) & (pn < hi)).any() else float("nan") for lo, hi in BINS]
+        tail = f"   b_FE - b_ref {np.polyfit(np.log(pn), np.log1p(v), 1)[0]:+.4f}" if k in ("edge", "edge_X", "shape", "shape_X", "cfit_ref", "cfit") else ""
+        lines.append(f"  {k:9s} " + " ".join(f"{100 * b:+7.3f}" for b in bins) + tail)
+    if show_rows:
+        lines += ["    P~ {:.4f} a_ref {:.3f} nm ".format(o["p_tilde"], o["a_ref"] * 1e9)
+                  + " ".join(f"{k} {100 * o[k]:+6.2f}" for k in MEASURES) for o in out]
+    return lines
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("run", nargs="+", help="deck names (make_decks.RUNS) of runs with field output, e.g. diag_case4_h0.2")
+    ap.add_argument("--runs", default=str(ROOT / "build" / "verification"), help="folder of the coated_<run> folders")
+    ap.add_argument("--tribex", default=str(ROOT / "build" / "bin" / "tribex"), help="the tribex binary")
+    ap.add_argument("--rows", action="store_true", help="print every row")
+    a = ap.parse_args()
+    for name in a.run:
+        if name not in RUNS:
+            print(f"pressure_profile.py: error: unknown run '{name}' (make_decks.py RUNS)", file=sys.stderr)
+            return 2
+        _, lines = analyse(name, a.runs, a.tribex, a.rows)
+        print("\n".join(lines))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
