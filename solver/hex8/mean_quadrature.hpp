@@ -88,6 +88,26 @@ inline void add_lane_totals(const Material& mat, ElementBlock& blk, int e, unsig
   }
 }
 
+/// The viscous part of an element's internal force, f_iI = P_ij B0_jI + r_ia Gamma_aI with q alone in
+/// P and the hourglass viscosity's r (rv), into viscous_force [node][3]: the energy ledger pairs it
+/// with v^{n+1/2} (docs/theory.md 1.3).
+template <class T, bool HourglassViscosity>
+inline void add_viscous_forces(double* viscous_force, const int* const nodes[], const T& q, const T rv[12], const T c[12],
+                               const T B[24], unsigned finite_lanes) {
+  T fv[24];
+  for (int i = 0; i < 3; ++i) {
+    T P[3], hourglass_force[8] = {};
+    for (int j = 0; j < 3; ++j) {
+      P[j] = i == j ? -q : T{};
+      if constexpr (HourglassViscosity)
+        P[j] -= rv[i] * c[j] + rv[3 + i] * c[3 + j] + rv[6 + i] * c[6 + j] + rv[9 + i] * c[9 + j];
+    }
+    if constexpr (HourglassViscosity) hourglass_base_combinations(rv[i], rv[3 + i], rv[6 + i], rv[9 + i], hourglass_force);
+    for (int I = 0; I < 8; ++I) fv[8 * i + I] = P[0] * B[I] + P[1] * B[8 + I] + P[2] * B[16 + I] + hourglass_force[I];
+  }
+  subtract_nodal(viscous_force, nodes, fv, finite_lanes);
+}
+
 /// Elements e .. e + lane_count<T> - 1 of a mean-quadrature block (e a multiple of the lane count).
 template <class T, class Material, bool HourglassViscosity>
 inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
@@ -144,7 +164,7 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
         w[3 * i + j] = sum;
       }
   const T k_hg = load_lanes<T>(&blk.hg_k[e]);
-  T r[12], hg_energy{}, hg_power{};
+  T r[12], rv[12], hg_energy{}, hg_power{};
   for (int i = 0; i < 3; ++i) {
     T ug[4], vg[4];
     hourglass_base_sums(&ue[8 * i], ug);
@@ -156,7 +176,8 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
       if constexpr (HourglassViscosity) {
         const T g = vg[a] - (c[3 * a] * w[3 * i] + c[3 * a + 1] * w[3 * i + 1] + c[3 * a + 2] * w[3 * i + 2]);
         hg_power += g * g;
-        r[3 * a + i] += load_lanes<T>(&blk.hg_c[e]) * g;
+        rv[3 * a + i] = load_lanes<T>(&blk.hg_c[e]) * g;
+        r[3 * a + i] += rv[3 * a + i];
       }
     }
   }
@@ -181,6 +202,7 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
     else if (totals.first_inverted < 0)
       totals.first_inverted = blk.first_element + e + l;
   subtract_nodal(force, nodes, f, finite_lanes);
+  if (blk.viscous_force) add_viscous_forces<T, HourglassViscosity>(blk.viscous_force, nodes, q, rv, c, B, finite_lanes);
 
   add_lane_totals<T, Material, HourglassViscosity>(mat, blk, e, finite_lanes, W * V, -q * edot * V, k_hg, hg_energy,
                                                    hg_power, dissipated, H, state, want_stress, totals);
