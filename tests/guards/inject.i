@@ -5,7 +5,7 @@
 # limit (exit 3). Warnings expected: unsafe_choice (set-up), penetration, contact_motion, energy_error.
 # With 'energy error limit = 0.0025' added (tests/guards/CMakeLists.txt) it stops at that limit instead.
 # The energy error warning is at 0.2 %, not the default 1 %: with the viscous dissipation paired exactly
-# (docs/theory.md 1.3, 2026-11-29) the balance error before the contact motion limit is 0.33 % (step 974);
+# since 2026-11-29 (docs/theory.md 1.3) the balance error before the contact motion limit is 0.33 % (step 974);
 # the 1 % it passed before was mostly the old pairing's O(dt^2) error on the jumping nodes' ringing.
 begin sierra inject
   begin function push
