@@ -19,7 +19,8 @@ Drive (displacement control of tip_top): the apex starts 6.3 nm above the flat (
 range, h > h_c), comes down at V_FAST to 1.5 z0 before the reference's jump-in (or its pull-off
 where it has none), then at V_SLOW to 1 z0 past the pull-off's approach and at V_LOADED to the
 approach of the set load (P = P_MAX pi W_c R on the reference curve), back at V_LOADED and, from 1 z0
-past the pull-off, at V_SLOW to 1.5 z0 beyond the jump-out (or pull-off). Each move starts and
+past the pull-off, at V_SLOW to 1.5 z0 beyond the jump-out (or pull-off); a run of RUNS may change the
+set load, the speeds, the margins, the grading and the step (README.md "Files"). Each move starts and
 stops with a 20 ps cycloidal ramp. Push = gap + delta: delta = 0 where the undeformed surfaces
 touch (geometric gap 0, which the law takes as h = z0: the reference's origin, docs/theory.md 6.2); the FE's bodies add a frame compliance C P that
 compare.py takes from the W = 0 twin (`*_w0.i`: the same mesh without adhesion, loaded to the same
