@@ -160,6 +160,7 @@ begin sierra {name}
     begin time control
       termination time = {t_end:g} ps
       time step scale factor = {scale:.3g}
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity

@@ -258,6 +258,7 @@ begin sierra mu1_h0.4
     begin time control
       termination time = 1006 ps
       time step scale factor = 0.3
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity

@@ -149,6 +149,7 @@ begin sierra mu1_h0.5
     begin time control
       termination time = 461 ps
       time step scale factor = 0.571
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity
