@@ -395,6 +395,7 @@ class Builder {
       t.termination_time = real(*tc, "termination time");
       t.time_step_scale_factor = real(*tc, "time step scale factor", 0.9);
       t.maximum_time_step = optional_real(*tc, "maximum time step");
+      t.exact_viscous_dissipation = word(*tc, "viscous dissipation") == "exact";
       if (tc->find("termination time") && !(t.termination_time > t.start_time)) {
         error(where(*tc, "termination time"), *tc,
               "'termination time' must be greater than 'start time' (" + format_seconds(t.start_time) + ")");

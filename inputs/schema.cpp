@@ -287,7 +287,9 @@ std::vector<BlockSchema> build_table() {
                 real("termination time", dim::time, Range{}, true, "", "end time, > start time"),
                 real("time step scale factor", dim::none, {0.0, 1.0, true, false}, false, "0.9",
                      "fraction of the stable time step"),
-                real("maximum time step", dim::time, positive(), false, "", "cap on the time step")},
+                real("maximum time step", dim::time, positive(), false, "", "cap on the time step"),
+                choice("viscous dissipation", ValueKind::enumeration, {"half step", "exact"}, false, "half step",
+                       "energy ledger's pairing of the element viscous forces (exact: kernels 17-28 % slower)")},
                {},
                false, "time span and step control"});
 

@@ -51,6 +51,10 @@ struct ElementBlock {
   // material state, state_size_of(material) doubles per material point, n -> n+1 in the force pass:
   // [e][k] (mean quadrature), pair-interleaved [e][point][k] (fully integrated); empty if stateless
   std::vector<double> state;
+  // When set, the kernels add each element's viscous nodal forces (bulk viscosity, and hourglass
+  // viscosity under mean quadrature) here, [node][3] (N): the energy ledger pairs them with
+  // v^{n+1/2} (docs/theory.md 1.3). Not owned; the integrator points it at its array.
+  double* viscous_force = nullptr;
   // output (filled only on steps that write element fields)
   std::vector<double> stress;    // [e][6] Cauchy, Voigt xx yy zz xy yz zx (Pa)
 };

@@ -106,6 +106,11 @@ void fully_integrated_lanes(const Material& mat, ElementBlock& blk, int e, const
     else if (totals.first_inverted < 0)
       totals.first_inverted = blk.first_element + e + l;
   subtract_nodal(force, nodes, fe, finite_lanes);
+  if (blk.viscous_force) [[unlikely]] {  // the bulk viscosity's part of fe, -q B0 (the ledger's right half)
+    T fv[24];
+    for (int k = 0; k < 24; ++k) fv[k] = -q * B0[k];
+    subtract_nodal(blk.viscous_force, nodes, fv, finite_lanes);
+  }
   for (int l = 0; l < n; ++l) {
     if (!(finite_lanes >> l & 1u)) continue;
     totals.strain_energy += lane(energy, l);

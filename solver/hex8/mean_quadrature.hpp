@@ -88,6 +88,35 @@ inline void add_lane_totals(const Material& mat, ElementBlock& blk, int e, unsig
   }
 }
 
+/// The viscous part of an element's internal force, f_iI = P_ij B0_jI + r_ia Gamma_aI with q alone in
+/// P and the hourglass viscosity's r_ia = c_hg g_ia (recomputed here from the rates w and the velocities,
+/// so that the force pass keeps no copy when the ledger does not ask), into viscous_force [node][3]: the
+/// energy ledger pairs it with v^{n+1/2} (docs/theory.md 1.3, `viscous dissipation = exact`).
+template <class T, bool HourglassViscosity>
+inline void add_viscous_forces(double* viscous_force, const int* const nodes[], const T& q, const T& hg_c,
+                               const T ve[24], const T w[9], const T c[12], const T B[24], unsigned finite_lanes) {
+  T rv[12] = {};
+  if constexpr (HourglassViscosity)
+    for (int i = 0; i < 3; ++i) {
+      T vg[4];
+      hourglass_base_sums(&ve[8 * i], vg);
+      for (int a = 0; a < 4; ++a)
+        rv[3 * a + i] = hg_c * (vg[a] - (c[3 * a] * w[3 * i] + c[3 * a + 1] * w[3 * i + 1] + c[3 * a + 2] * w[3 * i + 2]));
+    }
+  T fv[24];
+  for (int i = 0; i < 3; ++i) {
+    T P[3], hourglass_force[8] = {};
+    for (int j = 0; j < 3; ++j) {
+      P[j] = i == j ? -q : T{};
+      if constexpr (HourglassViscosity)
+        P[j] -= rv[i] * c[j] + rv[3 + i] * c[3 + j] + rv[6 + i] * c[6 + j] + rv[9 + i] * c[9 + j];
+    }
+    if constexpr (HourglassViscosity) hourglass_base_combinations(rv[i], rv[3 + i], rv[6 + i], rv[9 + i], hourglass_force);
+    for (int I = 0; I < 8; ++I) fv[8 * i + I] = P[0] * B[I] + P[1] * B[8 + I] + P[2] * B[16 + I] + hourglass_force[I];
+  }
+  subtract_nodal(viscous_force, nodes, fv, finite_lanes);
+}
+
 /// Elements e .. e + lane_count<T> - 1 of a mean-quadrature block (e a multiple of the lane count).
 template <class T, class Material, bool HourglassViscosity>
 inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e, const int* conn, const double* u,
@@ -181,6 +210,9 @@ inline void mean_quadrature_lanes(const Material& mat, ElementBlock& blk, int e,
     else if (totals.first_inverted < 0)
       totals.first_inverted = blk.first_element + e + l;
   subtract_nodal(force, nodes, f, finite_lanes);
+  if (blk.viscous_force) [[unlikely]]
+    add_viscous_forces<T, HourglassViscosity>(blk.viscous_force, nodes, q, load_lanes<T>(&blk.hg_c[e]), ve, w, c, B,
+                                              finite_lanes);
 
   add_lane_totals<T, Material, HourglassViscosity>(mat, blk, e, finite_lanes, W * V, -q * edot * V, k_hg, hg_energy,
                                                    hg_power, dissipated, H, state, want_stress, totals);

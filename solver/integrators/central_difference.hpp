@@ -176,6 +176,8 @@ class CentralDifference {
   bool folded_stable_valid_ = false;   // consumed by choose_dt
   double external_power_right_ = 0.0;  // F_ext^{n-1} . v^{n-1/2}, for the trapezoidal work rule
   double viscous_power_ = 0.0;        // element viscous dissipation rate of the last force pass
+  std::vector<double> viscous_force_;  // [node][3] this rank's elements' viscous forces of that pass (N); empty unless exact
+  bool exact_viscous_dissipation_ = false;  // `viscous dissipation = exact` (time control)
   double plastic_work_ = 0.0;         // this rank's material dissipation so far (J), summed in account_time_n
   double force_time_ = 0.0;           // the time of the last force pass (the material updates' dt)
   double silent_power_right_ = 0.0, damping_power_right_ = 0.0, viscous_power_right_ = 0.0;

@@ -216,6 +216,7 @@ begin sierra mu0.1_h0.4_v2
     begin time control
       termination time = 796 ps
       time step scale factor = 0.884
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity

@@ -157,6 +157,7 @@ begin sierra mu0.1_h0.6
     begin time control
       termination time = 501 ps
       time step scale factor = 0.876
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity

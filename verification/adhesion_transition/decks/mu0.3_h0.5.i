@@ -187,6 +187,7 @@ begin sierra mu0.3_h0.5
     begin time control
       termination time = 653 ps
       time step scale factor = 0.807
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity

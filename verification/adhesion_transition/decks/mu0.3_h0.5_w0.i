@@ -129,6 +129,7 @@ begin sierra mu0.3_h0.5_w0
     begin time control
       termination time = 362 ps
       time step scale factor = 0.9
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity

@@ -158,6 +158,7 @@ begin sierra mu1_h0.4_w0
     begin time control
       termination time = 509 ps
       time step scale factor = 0.9
+      viscous dissipation = exact
     end time control
     begin presto region main
       use finite element model asperity
