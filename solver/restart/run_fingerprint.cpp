@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "inputs/schema.hpp"
 #include "inputs/sha256.hpp"
 #include "solver/output/run_log.hpp"
 
@@ -70,6 +71,46 @@ std::string mesh_sha256(const mesh::MeshSlices& file) {
   return hash.hex();
 }
 
+namespace {
+
+std::string trimmed(std::string_view s) {
+  const std::size_t a = s.find_first_not_of(' '), b = s.find_last_not_of(' ');
+  return a == std::string_view::npos ? std::string() : std::string(s.substr(a, b - a + 1));
+}
+
+/// Whether the line of `text` starting at `start` is `key = its default` inside a block whose schema has
+/// that key: a key tribex gained after the restart file was written, whose default keeps the behaviour
+/// the file's run had, so the file's resolved deck lacks the line and the run is not changed by it.
+bool added_at_default(const std::string& text, std::size_t start, const std::string& line) {
+  const std::size_t eq = line.find(" = ");
+  if (eq == std::string::npos) return false;
+  const std::string key = trimmed(line.substr(0, eq)), value = trimmed(line.substr(eq + 3));
+  const std::size_t indent = line.find_first_not_of(' ');
+  // the enclosing block: the nearest line above, less indented, that begins one
+  for (std::size_t end = start; end > 1;) {
+    const std::size_t begin = text.rfind('\n', end - 2) == std::string::npos ? 0 : text.rfind('\n', end - 2) + 1;
+    const std::string above = text.substr(begin, end - 1 - begin);
+    end = begin;
+    const std::size_t above_indent = above.find_first_not_of(' ');
+    if (above_indent == std::string::npos || above_indent >= indent) continue;
+    if (above.compare(above_indent, 6, "begin ") != 0) return false;
+    // "begin TYPE [NAME]": the longest run of words that names a block type
+    std::string type = trimmed(above.substr(above_indent + 6));
+    for (;;) {
+      if (const inputs::BlockSchema* block = inputs::find_block_schema(type)) {
+        const inputs::KeySchema* k = block->key(key);
+        return k && !k->default_text.empty() && k->default_text == value;
+      }
+      const std::size_t last = type.rfind(' ');
+      if (last == std::string::npos) return false;
+      type.resize(last);
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 std::string restart_difference(const StateArchive& archive, const std::string& deck_text, const std::string& mesh_hash) {
   if (!archive.has("deck_text") || !archive.has("mesh_sha256")) return "";  // an earlier tribex: not recorded
   if (from_codes(archive.integer_array("mesh_sha256")) != mesh_hash) return "the mesh differs (coordinates or connectivity)";
@@ -80,9 +121,14 @@ std::string restart_difference(const StateArchive& archive, const std::string& d
     const std::size_t ea = old_text.find('\n', a), eb = deck_text.find('\n', b);
     const std::string la = old_text.substr(a, ea == std::string::npos ? std::string::npos : ea - a);
     const std::string lb = deck_text.substr(b, eb == std::string::npos ? std::string::npos : eb - b);
+    if (la != lb && eb != std::string::npos && added_at_default(deck_text, b, lb)) {
+      b = eb + 1;  // a key added since, at its default: the same run
+      continue;
+    }
     if (la != lb)
       return format("the resolved deck differs at its line %zu: '%s' then, '%s' now", line,
                     la.c_str(), lb.c_str());
+    if (ea == std::string::npos && eb == std::string::npos) return "";  // equal but for added defaults
     if (ea == std::string::npos || eb == std::string::npos) return "the resolved deck differs at its end";
     a = ea + 1;
     b = eb + 1;

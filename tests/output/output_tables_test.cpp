@@ -171,6 +171,7 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
   c.contact_evaluations = 4;
   c.contact_pairs = 10;
   c.peak_rss_bytes = 1 << 20;
+  c.exchange_peers = 3;
   s.rank_counts = {c};
   s.parameters = {{"W", 0.06, "J/m^2", true, {}}, {"n", 3, "", false, {}}};  // deck parameters (--set W=0.06)
   solver::write_summary_json((dir / "summary.json").string(), s);
@@ -198,8 +199,8 @@ TEST(SummaryJson, KeysInTheirOrderThenUnits) {
         "\"warnings\": {\"step\": \"count\", \"time\": \"s\", ", "\"mass_scaling\": null,\n",
         "\"rank_counts\": [\n    {\"rank\": 1, \"elements\": 20, \"nodes\": 0, ",
         "\"halo_bytes_sent_per_step\": 24, \"halo_bytes_received_per_step\": 0, ",
-        "\"contact_pairs_per_step\": 2.5, \"contact_evaluations\": 4, ", "\"peak_rss_bytes\": 1048576}\n  ],\n",
-        "\"rank_counts\": {\"rank\": \"-\", \"elements\": \"count\", ", "\"peak_rss_bytes\": \"B\"}, \"parameters\": {\"W\": \"J/m^2\", \"n\": \"-\"}}\n}\n",
+        "\"contact_pairs_per_step\": 2.5, \"contact_evaluations\": 4, ", "\"peak_rss_bytes\": 1048576, \"exchange_peers\": 3}\n  ],\n",
+        "\"rank_counts\": {\"rank\": \"-\", \"elements\": \"count\", ", "\"peak_rss_bytes\": \"B\", \"exchange_peers\": \"count\"}, \"parameters\": {\"W\": \"J/m^2\", \"n\": \"-\"}}\n}\n",
         "\"parameters\": {\"W\": 0.059999999999999998, \"n\": 3},\n"})
     EXPECT_NE(text.find(expected), std::string::npos) << "summary.json lacks " << expected << "\n" << text;
   EXPECT_EQ(text.substr(text.size() - 5), "}}\n}\n");
