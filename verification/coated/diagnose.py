@@ -178,19 +178,24 @@ def penalty_per_area(folder):
         return float(st["contact_pressure"][i]) / -g[i]
 
 
+def run_layered(name, tribex, p_tilde, folder, extra=()):
+    """`tribex layered` for run `name`'s sphere, coating and substrate at the loads p_tilde (P~), into folder."""
+    import subprocess
+    R, E, nu, Ec, nuc, _ = materials(name)
+    path = os.path.join(folder, "loads.csv")
+    with open(path, "w") as fh:
+        fh.write("p_tilde\n" + "".join(f"{v:.17g}\n" for v in p_tilde))
+    subprocess.run([tribex, "layered", "--radius", f"{R * 1e9:g}nm", "--youngs", f"{E / 1e9:g}GPa", "--poisson", str(nu),
+                    "--thickness", f"{H_C}nm", "--layer-youngs", f"{Ec / 1e9:g}GPa", "--layer-poisson", str(nuc),
+                    "--substrate-youngs", f"{E / 1e9:g}GPa", "--substrate-poisson", str(nu), "--no-plot", "-o", folder,
+                    "--p-tilde-file", path, *extra], check=True, capture_output=True)
+
+
 def continuum(name, tribex, p_tilde):
     """The layered continuum's contact radius and approach (m) at the loads p_tilde (P~) of run `name`."""
-    import subprocess
     import tempfile
-    R, E, nu, Ec, nuc, _ = materials(name)
     with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "loads.csv")
-        with open(path, "w") as fh:
-            fh.write("p_tilde\n" + "".join(f"{v:.17g}\n" for v in p_tilde))
-        subprocess.run([tribex, "layered", "--radius", f"{R * 1e9:g}nm", "--youngs", f"{E / 1e9:g}GPa", "--poisson", str(nu),
-                        "--thickness", f"{H_C}nm", "--layer-youngs", f"{Ec / 1e9:g}GPa", "--layer-poisson", str(nuc),
-                        "--substrate-youngs", f"{E / 1e9:g}GPa", "--substrate-poisson", str(nu), "--no-plot", "-o", tmp,
-                        "--p-tilde-file", path], check=True, capture_output=True)
+        run_layered(name, tribex, p_tilde, tmp)
         lines = [ln for ln in open(os.path.join(tmp, "layered.csv")) if not ln.startswith("#")]
     head = [h.split("[")[0] for h in lines[0].strip().split(",")]
     ref = [dict(zip(head, map(float, ln.split(",")))) for ln in lines[1:]]

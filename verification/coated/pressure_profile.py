@@ -27,14 +27,13 @@ import argparse
 import csv
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
 import h5py
 import numpy as np
 
-from diagnose import HERE, ROOT, FaceIntegrals, consistent_fit, edge_crossings, materials, slave_faces  # noqa: F401
+from diagnose import HERE, ROOT, FaceIntegrals, consistent_fit, edge_crossings, materials, run_layered, slave_faces  # noqa: F401
 from cases import H_C, MIN_LOAD, ebar  # noqa: E402
 from compare_reference import BINS  # noqa: E402
 from make_decks import RUNS  # noqa: E402
@@ -45,15 +44,8 @@ RADII = 400  # continuum pressure samples per load (uniform in r/a; p/sqrt(1 - (
 
 def continuum_profiles(name, tribex, p_tilde):
     """Per load: (a_ref m, delta_ref m, x = r/a samples, q = p/sqrt(1 - x^2) in Pa) from `tribex layered`."""
-    R, E, nu, Ec, nuc, _ = materials(name)
     with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "loads.csv")
-        with open(path, "w") as fh:
-            fh.write("p_tilde\n" + "".join(f"{v:.17g}\n" for v in p_tilde))
-        subprocess.run([tribex, "layered", "--radius", f"{R * 1e9:g}nm", "--youngs", f"{E / 1e9:g}GPa", "--poisson", str(nu),
-                        "--thickness", f"{H_C}nm", "--layer-youngs", f"{Ec / 1e9:g}GPa", "--layer-poisson", str(nuc),
-                        "--substrate-youngs", f"{E / 1e9:g}GPa", "--substrate-poisson", str(nu), "--no-plot", "-o", tmp,
-                        "--p-tilde-file", path, "--pressure", str(RADII)], check=True, capture_output=True)
+        run_layered(name, tribex, p_tilde, tmp, ("--pressure", str(RADII)))
         curve, prof = (np.array([[float(v) for v in ln.split(",")] for ln in open(os.path.join(tmp, fn))
                                  if ln[0] not in "#p"]) for fn in ("layered.csv", "pressure.csv"))
     out = []
