@@ -135,16 +135,18 @@ def edge_crossings(faces, g, positions):
     return sum(r) / len(r) if r else float("nan")
 
 
-def measure(name, folder):
-    """Rows (time, P, delta and the ESTIMATORS' radii) at every field output of the run's loading branch, and k_A."""
+def loading_outputs(folder):
+    """The run's field outputs on its loading branch, as dicts (time, P, delta, edge, X, x, g, force, slave) with
+    P > 0 and at least three slave nodes carrying force, up to the deepest approach; and the FaceIntegrals of the
+    slave faces (left at the last output's positions). force: the nodal contact forces along z (N)."""
     hist = list(csv.DictReader(open(os.path.join(folder, "history.csv"))))
     ht = np.array([float(r["time"]) for r in hist])
-    rows = []
+    outputs = []
     with h5py.File(os.path.join(folder, "results.h5"), "r") as f:
         X = si(f["mesh/coordinates"])
         keys = sorted(f["steps"].keys())
-        faces = slave_faces(f, ~np.isnan(f["steps"][keys[-1]]["nodal/gap"][:]))
-        fi = FaceIntegrals(faces)
+        slave = ~np.isnan(f["steps"][keys[-1]]["nodal/gap"][:])
+        fi = FaceIntegrals(slave_faces(f, slave))
         for key in keys:
             st = f["steps"][key]
             i = int(np.argmin(abs(ht - st.attrs["time"])))
@@ -152,19 +154,28 @@ def measure(name, folder):
             if abs(ht[i] - st.attrs["time"]) > 1e-14 or P <= 0:
                 continue
             x = X + si(st["nodal/displacement"])
-            g = si(st["nodal/gap"])
             fi.at(x)
             force = np.maximum(-st["nodal/contact_traction"][:][fi.nodes, 2] * fi.nodal(fi.dA), 0.0)
             if np.count_nonzero(force) < 3:
                 continue
-            reach = math.sqrt((x[fi.nodes, :2] ** 2).sum(axis=1)[force > 0].max())
-            rows.append(dict(time=ht[i], P=P, delta=-float(hist[i]["tip_top_displacement_z"]),
-                             edge=float(hist[i]["contact_radius_edge"]), edge_X=edge_crossings(faces, g, X),
-                             cfit=consistent_fit(fi, force, reach),
-                             pressure_fit=float(hist[i]["contact_radius_pressure_fit"]),
-                             node_area=math.sqrt(4 * float(hist[i]["contact_area"]) / math.pi)))
-    deepest = int(np.argmax([r["delta"] for r in rows]))
-    return rows[: deepest + 1], penalty_per_area(folder)
+            outputs.append(dict(time=ht[i], P=P, delta=-float(hist[i]["tip_top_displacement_z"]), hist=hist[i],
+                                X=X, x=x, g=si(st["nodal/gap"]), force=force, slave=slave))
+    deepest = int(np.argmax([o["delta"] for o in outputs]))
+    return outputs[: deepest + 1], fi
+
+
+def measure(name, folder):
+    """Rows (time, P, delta and the ESTIMATORS' radii) at every field output of the run's loading branch, and k_A."""
+    outputs, fi = loading_outputs(folder)
+    rows = []
+    for o in outputs:
+        fi.at(o["x"])
+        reach = math.sqrt((o["x"][fi.nodes, :2] ** 2).sum(axis=1)[o["force"] > 0].max())
+        rows.append(dict(time=o["time"], P=o["P"], delta=o["delta"], edge=float(o["hist"]["contact_radius_edge"]),
+                         edge_X=edge_crossings(fi.faces, o["g"], o["X"]), cfit=consistent_fit(fi, o["force"], reach),
+                         pressure_fit=float(o["hist"]["contact_radius_pressure_fit"]),
+                         node_area=math.sqrt(4 * float(o["hist"]["contact_area"]) / math.pi)))
+    return rows, penalty_per_area(folder)
 
 
 def penalty_per_area(folder):
@@ -202,17 +213,23 @@ def continuum(name, tribex, p_tilde):
     return np.array([r["contact_radius"] for r in ref]) * 1e-9, np.array([r["approach"] for r in ref]) * 1e-9
 
 
+def in_study_range(name, rows):
+    """The rows whose load P~ = P / (E_c-bar H_C^2) lies in the study's range and whose edge radius lies between
+    3 h and 5 nm - h (h the run's element size), and their P~."""
+    R, E, nu, Ec, nuc, pmax = materials(name)
+    h = RUNS[name]["h"] * 1e-9
+    scale = ebar(Ec, nuc) * (H_C * 1e-9) ** 2
+    rows = [r for r in rows if MIN_LOAD <= r["P"] / scale <= pmax and 3 * h <= r["edge"] <= 5e-9 - h]
+    return rows, np.array([r["P"] / scale for r in rows])
+
+
 ESTIMATORS = ("edge", "edge_X", "cfit", "pressure_fit", "node_area")
 
 
 def diagnose(name, runs, tribex, show_rows):
     """One run: (summary dict, printed lines)."""
-    R, E, nu, Ec, nuc, pmax = materials(name)
-    h = RUNS[name]["h"] * 1e-9
     rows, k_a = measure(name, os.path.join(runs, "coated_" + name))
-    scale = ebar(Ec, nuc) * (H_C * 1e-9) ** 2
-    rows = [r for r in rows if MIN_LOAD <= r["P"] / scale <= pmax and 3 * h <= r["edge"] <= 5e-9 - h]
-    pn = np.array([r["P"] / scale for r in rows])
+    rows, pn = in_study_range(name, rows)
     a_ref, d_ref = continuum(name, tribex, pn)
     out = dict(run=name, rows=len(rows), p_tilde_lo=pn.min(), p_tilde_hi=pn.max(), penalty_per_area=k_a)
     lines = []

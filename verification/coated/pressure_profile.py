@@ -24,20 +24,16 @@ Printed per run: the means over the P~ bins 0.02-0.05, 0.05-0.2, 0.2-0.8, > 0.8 
 b_FE - b_ref that each radius gives over the same rows (as diagnose.py); --rows prints every row.
 """
 import argparse
-import csv
 import math
 import os
 import sys
 import tempfile
 
-import h5py
 import numpy as np
 
-from diagnose import HERE, ROOT, FaceIntegrals, consistent_fit, edge_crossings, materials, run_layered, slave_faces  # noqa: F401
-from cases import H_C, MIN_LOAD, ebar  # noqa: E402
+from diagnose import ROOT, consistent_fit, edge_crossings, in_study_range, loading_outputs, run_layered
 from compare_reference import BINS  # noqa: E402
 from make_decks import RUNS  # noqa: E402
-from results_h5 import si  # noqa: E402
 
 RADII = 400  # continuum pressure samples per load (uniform in r/a; p/sqrt(1 - (r/a)^2) is smooth, interpolated)
 
@@ -78,41 +74,21 @@ def shape_fit(fi, force, x, q, a_ref):
 
 def field_rows(name, folder):
     """(time, P, edge, positions, gap, nodal forces) at every field output of the loading branch, and the faces."""
-    hist = list(csv.DictReader(open(os.path.join(folder, "history.csv"))))
-    ht = np.array([float(r["time"]) for r in hist])
+    outputs, fi = loading_outputs(folder)
     rows = []
-    with h5py.File(os.path.join(folder, "results.h5"), "r") as f:
-        X = si(f["mesh/coordinates"])
-        keys = sorted(f["steps"].keys())
-        faces = slave_faces(f, ~np.isnan(f["steps"][keys[-1]]["nodal/gap"][:]))
-        fi = FaceIntegrals(faces)
-        axis = int(np.argmin(np.where(np.isnan(f["steps"][keys[-1]]["nodal/gap"][:]), np.inf, X[:, 0] ** 2 + X[:, 1] ** 2)))
-        for key in keys:
-            st = f["steps"][key]
-            i = int(np.argmin(abs(ht - st.attrs["time"])))
-            P = 4 * float(hist[i]["contact_normal_force"])
-            if abs(ht[i] - st.attrs["time"]) > 1e-14 or P <= 0:
-                continue
-            x = X + si(st["nodal/displacement"])
-            fi.at(x)
-            force = np.maximum(-st["nodal/contact_traction"][:][fi.nodes, 2] * fi.nodal(fi.dA), 0.0)
-            if np.count_nonzero(force) >= 3:
-                g = si(st["nodal/gap"])
-                rows.append(dict(time=ht[i], P=P, delta=-float(hist[i]["tip_top_displacement_z"]),
-                                 edge=float(hist[i]["contact_radius_edge"]), edge_X=edge_crossings(faces, g, X), x=x, X=X,
-                                 overlap=-float(g[axis]), force=force))
-    deepest = int(np.argmax([r["delta"] for r in rows]))
-    return rows[: deepest + 1], fi
+    for o in outputs:
+        X, g = o["X"], o["g"]
+        axis = int(np.argmin(np.where(o["slave"], X[:, 0] ** 2 + X[:, 1] ** 2, np.inf)))
+        rows.append(dict(time=o["time"], P=o["P"], delta=o["delta"], edge=float(o["hist"]["contact_radius_edge"]),
+                         edge_X=edge_crossings(fi.faces, g, X), x=o["x"], X=X, overlap=-float(g[axis]),
+                         force=o["force"]))
+    return rows, fi
 
 
 def analyse(name, runs, tribex, show_rows):
     """One run: (per-row dicts of the measures, printed lines)."""
-    R, E, nu, Ec, nuc, pmax = materials(name)
-    h = RUNS[name]["h"] * 1e-9
     rows, fi = field_rows(name, os.path.join(runs, "coated_" + name))
-    scale = ebar(Ec, nuc) * (H_C * 1e-9) ** 2
-    rows = [r for r in rows if MIN_LOAD <= r["P"] / scale <= pmax and 3 * h <= r["edge"] <= 5e-9 - h]
-    pn = np.array([r["P"] / scale for r in rows])
+    rows, pn = in_study_range(name, rows)
     out = []
     for r, pt, (a_ref, d_ref, x, q) in zip(rows, pn, continuum_profiles(name, tribex, pn)):
         fi.at(r["x"])
