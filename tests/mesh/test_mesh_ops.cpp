@@ -10,6 +10,17 @@
 namespace tribex::mesh {
 namespace {
 
+// A box named `name` with `intervals` cells, of `size` at `origin` (m).
+BoxSpec box(const std::string& name, const std::array<int, 3>& intervals,
+            const std::array<double, 3>& origin = {0, 0, 0}, const std::array<double, 3>& size = {1, 1, 1}) {
+  BoxSpec s;
+  s.name = name;
+  s.intervals = intervals;
+  s.origin = origin;
+  s.size = size;
+  return s;
+}
+
 Mesh unit_cube() {
   Mesh m;
   m.coordinates = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
@@ -56,10 +67,7 @@ TEST(MeshOps, ScaledJacobianOfDistortedElementIsItsWorstCorner) {
 }
 
 TEST(MeshOps, ValidateCatchesInvertedElement) {
-  BoxSpec s;
-  s.name = "slab";
-  s.intervals = {3, 2, 2};
-  Mesh m = generate_box(s);
+  Mesh m = generate_box(box("slab", {3, 2, 2}));
   // Element 7 (0-based 6): swap bottom and top faces -> inside out.
   int* c = &m.connectivity[8 * 6];
   for (int a = 0; a < 4; ++a) std::swap(c[a], c[a + 4]);
@@ -114,15 +122,8 @@ TEST(MeshOps, SideNodesAndQueries) {
 }
 
 TEST(MeshOps, AppendRenumbers) {
-  BoxSpec a;
-  a.name = "sub";
-  a.intervals = {2, 2, 1};
-  BoxSpec b;
-  b.name = "tip";
-  b.origin = {0, 0, 1.5};
-  b.intervals = {1, 1, 3};
-  Mesh m = generate_box(a);
-  const Mesh other = generate_box(b);
+  Mesh m = generate_box(box("sub", {2, 2, 1}));
+  const Mesh other = generate_box(box("tip", {1, 1, 3}, {0, 0, 1.5}));
   const int n0 = m.node_count(), e0 = m.element_count();
   append(m, other);
   EXPECT_EQ(m.node_count(), n0 + other.node_count());
@@ -140,14 +141,8 @@ TEST(MeshOps, AppendRenumbers) {
 }
 
 TEST(MeshOps, AddBoxInPlaceEqualsAppend) {
-  BoxSpec a;
-  a.name = "sub";
-  a.intervals = {3, 2, 2};
-  BoxSpec b;
-  b.name = "tip";
-  b.origin = {0.25, 0.25, 1.0};
-  b.size = {0.5, 0.5, 0.5};
-  b.intervals = {2, 2, 3};
+  const BoxSpec a = box("sub", {3, 2, 2});
+  BoxSpec b = box("tip", {2, 2, 3}, {0.25, 0.25, 1.0}, {0.5, 0.5, 0.5});
   b.grade_toward = "zmin";
   b.grading_ratio = 1.2;
   Mesh appended = generate_box(a);
