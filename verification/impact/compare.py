@@ -12,7 +12,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "python"))
-from history_checks import pyplot, read_history, save_figure  # noqa: E402
+from history_checks import finish_axes, pyplot, read_history, save_figure  # noqa: E402
 from cli_errors import guarded  # noqa: E402
 
 
@@ -44,9 +44,7 @@ def main():
         ps = [x * 1e12 for x in t]
         for k in ("kinetic_energy", "internal_energy", "contact_work"):
             ax.plot(ps, [r[k] / ke0 for r in rows], label=k.replace("_", " "))
-        ax.set_xlabel("time (ps)")
-        ax.set_ylabel("energy / initial kinetic energy")
-        ax.legend()
+        finish_axes(ax, "time (ps)", "energy / initial kinetic energy")
         save_figure(fig, a.plot, announce=None)
     return 0 if ok else 1
 
