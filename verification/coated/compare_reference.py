@@ -35,6 +35,7 @@ HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 sys.path.insert(0, str(HERE))
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1, ebar  # noqa: E402
+from make_decks import PRODUCTION, PRODUCTION_MESHES  # noqa: E402
 
 BINS = [(0.0, 0.05), (0.05, 0.2), (0.2, 0.8), (0.8, 100.0)]
 LOG_POINTS = 200  # log-spaced loads of the reference fit (the fit moves by < 1e-4 in b from 100 to 400)
@@ -156,7 +157,7 @@ def write_table(a):
         row = dict(case=case, R_nm=R, E_GPa=E, Ec_GPa=Ec, ebar_c_over_ebar=ebar(Ec, NU_C) / ebar(E, NU),
                    p_tilde_lo=MIN_LOAD, p_tilde_hi=pmax, A_ref=summ["A"], b_ref=summ["b"],
                    rms_ln_f_ref=summ["rms_ln_f"])
-        name = f"case{case}"
+        name = PRODUCTION[case]
         m, fr = fe_rows(name, a.runs)
         row["A_ref_fe_rows"] = row["b_ref_fe_rows"] = row["fe_rows"] = ""
         if fr:
@@ -171,8 +172,9 @@ def write_table(a):
     with open(HERE / "reference_cases.csv", "w") as fh:
         fh.write("# The layered continuum (tribex layered, docs/theory.md 11.4) for Table B.1's cases, written by\n"
                  "# compare_reference.py table. A_ref, b_ref: fit over LOG_POINTS log-spaced loads P~ = p_tilde_lo..hi;\n"
-                 "# *_fe_rows: fit over the P~ of the 0.4 nm FE run's fitted rows (fe_rows of them); *_tribex_fe: the FE\n"
-                 "# (results_cases.csv); *_report_fe: the report's Table B.1 FE values (not in this repository: blank).\n")
+                 "# *_fe_rows: fit over the P~ of the production FE run's fitted rows (fe_rows of them; make_decks.PRODUCTION:\n"
+                 "# caseN_axis_h0.2); *_tribex_fe: that FE run (results_cases.csv); *_report_fe: the report's Table B.1 FE\n"
+                 "# values (not in this repository: blank).\n")
         w = csv.DictWriter(fh, fieldnames=list(out[0].keys()))
         w.writeheader()
         for r in out:
@@ -218,7 +220,7 @@ def continuum_section(fits, runs, tribex=str(ROOT / "build" / "bin" / "tribex"))
     for r in ref:
         row = {k: (float(v) if v not in ("",) and k not in ("case",) else v) for k, v in r.items()}
         row["case"] = int(r["case"])
-        fit = fits.get(f"case{row['case']}")
+        fit = fits.get(PRODUCTION[row["case"]])
         if fit:
             row["A_tribex_fe"], row["b_tribex_fe"] = fit["A"], fit["b"]
         row["fe_rows"] = int(row["fe_rows"]) if row["fe_rows"] != "" else ""
@@ -228,7 +230,8 @@ def continuum_section(fits, runs, tribex=str(ROOT / "build" / "bin" / "tribex"))
              "kernel of the coating on the Si half-space, Abel-form integral equation, f converged to 1e-10), written to "
              "`reference_cases.csv` and, for cases 4, 5, 1, 6, `reference.csv` (a `--coating-table`) by "
              "`compare_reference.py table`. 'continuum A, b': fit over 200 log-spaced loads from P~ = 0.02 to the "
-             "Table B.1 maximum; 'over the FE's rows': the continuum at the P~ of the 0.4 nm run's fitted rows, so "
+             "Table B.1 maximum; 'tribex FE': the production run (caseN_axis_h0.2: 0.2 nm, the penalty force along the "
+             "axis, the penalty per case); 'over the FE's rows': the continuum at the P~ of its fitted rows, so "
              "that FE and continuum are fitted over the same loads. The report's Table B.1 A and b (the report's FE, "
              "at about 0.2 nm) are withheld in this repository (cases.py): that column stays empty.", "",
              section(out), ""]
@@ -251,7 +254,7 @@ def continuum_section(fits, runs, tribex=str(ROOT / "build" / "bin" / "tribex"))
 
 ACCEPT_A, ACCEPT_B, ACCEPT_MEAN = 0.01, 0.005, 0.015  # issue 52: A within 1 %, b within 0.005, mean |.| below 1.5 %
 AXIS_CASES = {h: [f"case{c}_axis_h{h}" for c in range(1, 8)] for h in ("0.2", "0.3")}
-AXIS_MESHES = ["case1_axis_h0.5", "case1_axis_h0.4", "case1_axis_h0.3", "case1_axis_h0.2"]
+AXIS_MESHES = PRODUCTION_MESHES
 
 
 def acceptance_row(name, runs, tribex):
@@ -299,7 +302,7 @@ def acceptance_section(runs, tribex):
 
 
 def section(out):
-    lines = ["| case | R (nm) | E_c (GPa) | P~ fitted | continuum A | continuum b | tribex FE A (0.4 nm) | A_FE/A_ref - 1 | "
+    lines = ["| case | R (nm) | E_c (GPa) | P~ fitted | continuum A | continuum b | tribex FE A (production) | A_FE/A_ref - 1 | "
              "tribex FE b | b_FE - b_ref | continuum over the FE's rows: A, b | FE - continuum over the same rows: A, b | "
              "the report's FE (Table B.1) |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]

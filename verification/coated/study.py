@@ -34,7 +34,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools" / "
 from history_checks import deepest_index, pyplot, read_history  # noqa: E402
 from cases import H_C, MIN_LOAD, NU, NU_C, TABLE_B1, Z0, ebar, f_deep, hertz_area  # noqa: E402
 from contact_theory import dmt_regime_warning, tabor_parameter  # noqa: E402
-from make_decks import RUNS  # noqa: E402
+from make_decks import PRODUCTION, PRODUCTION_MESHES, RUNS  # noqa: E402
 from cli_errors import guarded  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -394,34 +394,48 @@ def measure_all(runs_dir):
     return ms, fits
 
 
-def mesh_convergence(ms, fits):
-    """Mesh convergence on case 1, each mesh fitted over the same P~ range (the coarsest mesh's,
-    which starts later because a >= MIN_RINGS h): the spread between the production mesh (0.4 nm)
-    and the finest one run is the discretisation uncertainty given to every case (same mesh
-    layout, same relative resolution). The uncertainty is the distance of the 0.4 nm value from the
-    h -> 0 value extrapolated linearly in h through the two finest meshes (the contact edge is located
-    to a fraction of an element, an O(h) error). Returns dict(conv, conv_fits, lo, n1, n2, extrap,
-    sig_A_rel, sig_b)."""
-    c = dict(conv=[n for n in ("case1_h0.5", "case1", "case1_h0.3", "case1_h0.2") if fits.get(n)],
+PHYSICAL_NORMAL_MESHES = ["case1_h0.5", "case1", "case1_h0.3", "case1_h0.2"]
+
+
+def mesh_convergence(ms, fits, series, production):
+    """Mesh convergence on case 1, each mesh of `series` (coarse to fine) fitted over the same P~ range (the
+    coarsest mesh's, which starts later because a >= MIN_RINGS h). The discretisation uncertainty given to every
+    case (same mesh layout, same relative resolution) is the distance of the `production` mesh's values from the
+    h -> 0 values extrapolated linearly in h through the two finest meshes (the contact edge is located to a
+    fraction of an element, an O(h) error). Returns dict(conv, conv_fits, lo, n1, n2, extrap, sig_A_rel, sig_b)."""
+    c = dict(conv=[n for n in series if fits.get(n)],
              conv_fits={}, lo=None, n1=None, n2=None, extrap=None, sig_A_rel=None, sig_b=None)
     conv = c["conv"]
     if len(conv) >= 2:
         c["lo"] = lo = max(fits[n]["Pn_lo"] for n in conv)
         c["conv_fits"] = cf = {n: power_fit(fitted_rows(ms[n], lo=lo)) for n in conv}
         c["n1"], c["n2"] = n1, n2 = conv[-2], conv[-1]
-        if "case1" in conv and n2 != "case1":
+        if production in conv:
             h1, h2 = ms[n1]["h"], ms[n2]["h"]
             c["extrap"] = ex = {k: cf[n2][k] - h2 * (cf[n1][k] - cf[n2][k]) / (h1 - h2) for k in ("A", "b")}
-            c["sig_A_rel"] = abs(cf["case1"]["A"] / ex["A"] - 1)
-            c["sig_b"] = abs(cf["case1"]["b"] - ex["b"])
+            c["sig_A_rel"] = abs(cf[production]["A"] / ex["A"] - 1)
+            c["sig_b"] = abs(cf[production]["b"] - ex["b"])
     return c
+
+
+def convergence_lines(ms, mc, title, production):
+    """results.md's lines on one mesh-convergence series (mesh_convergence's dict)."""
+    if not mc["conv_fits"]:
+        return []
+    cf, n1, n2, ex = mc["conv_fits"], mc["n1"], mc["n2"], mc["extrap"]
+    lines = [f"Mesh convergence, {title} (case 1, every mesh fitted over P~ = {mc['lo']:.3f}-{TABLE_B1[1][4]}): " + "; ".join(
+        f"{mesh_text(ms[n])}: A = {cf[n]['A']:.4f}, b = {cf[n]['b']:.4f}" for n in mc["conv"]) + "."]
+    if mc["sig_A_rel"] is not None:
+        lines.append(f"Extrapolated to h -> 0 (linear in h through {ms[n1]['h'] * 1e9:.2g} and {ms[n2]['h'] * 1e9:.2g} nm): "
+                     f"A = {ex['A']:.4f}, b = {ex['b']:.4f}. Discretisation uncertainty of {production} "
+                     f"({ms[production]['h'] * 1e9:.2g} nm; its distance from it): A +- {mc['sig_A_rel']:.1%}, b +- {mc['sig_b']:.4f}.")
+    return lines + [""]
 
 
 def write_results(runs_dir):
     ms, fits = measure_all(runs_dir)
-    mc = mesh_convergence(ms, fits)
-    conv, conv_fits, lo, n1, n2 = mc["conv"], mc["conv_fits"], mc["lo"], mc["n1"], mc["n2"]
-    extrap, sig_A_rel, sig_b = mc["extrap"], mc["sig_A_rel"], mc["sig_b"]
+    mc = mesh_convergence(ms, fits, PRODUCTION_MESHES, PRODUCTION[1])
+    sig_A_rel, sig_b = mc["sig_A_rel"], mc["sig_b"]
     lines = ["# Coated-substrate study: results", "",
              "Written by `study.py` from the runs listed in README.md (do not edit by hand). f and the fit as in",
              "study.py: Area = pi a^2 (a: gap sign change on the tip-surface edges), P = contact force, fit of",
@@ -452,21 +466,21 @@ def write_results(runs_dir):
             for r in case_rows:
                 w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
     lines.append("")
-    if conv_fits:
-        lines.append(f"Mesh convergence (case 1, every mesh fitted over P~ = {lo:.3f}-{TABLE_B1[1][4]}): " + "; ".join(
-            f"{mesh_text(ms[n])}: A = {conv_fits[n]['A']:.4f}, b = {conv_fits[n]['b']:.4f}" for n in conv) + ".")
-        if sig_A_rel is not None:
-            lines.append(f"Extrapolated to h -> 0 (linear in h through {ms[n1]['h'] * 1e9:.2g} and {ms[n2]['h'] * 1e9:.2g} nm): "
-                         f"A = {extrap['A']:.4f}, b = {extrap['b']:.4f}. Discretisation uncertainty of the 0.4 nm results "
-                         f"(their distance from it): A +- {sig_A_rel:.1%}, b +- {sig_b:.4f}; used for every case "
-                         f"(same mesh layout) and added in quadrature to the fit's standard error in results.csv.")
-        lines.append("")
+    lines.append("Production runs (results.csv, the continuum comparison below): " + ", ".join(PRODUCTION.values()) + " (0.2 nm, "
+                 "`force direction = axis`, the penalty per case: README.md \"Production runs\"). The caseN (0.4 nm) and "
+                 "caseN_h0.2 runs keep the sphere's normal.")
+    lines.append("")
+    lines += convergence_lines(ms, mc, "production settings", PRODUCTION[1])
+    lines += convergence_lines(ms, mesh_convergence(ms, fits, PHYSICAL_NORMAL_MESHES, "case1"), "the sphere's normal", "case1")
+    if sig_A_rel is not None:
+        lines += [f"The production uncertainty (A +- {sig_A_rel:.1%}, b +- {sig_b:.4f}) is used for every case (same mesh "
+                  "layout) and added in quadrature to the fit's standard error in results.csv.", ""]
     # One row per modulus ratio for `tribex fit friction --coating-table` (tools/fit/coating_table.hpp):
-    # the R = 27 nm, E = 161 GPa case of each ratio (cases 4, 5, 1, 6); sigma = fit standard error and
-    # mesh uncertainty added in quadrature.
+    # the production run of the R = 27 nm, E = 161 GPa case of each ratio (cases 4, 5, 1, 6); sigma = fit
+    # standard error and mesh uncertainty added in quadrature.
     table = []
     for c in (4, 5, 1, 6):
-        n = f"case{c}"
+        n = PRODUCTION[c]
         if fits.get(n):
             fA, fb = fits[n]["A"], fits[n]["b"]
             sA = math.hypot(fits[n]["A_se"], (sig_A_rel or 0) * fA)
@@ -474,13 +488,14 @@ def write_results(runs_dir):
             table.append((ebar(ms[n]["Ec"], NU_C) / ebar(ms[n]["E"], NU), fA, fb, sA, sb))
     table.sort()
     with open(os.path.join(HERE, "results.csv"), "w") as fh:
-        fh.write("# A, b of f = A (P/(Ebar_c h_c^2))^b (report Eq. B.2) from verification/coated/study.py: cases 4, 5, 1, 6\n"
-                 "# (R = 27 nm, h_c = 2 nm, E = 161 GPa, nu = 0.23, nu_c = 0.4); sigma = fit and mesh uncertainty\n")
+        fh.write("# A, b of f = A (P/(Ebar_c h_c^2))^b (report Eq. B.2) from verification/coated/study.py: the production runs\n"
+                 "# of cases 4, 5, 1, 6 (" + ", ".join(PRODUCTION[c] for c in (4, 5, 1, 6)) + "; R = 27 nm, h_c = 2 nm,\n"
+                 "# E = 161 GPa, nu = 0.23, nu_c = 0.4); sigma = fit and mesh uncertainty\n")
         fh.write("ebar_c_over_ebar,A,b,A_sigma,b_sigma\n")
         for r in table:
             fh.write(",".join(f"{v:.6g}" for v in r) + "\n")
     if table:
-        lines.append("Trend with Ebar_c/Ebar (R = 27 nm, cases 4, 5, 1, 6; results.csv): " + "; ".join(
+        lines.append("Trend with Ebar_c/Ebar (R = 27 nm, production runs of cases 4, 5, 1, 6; results.csv): " + "; ".join(
             f"{r[0]:.4f}: A = {r[1]:.3f} +- {r[3]:.3f}, b = {r[2]:.3f} +- {r[4]:.3f}" for r in table) + ".")
         lines.append("")
     # Adhesion: collapse onto the W = 0 curve against P + 2 pi R W.
