@@ -8,6 +8,7 @@
 
 #include "contact/contact_manager.hpp"
 #include "mesh/asperity.hpp"
+#include "tests/support/asperity_outline.hpp"
 #include "support.hpp"
 
 namespace tribex::contact {
@@ -73,14 +74,10 @@ TEST(AdhesionManager, SphereAboveFlatMatchesDerjaguin) {
   const double R = 27 * nm, cutoff = 20.0;  // h_c = 20 z0: truncation removes 0.33 % of W
   const AdhesionLaw law{W, z0, cutoff * z0};
   for (double D : {0.0, 0.5 * nm}) {
-    mesh::AsperitySpec a;
-    a.radius = R;
+    // The tip 30 nm wide covers r <= 15 nm (the cut-off gap 3.8 nm is reached at r = 13.7 nm); 21 nm high: the
+    // generator needs the column above the sphere cap.
+    mesh::AsperitySpec a = tribex::test::asperity_outline(R, 30 * nm, 21 * nm, 32 * nm, 1 * nm, 0.25 * nm);
     a.gap = D;
-    a.tip_width = 30 * nm;      // covers r <= 15 nm; the cut-off gap 3.8 nm is reached at r = 13.7 nm
-    a.tip_height = 21 * nm;  // the generator needs the column above the sphere cap
-    a.substrate_width = 32 * nm;
-    a.substrate_depth = 1 * nm;
-    a.element_size = 0.25 * nm;
     a.fine_half_width = 5 * nm;
     a.fine_depth = 0.5 * nm;
     a.grading_ratio = 1.2;

@@ -8,6 +8,7 @@
 
 #include "contact/contact_manager.hpp"
 #include "mesh/asperity.hpp"
+#include "tests/support/asperity_outline.hpp"
 #include "support.hpp"
 
 namespace tribex::contact {
@@ -22,14 +23,8 @@ struct Case {
 };
 
 Case make_case(double element_size, double D) {
-  mesh::AsperitySpec a;
-  a.radius = 27 * nm;
+  mesh::AsperitySpec a = tribex::test::asperity_outline(27 * nm, 30 * nm, 21 * nm, 32 * nm, 2 * nm, element_size);
   a.gap = D;
-  a.tip_width = 30 * nm;
-  a.tip_height = 21 * nm;
-  a.substrate_width = 32 * nm;
-  a.substrate_depth = 2 * nm;
-  a.element_size = element_size;
   a.fine_half_width = 14 * nm;  // uniform elements over the interacting region (g_c reached at r = 13.7 nm)
   a.fine_depth = element_size;
   a.grading_ratio = 1.2;

@@ -13,18 +13,13 @@
 #include "mesh/asperity.hpp"
 #include "mesh/asperity_limits.hpp"
 #include "mesh/mesh_error.hpp"
+#include "tests/support/asperity_outline.hpp"
 
 namespace tribex::mesh {
 namespace {
 
 AsperitySpec coated(bool quarter) {
-  AsperitySpec s;
-  s.radius = 27e-9;
-  s.tip_width = 14e-9;
-  s.tip_height = 6e-9;
-  s.substrate_width = 30e-9;
-  s.substrate_depth = 15e-9;
-  s.element_size = 0.5e-9;
+  AsperitySpec s = test::asperity_outline(27e-9, 14e-9, 6e-9, 30e-9, 15e-9, 0.5e-9);
   s.fine_half_width = 3e-9;
   s.fine_depth = 2.5e-9;
   s.grading_ratio = 1.3;
@@ -199,13 +194,7 @@ TEST(Asperity, TipOnlyQuarterModelIsRefused) {
 
 // R = 15 nm with the tip width, tip height and fine half width the user of issue 56 tried in turn.
 AsperitySpec three_limits_violated() {
-  AsperitySpec s;
-  s.radius = 15e-9;
-  s.tip_width = 30e-9;
-  s.tip_height = 3e-9;
-  s.substrate_width = 60e-9;
-  s.substrate_depth = 30e-9;
-  s.element_size = 1e-9;
+  AsperitySpec s = test::asperity_outline(15e-9, 30e-9, 3e-9, 60e-9, 30e-9, 1e-9);
   s.fine_half_width = 12e-9;
   return s;
 }

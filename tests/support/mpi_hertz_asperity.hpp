@@ -9,17 +9,12 @@
 #include "mesh/asperity.hpp"
 #include "mesh/box.hpp"
 #include "mesh/mesh.hpp"
+#include "tests/support/asperity_outline.hpp"
 
 namespace tribex::test {
 
 inline mesh::AsperitySpec mpi_hertz_asperity() {
-  mesh::AsperitySpec a;
-  a.radius = 27e-9;
-  a.tip_width = 32e-9;
-  a.tip_height = 26e-9;
-  a.substrate_width = 60e-9;
-  a.substrate_depth = 30e-9;
-  a.element_size = 1.6e-9;
+  mesh::AsperitySpec a = asperity_outline(27e-9, 32e-9, 26e-9, 60e-9, 30e-9, 1.6e-9);
   a.fine_half_width = 6.4e-9;
   a.fine_depth = 3.2e-9;
   a.grading_ratio = 1.35;
