@@ -22,9 +22,12 @@ struct ModelList {
   std::vector<std::span<const keys::KeyDecl>> keys;  // [model] its declared keys
 };
 
-inline ModelList material_model_list() {
+// The names and keys of the models a registry's for_each visits (materials::for_each_model,
+// contact::for_each_law), in registration order.
+template <class ForEach>
+ModelList model_list(ForEach for_each) {
   ModelList list;
-  materials::for_each_model([&](auto m, int) {
+  for_each([&](auto m, int) {
     using M = typename decltype(m)::type;
     list.names.emplace_back(M::deck_name);
     list.keys.emplace_back(M::keys);
@@ -32,14 +35,12 @@ inline ModelList material_model_list() {
   return list;
 }
 
+inline ModelList material_model_list() {
+  return model_list([](auto visit) { materials::for_each_model(visit); });
+}
+
 inline ModelList contact_law_list() {
-  ModelList list;
-  contact::for_each_law([&](auto l, int) {
-    using L = typename decltype(l)::type;
-    list.names.emplace_back(L::deck_name);
-    list.keys.emplace_back(L::keys);
-  });
-  return list;
+  return model_list([](auto visit) { contact::for_each_law(visit); });
 }
 
 }  // namespace tribex::inputs
